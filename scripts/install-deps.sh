@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages lbmshape needs to build, run and test, if any
+# are missing. Used by build.sh, demo.sh, test.sh and CI.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  glslang-tools glslang-dev
+  libglm-dev libtinygltf-dev libstb-dev libopenmesh-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev
+)
+if [[ "${1:-}" == "--with-test-tools" ]]; then
+  packages+=(nodejs npm)  # the Khronos glTF-Validator runs on Node
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "lbmshape: installing ${missing[*]}" >&2
+sudo=""
+[[ $(id -u) -ne 0 ]] && sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

@@ -1,0 +1,16 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The field X of the current state: the same pull and sum as a step, without
+// the collision, written to the field buffer.
+#include "lattice.glsl"
+
+layout(set = 0, binding = 5, std430) writeonly buffer Field { vec4 cells[]; } fieldOut;
+
+void main()
+{
+  if (!locateBlock()) return;
+  vec4 f[19];
+  PULL_ALL
+  vec4 S;
+  fieldOut.cells[ownBlock] = fieldFromDistributions(f, S);
+}

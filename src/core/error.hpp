@@ -1,0 +1,45 @@
+// Typed errors. Every failure the user can cause or meet has a kind, and each
+// kind has its own process exit code, so batch scripts can tell a typo in the
+// command line from a broken mesh from a missing GPU.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace lbmshape {
+
+enum class ExitCode : int {
+  Ok = 0,
+  Usage = 2,   // bad command line or parameters (checked before any GPU work)
+  Input = 3,   // unreadable or invalid input file
+  Output = 4,  // cannot write the result
+  Device = 5,  // Vulkan device failure or numerical blow-up
+};
+
+class Error : public std::runtime_error {
+public:
+  Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ExitCode code() const { return code_; }
+
+private:
+  ExitCode code_;
+};
+
+struct UsageError : Error {
+  explicit UsageError(const std::string& m) : Error(ExitCode::Usage, m) {}
+};
+struct InputError : Error {
+  explicit InputError(const std::string& m) : Error(ExitCode::Input, m) {}
+};
+struct OutputError : Error {
+  explicit OutputError(const std::string& m) : Error(ExitCode::Output, m) {}
+};
+struct DeviceError : Error {
+  explicit DeviceError(const std::string& m) : Error(ExitCode::Device, m) {}
+};
+// A result that is not a number, or a scheme driven outside its stable range.
+struct NumericalError : Error {
+  explicit NumericalError(const std::string& m) : Error(ExitCode::Device, m) {}
+};
+
+}  // namespace lbmshape

@@ -1,0 +1,17 @@
+// Logs and progress go to stderr; stdout is reserved for --json results.
+#pragma once
+
+#include <string>
+
+namespace lbmshape::log {
+
+enum class Level { Quiet = 0, Normal = 1, Verbose = 2 };
+
+void setLevel(Level level);
+Level level();
+
+void info(const std::string& message);     // shown unless quiet
+void verbose(const std::string& message);  // shown with --verbose
+void warning(const std::string& message);  // always shown
+
+}  // namespace lbmshape::log

@@ -1,0 +1,4 @@
+target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/cache_directory.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/log.cpp
+)

@@ -1,0 +1,28 @@
+#include "gpu/gpu_buffer.hpp"
+
+#include "gpu/gpu_context.hpp"
+
+namespace lbmshape::gpu {
+
+GpuBuffer::GpuBuffer(GpuContext& context, vk::DeviceSize bytes, vk::BufferUsageFlags usage, MemoryUse use) : bytes_(bytes)
+{
+  auto& device = context.device();
+  buffer_ = vk::raii::Buffer(device, vk::BufferCreateInfo({}, bytes, usage, vk::SharingMode::eExclusive));
+  auto requirements = buffer_.getMemoryRequirements();
+  using Flag = vk::MemoryPropertyFlagBits;
+  vk::MemoryPropertyFlags required, preferred;
+  switch (use) {
+  case MemoryUse::Device: preferred = Flag::eDeviceLocal; break;
+  case MemoryUse::Upload: required = Flag::eHostVisible | Flag::eHostCoherent; break;
+  case MemoryUse::Readback:
+    required = Flag::eHostVisible | Flag::eHostCoherent;
+    preferred = Flag::eHostCached;
+    break;
+  }
+  uint32_t type = context.memoryType(requirements.memoryTypeBits, required, preferred);
+  memory_ = vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo(requirements.size, type));
+  buffer_.bindMemory(*memory_, 0);
+  if (use != MemoryUse::Device) mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
+}
+
+}  // namespace lbmshape::gpu

@@ -1,0 +1,99 @@
+#include "gpu/gpu_context.hpp"
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/stopwatch.hpp"
+
+namespace lbmshape::gpu {
+namespace {
+
+uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device)
+{
+  auto families = device.getQueueFamilyProperties();
+  // A compute-only family is often the asynchronous compute engine of a GPU;
+  // any family with compute will do.
+  for (uint32_t i = 0; i < families.size(); ++i)
+    if ((families[i].queueFlags & vk::QueueFlagBits::eCompute) && !(families[i].queueFlags & vk::QueueFlagBits::eGraphics))
+      return i;
+  for (uint32_t i = 0; i < families.size(); ++i)
+    if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return i;
+  throw DeviceError("the Vulkan device has no compute queue");
+}
+
+}  // namespace
+
+GpuContext::GpuContext(const GpuOptions& options) : instance_(options.validation)
+{
+  size_t chosen = chooseDevice(instance_.devices(), options.device);
+  description_ = instance_.devices()[chosen];
+  physical_ = &instance_.physicalDevice(chosen);
+  properties_ = physical_->getProperties();
+  memoryProperties_ = physical_->getMemoryProperties();
+  log::verbose("device: " + description_.name + " [" + description_.type + ", " + description_.driver + "]");
+
+  queueFamily_ = computeQueueFamily(*physical_);
+  float priority = 1.0f;
+  vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
+  device_ = vk::raii::Device(*physical_, vk::DeviceCreateInfo({}, queueInfo));
+  queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+  commandPool_ = vk::raii::CommandPool(
+      device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily_));
+  fence_ = vk::raii::Fence(device_, vk::FenceCreateInfo());
+  pipelineCache_.emplace(device_, defaultPipelineCachePath(properties_));
+  log::verbose("pipeline cache: " +
+               (pipelineCache_->path().empty() ? std::string("off") : pipelineCache_->path().string()) + " (" +
+               std::to_string(pipelineCache_->loadedBytes()) + " bytes loaded)");
+}
+
+GpuContext::~GpuContext()
+{
+  // Work may still be queued if an exception unwound a solver mid-step.
+  if (*device_) device_.waitIdle();
+}
+
+uint32_t GpuContext::memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred) const
+{
+  std::optional<uint32_t> fallback;
+  for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
+    if (!(typeBits & (1u << i))) continue;
+    auto flags = memoryProperties_.memoryTypes[i].propertyFlags;
+    if ((flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return i;
+    if (!fallback) fallback = i;
+  }
+  if (!fallback) throw DeviceError("the Vulkan device has no suitable memory type for a buffer");
+  return *fallback;
+}
+
+ComputeProgram& GpuContext::program(const ProgramSpec& spec)
+{
+  std::string key = spec.key();
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return *it->second;
+  Stopwatch watch;
+  auto program = std::make_unique<ComputeProgram>(device_, pipelineCache_->cache(), spec);
+  pipelineCreationMs_ += watch.ms();
+  return *programs_.emplace(key, std::move(program)).first->second;
+}
+
+void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record)
+{
+  vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
+  vk::raii::CommandBuffer& cmd = buffers[0];
+  cmd.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+  // Whatever earlier submissions wrote is visible to this one: submissions
+  // are ordered by the fence wait, but their memory needs this barrier.
+  vk::MemoryBarrier previousWrites(vk::AccessFlagBits::eMemoryWrite,
+                                   vk::AccessFlagBits::eMemoryRead | vk::AccessFlagBits::eMemoryWrite);
+  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eAllCommands, vk::PipelineStageFlagBits::eAllCommands, {},
+                      previousWrites, {}, {});
+  record(*cmd);
+  cmd.end();
+  vk::CommandBuffer handle = *cmd;
+  queue_.submit(vk::SubmitInfo({}, {}, handle), *fence_);
+  if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+    throw DeviceError("timed out waiting for the Vulkan device");
+  device_.resetFences(*fence_);
+}
+
+}  // namespace lbmshape::gpu

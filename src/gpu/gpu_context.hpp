@@ -1,0 +1,73 @@
+// One Vulkan device ready for compute: the instance, the chosen physical
+// device, a compute queue, a command pool, the persisted pipeline cache and
+// the compiled compute programs. It outlives every buffer and solver made
+// from it, and jobs in one process share it (and its compiled pipelines).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "gpu/compute_program.hpp"
+#include "gpu/device_description.hpp"
+#include "gpu/pipeline_cache_file.hpp"
+#include "gpu/vulkan_instance.hpp"
+
+namespace lbmshape::gpu {
+
+struct GpuOptions {
+  std::string device;       // --device: empty, an index, or part of a name
+  bool validation = false;  // also on with LBMSHAPE_VALIDATION=1
+};
+
+class GpuContext {
+public:
+  explicit GpuContext(const GpuOptions& options);
+  ~GpuContext();
+  GpuContext(const GpuContext&) = delete;
+  GpuContext& operator=(const GpuContext&) = delete;
+
+  const DeviceDescription& description() const { return description_; }
+  const vk::PhysicalDeviceLimits& limits() const { return properties_.limits; }
+  vk::raii::Device& device() { return device_; }
+  vk::raii::Queue& queue() { return queue_; }
+  const vk::raii::PhysicalDevice& physicalDevice() const { return *physical_; }
+  int validationMessages() const { return instance_.validationMessages(); }
+  bool validationEnabled() const { return instance_.validationEnabled(); }
+
+  // Index of a memory type allowed by `typeBits` that has all `required` flags,
+  // preferring one that also has the `preferred` ones.
+  uint32_t memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred = {}) const;
+
+  // The compiled program for this shader and specialization, built once.
+  ComputeProgram& program(const ProgramSpec& spec);
+
+  // Records commands into a fresh command buffer, submits it and waits.
+  void runAndWait(const std::function<void(vk::CommandBuffer)>& record);
+
+  // Time spent creating pipelines so far (ms): the start-up cost the
+  // pipeline cache is there to cut.
+  double pipelineCreationMs() const { return pipelineCreationMs_; }
+  size_t pipelineCacheLoadedBytes() const { return pipelineCache_->loadedBytes(); }
+
+private:
+  VulkanInstance instance_;
+  DeviceDescription description_;
+  vk::raii::PhysicalDevice* physical_ = nullptr;
+  vk::PhysicalDeviceProperties properties_;
+  vk::PhysicalDeviceMemoryProperties memoryProperties_;
+  uint32_t queueFamily_ = 0;
+  vk::raii::Device device_{nullptr};
+  vk::raii::Queue queue_{nullptr};
+  vk::raii::CommandPool commandPool_{nullptr};
+  vk::raii::Fence fence_{nullptr};
+  std::optional<PipelineCacheFile> pipelineCache_;
+  std::map<std::string, std::unique_ptr<ComputeProgram>> programs_;
+  double pipelineCreationMs_ = 0.0;
+};
+
+}  // namespace lbmshape::gpu

@@ -1,0 +1,65 @@
+#include "gpu/pipeline_cache_file.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "core/cache_directory.hpp"
+#include "core/log.hpp"
+
+namespace lbmshape::gpu {
+
+std::filesystem::path defaultPipelineCachePath(const vk::PhysicalDeviceProperties& properties)
+{
+  if (const char* off = std::getenv("LBMSHAPE_NO_PIPELINE_CACHE"); off && std::strcmp(off, "0") != 0) return {};
+  std::filesystem::path dir = userCacheDirectory();
+  if (dir.empty()) return {};
+  static const char* hex = "0123456789abcdef";
+  std::string uuid;
+  for (uint8_t byte : properties.pipelineCacheUUID) {
+    uuid += hex[byte >> 4];
+    uuid += hex[byte & 15];
+  }
+  return dir / ("pipelines-" + uuid + ".bin");
+}
+
+PipelineCacheFile::PipelineCacheFile(const vk::raii::Device& device, std::filesystem::path path) : path_(std::move(path))
+{
+  std::vector<char> data;
+  if (!path_.empty()) {
+    std::ifstream in(path_, std::ios::binary);
+    if (in) data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The driver checks the header (vendor, device, UUID) and ignores data that
+  // is not its own, so a stale or foreign file costs nothing but a recompile.
+  vk::PipelineCacheCreateInfo info({}, data.size(), data.data());
+  cache_ = vk::raii::PipelineCache(device, info);
+  loadedBytes_ = data.size();
+}
+
+PipelineCacheFile::~PipelineCacheFile()
+{
+  if (path_.empty() || !*cache_) return;
+  try {
+    std::vector<uint8_t> data = cache_.getData();
+    std::error_code ec;
+    std::filesystem::create_directories(path_.parent_path(), ec);
+    std::filesystem::path temporary = path_;
+    temporary += ".tmp" + std::to_string(::getpid());
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+      if (!out) throw std::runtime_error("write failed");
+    }
+    std::filesystem::rename(temporary, path_);
+  } catch (const std::exception& e) {
+    // A cache that cannot be saved only makes the next start slower.
+    log::verbose(std::string("pipeline cache not saved to ") + path_.string() + ": " + e.what());
+  }
+}
+
+}  // namespace lbmshape::gpu

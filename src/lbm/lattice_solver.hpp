@@ -1,0 +1,55 @@
+// The distance-field lattice Boltzmann solver (paper sections 3.1-3.3, 4).
+//
+// State: 19 distributions per cell on a D3Q19 lattice. One step is a fused
+// pull-stream and BGK collision,
+//     f_i(r)   = f*_i(r - e_i)                 (streaming; bounce-back at walls)
+//     X        = sum_i f_i + S/2               (the field, second-order with S)
+//     f*_i(r)  = f_i + omega (w_i X - f_i) + (1 - omega/2) w_i S
+// which solves dX/dt = gamma Laplacian(X) + S with gamma = (1/omega - 1/2)/3.
+// The source is linear in X, S = A - c X, so the morph force of section 5.2
+// (A = Cs X_target, c = Cs) is handled exactly: X = (sum f + A/2) / (1 + c/2).
+// docs/lattice-theory.md derives each of these choices.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/extent.hpp"
+#include "core/volume.hpp"
+
+namespace lbmshape {
+
+// S = base - decay * X in every cell.
+struct LinearSource {
+  Volume base;
+  float decay = 0.0f;
+};
+
+class LatticeSolver {
+public:
+  virtual ~LatticeSolver() = default;
+
+  virtual std::string backendName() const = 0;
+  virtual Extent3 extent() const = 0;
+
+  // Relaxation: one diffusion coefficient everywhere (voxels^2 per step), or
+  // one per cell (the anisotropic gamma of section 5.1). Both are checked.
+  virtual void setUniformGamma(double gamma) = 0;
+  virtual void setGammaPerCell(const Volume& gamma) = 0;
+
+  // Source term; std::nullopt removes it.
+  virtual void setSource(std::optional<LinearSource> source) = 0;
+
+  // Restart from field X, with every distribution at its equilibrium w_i X.
+  // Call after setSource: the initial distributions account for S/2.
+  virtual void initialize(const Volume& field) = 0;
+
+  virtual void step(int count) = 0;
+  virtual int stepsTaken() const = 0;
+
+  // The field X after the steps taken so far.
+  virtual Volume field() = 0;
+};
+
+}  // namespace lbmshape

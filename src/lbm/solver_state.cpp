@@ -1,0 +1,42 @@
+#include "lbm/solver_state.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "lbm/relaxation.hpp"
+
+namespace lbmshape::solver_state {
+
+Volume omegaFromGammaVolume(const Volume& gamma)
+{
+  Volume omega(gamma.extent());
+  for (size_t i = 0; i < gamma.size(); ++i) {
+    relaxation::checkGamma(gamma[i], "per-cell gamma");
+    omega[i] = float(relaxation::omegaFromGamma(gamma[i]));
+  }
+  return omega;
+}
+
+Volume initialDensity(const Volume& field, const std::optional<LinearSource>& source)
+{
+  if (!source) return field;
+  checkSameExtent(field.extent(), source->base.extent(), "source");
+  Volume density(field.extent());
+  for (size_t i = 0; i < field.size(); ++i) {
+    float s = source->base[i] - source->decay * field[i];
+    density[i] = field[i] - 0.5f * s;
+  }
+  return density;
+}
+
+void checkSameExtent(const Extent3& expected, const Extent3& got, const char* what)
+{
+  if (expected != got) {
+    std::ostringstream message;
+    message << what << " volume is " << got.toString() << " but the lattice is " << expected.toString();
+    throw std::invalid_argument(message.str());
+  }
+}
+
+}  // namespace lbmshape::solver_state

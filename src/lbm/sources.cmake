@@ -1,0 +1,7 @@
+target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/lattice_memory.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/reference_solver.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/relaxation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/solver_state.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vulkan_solver.cpp
+)

@@ -1,0 +1,19 @@
+#include "mesh/triangle_mesh.hpp"
+
+#include <limits>
+
+namespace lbmshape {
+
+Bounds bounds(const TriangleMesh& mesh)
+{
+  Bounds b{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      b.min = glm::min(b.min, mesh.positions[t[k]]);
+      b.max = glm::max(b.max, mesh.positions[t[k]]);
+    }
+  if (mesh.triangles.empty()) b = Bounds{};
+  return b;
+}
+
+}  // namespace lbmshape

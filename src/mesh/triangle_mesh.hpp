@@ -1,0 +1,33 @@
+// A triangle mesh as lbmshape moves it around: positions in the input's own
+// coordinates and units (double, so meshes far from the origin keep their
+// precision), triangles as vertex index triples, and optional unit normals.
+// It is a soup: nothing here assumes the mesh is closed or manifold.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lbmshape {
+
+struct TriangleMesh {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::uvec3> triangles;
+  std::vector<glm::vec3> normals;  // per vertex; empty when not known
+
+  size_t vertexCount() const { return positions.size(); }
+  size_t triangleCount() const { return triangles.size(); }
+};
+
+struct Bounds {
+  glm::dvec3 min{0.0}, max{0.0};
+  glm::dvec3 size() const { return max - min; }
+  glm::dvec3 centre() const { return 0.5 * (min + max); }
+  double diagonal() const { return glm::length(size()); }
+};
+
+// Bounds of the vertices that triangles use.
+Bounds bounds(const TriangleMesh& mesh);
+
+}  // namespace lbmshape

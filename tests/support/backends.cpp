@@ -1,0 +1,19 @@
+#include "support/backends.hpp"
+
+#include "lbm/reference_solver.hpp"
+#include "lbm/vulkan_solver.hpp"
+
+namespace lbmshape::testing {
+
+std::unique_ptr<LatticeSolver> makeSolver(Backend backend, Extent3 extent)
+{
+  if (backend == Backend::Vulkan) return std::make_unique<VulkanSolver>(sharedGpu(), extent);
+  return std::make_unique<ReferenceSolver>(extent);
+}
+
+std::string backendName(const ::testing::TestParamInfo<Backend>& info)
+{
+  return info.param == Backend::Vulkan ? "vulkan" : "reference";
+}
+
+}  // namespace lbmshape::testing

@@ -1,15 +1,73 @@
 // lbmshape: the command-line front end. It parses the command, runs it, and
-// turns every error into one line on stderr and its exit code.
+// turns every failure into one line on stderr and its exit code:
+// 0 ok, 2 usage, 3 input, 4 output, 5 device or numerical failure.
+#include <filesystem>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
+#include <vulkan/vulkan.hpp>
 
+#include "bench_command.hpp"
+#include "common_options.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
+#include "info_command.hpp"
+
+namespace {
+
+int fail(lbmshape::ExitCode code, const std::string& message)
+{
+  // One line, whatever the message: scripts grep for it.
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::cerr << "lbmshape: error: " << line << std::endl;
+  return int(code);
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
+  using namespace lbmshape;
   CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan");
   app.set_version_flag("--version", LBMSHAPE_VERSION);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  app.require_subcommand(1);
+  app.fallthrough();  // common options may follow the command name
+
+  cli::CommonOptions common;
+  app.add_flag("-v,--verbose", common.verbose, "Print each stage's time and the chosen device");
+  app.add_flag("-q,--quiet", common.quiet, "Print only errors");
+  app.add_flag("--json", common.json, "Print the result as one JSON object on stdout");
+  app.add_option("--device", common.device, "Vulkan device: index or part of its name, or 'reference' for the CPU reference");
+  app.add_flag("--validate", common.validation, "Run with the Khronos validation layer; any message fails the run");
+  app.parse_complete_callback([&common] {
+    log::setLevel(common.quiet ? log::Level::Quiet : common.verbose ? log::Level::Verbose : log::Level::Normal);
+  });
+
+  cli::addInfoCommand(app, common);
+  cli::addBenchCommand(app, common);
+
+  try {
+    app.parse(argc, argv);
+    return 0;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(ExitCode::Usage, std::string(e.what()) + " (see lbmshape --help)");
+  } catch (const Error& e) {
+    return fail(e.code(), e.what());
+  } catch (const vk::SystemError& e) {
+    return fail(ExitCode::Device, std::string("Vulkan: ") + e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    return fail(ExitCode::Output, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(ExitCode::Device, "out of memory; use a coarser grid (--res)");
+  } catch (const std::exception& e) {
+    return fail(ExitCode::Device, std::string("internal error: ") + e.what());
+  }
 }

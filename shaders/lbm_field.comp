@@ -9,8 +9,7 @@ layout(set = 0, binding = 5, std430) writeonly buffer Field { vec4 cells[]; } fi
 void main()
 {
   if (!locateBlock()) return;
-  vec4 f[19];
   PULL_ALL
   vec4 S;
-  fieldOut.cells[ownBlock] = fieldFromDistributions(f, S);
+  fieldOut.cells[ownBlock] = fieldFromDistributions(S);
 }

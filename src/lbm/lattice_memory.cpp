@@ -1,5 +1,6 @@
 #include "lbm/lattice_memory.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -26,14 +27,16 @@ LatticeLayout latticeLayout(const Extent3& extent)
 {
   checkExtent(extent);
   LatticeLayout layout;
+  const auto [nx, ny, nz] = extent;
   layout.extent = extent;
-  layout.row = (extent.nx + 3) / 4 * 4;
-  layout.paddedCells = uint64_t(layout.row) * uint64_t(extent.ny) * uint64_t(extent.nz);
+  layout.row = (nx + 1 + 3) / 4 * 4;
+  layout.plane = uint64_t(layout.row) * uint64_t(ny + 2);
+  layout.floatsPerDirection = 8 + layout.plane * uint64_t(nz + 2);
   // 256 bytes satisfies every device's binding offset alignment.
-  layout.directionBytes = (layout.paddedCells * 4 + 255) / 256 * 256;
-  const uint64_t fieldBytes = layout.paddedCells * 4;
-  // two lattices, plus field, staging, per-cell omega and source
-  layout.totalBytes = 2 * 19 * layout.directionBytes + 4 * fieldBytes;
+  layout.directionBytes = (layout.floatsPerDirection * 4 + 255) / 256 * 256;
+  layout.faceBlocks = uint64_t((nx + 3) / 4) * uint64_t(std::max(ny, nz));
+  // two lattices, plus the field, staging, per-cell omega and source volumes
+  layout.totalBytes = (2 * 19 + 4) * layout.directionBytes;
   return layout;
 }
 
@@ -44,15 +47,16 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
     throw UsageError("a " + e.toString() + " lattice does not fit on " + device.name + ": " + why +
                      "; use a coarser grid (--res) or another --device");
   };
-  if (layout.paddedCells >= (uint64_t(1) << 31)) tooLarge("more than 2^31 cells");
+  if (layout.floatsPerDirection >= (uint64_t(1) << 31)) tooLarge("more than 2^31 cells");
   if (layout.directionBytes > device.maxStorageBufferRange)
     tooLarge("one direction needs " + mebibytes(layout.directionBytes) + " but a storage buffer may span at most " +
              mebibytes(device.maxStorageBufferRange));
-  if (layout.paddedCells > device.maxTexelBufferElements)
-    tooLarge(std::to_string(layout.paddedCells) + " cells exceed the texel buffer limit of " +
+  if (layout.floatsPerDirection > device.maxTexelBufferElements)
+    tooLarge(std::to_string(layout.floatsPerDirection) + " cells exceed the texel buffer limit of " +
              std::to_string(device.maxTexelBufferElements) + " elements");
-  if (uint64_t(e.ny) > device.maxWorkgroupCount[1] || uint64_t(e.nz) > device.maxWorkgroupCount[2])
-    tooLarge("more rows than the device can dispatch");
+  if (uint64_t(e.ny) + 2 > device.maxWorkgroupCount[1] || uint64_t(e.nz) + 2 > device.maxWorkgroupCount[2] ||
+      std::max(layout.faceBlocks, 2 * uint64_t(e.ny) * e.nz) / 64 + 1 > device.maxWorkgroupCount[0])
+    tooLarge("more workgroups than the device can dispatch");
   if (device.deviceLocalBytes && layout.totalBytes > device.deviceLocalBytes)
     tooLarge("it needs " + mebibytes(layout.totalBytes) + " but the device has " + mebibytes(device.deviceLocalBytes));
 }

@@ -1,3 +1,21 @@
 target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_animation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_builder.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_format.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_geometry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_noise.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_validation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/obj_positions.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/obj_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/openmesh_diagnostics.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/openmesh_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/openmesh_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/soup_exporter.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/soup_importer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/triangle_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/writable_mesh.cpp
 )

@@ -1,3 +1,10 @@
 target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/band_distance.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/far_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/signed_distance.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/triangle_bvh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/winding_gradient_bound.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/winding_number.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/winding_sign.cpp
 )

@@ -16,6 +16,6 @@ std::filesystem::path sharedAsset(const std::string& name);
 #define LBMSHAPE_REQUIRE_SHARED_ASSET(var, name)                                                            \
   const std::filesystem::path var = ::lbmshape::testing::sharedAsset(name);                                 \
   if (var.empty()) GTEST_SKIP() << "shared test mesh " << (name)                                           \
-                                << " not found (set LBMSHAPE_SHARED_ASSETS or clone ../shared): skipped"
+                                << " not found (clone ../shared beside the repository or set LBMSHAPE_SHARED_ASSETS): skipped"
 
 }  // namespace lbmshape::testing

@@ -1,0 +1,179 @@
+#include "bench_command.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "bench/lattice_bench.hpp"
+#include "bench/memory_bandwidth.hpp"
+#include "bench/paper_table.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "lbm/lattice_memory.hpp"
+#include "lbm/reference_solver.hpp"
+#include "lbm/relaxation.hpp"
+#include "lbm/vulkan_solver.hpp"
+
+namespace lbmshape::cli {
+namespace {
+
+struct BenchOptions {
+  std::vector<int> size = {128, 128, 128};
+  BenchSettings settings;
+  bool paper = false;
+};
+
+struct SizeResult {
+  Extent3 extent;
+  std::optional<StepTiming> vulkan;
+  StepTiming reference;
+};
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0)
+{
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+nlohmann::json timingJson(const StepTiming& t, bool withBandwidth)
+{
+  nlohmann::json j = {{"ms_per_step", t.msPerStep}, {"best_ms_per_step", t.bestMsPerStep},
+                      {"first_step_ms", t.firstStepMs}, {"mlups", t.mlups}};
+  if (withBandwidth) j["gbps"] = t.gbps;
+  return j;
+}
+
+SizeResult benchSize(const Extent3& extent, gpu::GpuContext* context, const BenchSettings& settings)
+{
+  SizeResult result{extent, std::nullopt, {}};
+  if (context) {
+    log::info("timing the Vulkan step on " + extent.toString() + "...");
+    VulkanSolver solver(*context, extent);
+    result.vulkan = timeSolver(solver, settings);
+  }
+  log::info("timing the CPU reference on " + extent.toString() + "...");
+  ReferenceSolver reference(extent);
+  result.reference = timeSolver(reference, settings);
+  return result;
+}
+
+void printSingle(const SizeResult& r, const std::string& device, const BandwidthMeasurement& bandwidth,
+                 const BenchSettings& settings)
+{
+  const double roofline = bandwidth.gbps * 1e9 / double(LatticeLayout::bytesPerUpdate) / 1e6;
+  std::cout << "device: " << device << "\n"
+            << "lattice " << r.extent.toString() << ", D3Q19 fp32, " << LatticeLayout::bytesPerUpdate
+            << " bytes per update, median of " << settings.runs << " runs of " << settings.steps << " steps\n";
+  if (r.vulkan)
+    std::cout << format("  vulkan     %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s", r.vulkan->msPerStep, r.vulkan->mlups,
+                        r.vulkan->gbps)
+              << format("  (first step %.0f ms)\n", r.vulkan->firstStepMs);
+  std::cout << format("  reference  %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s\n", r.reference.msPerStep,
+                      r.reference.mlups, r.reference.gbps);
+  std::cout << format("  memory bandwidth %.1f GB/s -> roofline %.0f MLUPS", bandwidth.gbps, roofline) << " ("
+            << bandwidth.method << ")\n";
+  if (r.vulkan)
+    std::cout << format("  vulkan / reference %.2fx, vulkan at %.0f%% of the roofline\n",
+                        r.vulkan->mlups / r.reference.mlups, 100.0 * r.vulkan->mlups / roofline);
+}
+
+void printPaper(const std::vector<SizeResult>& results, const std::string& device)
+{
+  std::cout << "Table 1 of the paper (2008: Intel Core 2 6300 CPU, GeForce 8800 GTX GPU) beside this run on "
+            << device << ", ms per step:\n";
+  std::cout << "  figure    application  lattice        paper CPU  paper GPU  reference     vulkan   vulkan speed-up vs paper GPU\n";
+  for (size_t i = 0; i < results.size(); ++i) {
+    const auto& row = paper::table1[i];
+    const auto& r = results[i];
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-9s %-12s %-13s %9.0f  %9.1f  %9.2f  %9s  %s\n", row.figure, row.application,
+                  row.size.toString().c_str(), row.cpuMs, row.gpuMs, r.reference.msPerStep,
+                  r.vulkan ? format("%.2f", r.vulkan->msPerStep).c_str() : "-",
+                  r.vulkan ? format("%.2fx", row.gpuMs / r.vulkan->msPerStep).c_str() : "-");
+    std::cout << line;
+  }
+}
+
+void runBench(const CommonOptions& common, const BenchOptions& options)
+{
+  // Everything the user chose is checked before the device is touched.
+  relaxation::checkGamma(options.settings.gamma, "--gamma");
+  if (options.settings.steps < 1) throw UsageError("--steps must be at least 1");
+  if (options.settings.runs < 1) throw UsageError("--runs must be at least 1");
+  std::vector<Extent3> sizes;
+  if (options.paper) {
+    for (const auto& row : paper::table1) sizes.push_back(row.size);
+  } else {
+    sizes.push_back(Extent3{options.size[0], options.size[1], options.size[2]});
+  }
+  for (const auto& e : sizes) checkExtent(e);
+
+  std::unique_ptr<gpu::GpuContext> context;
+  std::string device = "reference (CPU)";
+  if (!wantsReference(common)) {
+    context = openDevice(common);
+    device = context->description().name;
+    for (const auto& e : sizes) checkFitsDevice(latticeLayout(e), context->description());
+  }
+  log::verbose("device: " + device);
+  log::info("measuring memory bandwidth...");
+  const BandwidthMeasurement bandwidth = measureMemoryBandwidth(context.get());
+  std::vector<SizeResult> results;
+  for (const auto& e : sizes) results.push_back(benchSize(e, context.get(), options.settings));
+  if (context) requireCleanValidation(*context);
+
+  const double rooflineMlups = bandwidth.gbps * 1e9 / double(LatticeLayout::bytesPerUpdate) / 1e6;
+  auto resultJson = [&](const SizeResult& r) {
+    nlohmann::json j = {{"device", device},
+                        {"size", {r.extent.nx, r.extent.ny, r.extent.nz}},
+                        {"steps", options.settings.steps},
+                        {"runs", options.settings.runs},
+                        {"bytes_per_update", LatticeLayout::bytesPerUpdate},
+                        {"vulkan", r.vulkan ? timingJson(*r.vulkan, true) : nlohmann::json(nullptr)},
+                        {"reference", timingJson(r.reference, false)},
+                        {"vulkan_over_reference", r.vulkan ? nlohmann::json(r.vulkan->mlups / r.reference.mlups) : nlohmann::json(nullptr)},
+                        {"roofline_fraction", r.vulkan ? nlohmann::json(r.vulkan->mlups / rooflineMlups) : nlohmann::json(nullptr)},
+                        {"memory_bandwidth", {{"gbps", bandwidth.gbps}, {"method", bandwidth.method}}},
+                        {"roofline_mlups", rooflineMlups}};
+    if (context) j["startup"] = {{"pipeline_creation_ms", context->pipelineCreationMs()},
+                                 {"pipeline_cache_loaded_bytes", context->pipelineCacheLoadedBytes()}};
+    return j;
+  };
+
+  if (!options.paper) {
+    if (common.json) printJson(resultJson(results.front()));
+    else printSingle(results.front(), device, bandwidth, options.settings);
+    return;
+  }
+  if (common.json) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (size_t i = 0; i < results.size(); ++i) {
+      const auto& row = paper::table1[i];
+      nlohmann::json j = resultJson(results[i]);
+      j["figure"] = row.figure;
+      j["application"] = row.application;
+      j["paper"] = {{"cpu_ms_per_step", row.cpuMs}, {"gpu_ms_per_step", row.gpuMs}, {"texture_megabytes", row.textureMegabytes}};
+      rows.push_back(j);
+    }
+    printJson({{"device", device}, {"table1", rows}});
+  } else {
+    printPaper(results, device);
+  }
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, const CommonOptions& common)
+{
+  auto options = std::make_shared<BenchOptions>();
+  auto* bench = app.add_subcommand("bench", "Time the lattice step on the device and on the CPU reference");
+  bench->add_option("--size", options->size, "Lattice size NX,NY,NZ")->delimiter(',')->expected(3)->capture_default_str();
+  bench->add_option("--steps", options->settings.steps, "Steps per timed run")->capture_default_str();
+  bench->add_option("--runs", options->settings.runs, "Timed runs; the median is reported")->capture_default_str();
+  bench->add_option("--gamma", options->settings.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
+  bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours");
+  bench->callback([&common, options] { runBench(common, *options); });
+}
+
+}  // namespace lbmshape::cli

@@ -1,0 +1,23 @@
+#include "common_options.hpp"
+
+#include <iostream>
+
+#include "core/error.hpp"
+
+namespace lbmshape::cli {
+
+std::unique_ptr<gpu::GpuContext> openDevice(const CommonOptions& options)
+{
+  return std::make_unique<gpu::GpuContext>(gpu::GpuOptions{options.device, options.validation});
+}
+
+void requireCleanValidation(const gpu::GpuContext& context)
+{
+  if (context.validationMessages() > 0)
+    throw DeviceError("the Vulkan validation layer reported " + std::to_string(context.validationMessages()) +
+                      " problem(s), printed above");
+}
+
+void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+
+}  // namespace lbmshape::cli

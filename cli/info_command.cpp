@@ -1,0 +1,68 @@
+#include "info_command.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "gpu/vulkan_instance.hpp"
+
+namespace lbmshape::cli {
+namespace {
+
+std::string mebibytes(uint64_t bytes)
+{
+  std::ostringstream s;
+  s << bytes / (1024 * 1024) << " MiB";
+  return s.str();
+}
+
+nlohmann::json describe(const gpu::DeviceDescription& d, bool selected)
+{
+  return {{"index", d.index},
+          {"name", d.name},
+          {"type", d.type},
+          {"driver", d.driver},
+          {"api_version", d.apiVersion},
+          {"device_local_bytes", d.deviceLocalBytes},
+          {"max_storage_buffer_range", d.maxStorageBufferRange},
+          {"max_texel_buffer_elements", d.maxTexelBufferElements},
+          {"max_allocation_bytes", d.maxAllocationBytes},
+          {"selected", selected}};
+}
+
+void runInfo(const CommonOptions& common)
+{
+  gpu::VulkanInstance instance(common.validation);
+  const auto& devices = instance.devices();
+  const bool reference = wantsReference(common);
+  const size_t selected = reference ? devices.size() : gpu::chooseDevice(devices, common.device);
+
+  if (common.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
+    printJson({{"version", LBMSHAPE_VERSION},
+               {"devices", list},
+               {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
+               {"validation", instance.validationEnabled()}});
+    return;
+  }
+  std::cout << "lbmshape " << LBMSHAPE_VERSION << "\n";
+  for (size_t i = 0; i < devices.size(); ++i) {
+    const auto& d = devices[i];
+    std::cout << (i == selected ? "* " : "  ") << d.index << ": " << d.name << "\n"
+              << "     type " << d.type << ", Vulkan " << d.apiVersion << ", driver " << d.driver << "\n"
+              << "     memory " << mebibytes(d.deviceLocalBytes) << ", max storage buffer range "
+              << mebibytes(d.maxStorageBufferRange) << "\n";
+  }
+  std::cout << (reference ? "* " : "  ") << "reference: the CPU reference solver (--device reference)\n";
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app, const CommonOptions& common)
+{
+  auto* info = app.add_subcommand("info", "List the Vulkan devices and the one lbmshape selects (marked *)");
+  info->callback([&common] { runInfo(common); });
+}
+
+}  // namespace lbmshape::cli

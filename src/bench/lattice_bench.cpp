@@ -1,0 +1,41 @@
+#include "bench/lattice_bench.hpp"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "core/stopwatch.hpp"
+#include "lbm/lattice_memory.hpp"
+
+namespace lbmshape {
+
+StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings)
+{
+  const Extent3 extent = solver.extent();
+  Volume field(extent);
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+  for (size_t i = 0; i < field.size(); ++i) field[i] = value(rng);
+  solver.setUniformGamma(settings.gamma);
+  solver.initialize(field);
+
+  StepTiming timing;
+  Stopwatch first;
+  solver.step(1);
+  timing.firstStepMs = first.ms();
+
+  std::vector<double> perStep;
+  for (int r = 0; r < settings.runs; ++r) {
+    Stopwatch watch;
+    solver.step(settings.steps);
+    perStep.push_back(watch.ms() / settings.steps);
+  }
+  std::sort(perStep.begin(), perStep.end());
+  timing.msPerStep = perStep[perStep.size() / 2];
+  timing.bestMsPerStep = perStep.front();
+  timing.mlups = double(extent.cells()) / (timing.msPerStep * 1e3);
+  timing.gbps = timing.mlups * 1e6 * double(LatticeLayout::bytesPerUpdate) / 1e9;
+  return timing;
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,29 @@
+// Times lattice Boltzmann steps on a back end: what `lbmshape bench` reports.
+#pragma once
+
+#include <string>
+
+#include "core/extent.hpp"
+#include "lbm/lattice_solver.hpp"
+
+namespace lbmshape {
+
+struct StepTiming {
+  double msPerStep = 0.0;  // median over the timed runs
+  double bestMsPerStep = 0.0;
+  double firstStepMs = 0.0;  // includes the driver's shader compilation
+  double mlups = 0.0;        // million lattice updates per second (median)
+  double gbps = 0.0;         // mlups * bytes per update
+};
+
+struct BenchSettings {
+  int steps = 100;   // per timed run
+  int runs = 5;      // the median of these is reported
+  double gamma = 0.2;
+};
+
+// Runs `settings.runs` times `settings.steps` steps on a random field after
+// one warm-up step, and reports per-step figures.
+StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings);
+
+}  // namespace lbmshape

@@ -1,0 +1,4 @@
+target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/lattice_bench.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/memory_bandwidth.cpp
+)

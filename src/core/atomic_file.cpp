@@ -1,0 +1,87 @@
+#include "core/atomic_file.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+
+namespace lbmshape {
+namespace {
+
+std::string failure(const std::filesystem::path& target, const std::string& why)
+{
+  return "cannot write " + target.string() + ": " + why;
+}
+
+// Opens `path` read-only and forces its data to disk. Without this a crash
+// soon after the rename can leave an empty file under the new name on file
+// systems that order metadata before data (ext4 with delalloc, XFS).
+// Returns 0 or the errno of the failure.
+int syncToDisk(const std::filesystem::path& path, int flags)
+{
+  int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0) return errno;
+  int error = ::fsync(fd) == 0 || errno == EINVAL ? 0 : errno;  // EINVAL: this file system has nothing to sync
+  ::close(fd);
+  return error;
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target))
+{
+  if (target_.filename().empty() || target_.filename() == "." || target_.filename() == "..")
+    throw OutputError(failure(target_, "the path names a folder, not a file"));
+  std::error_code ec;
+  if (std::filesystem::is_directory(target_, ec)) throw OutputError(failure(target_, "it is a folder"));
+  const std::filesystem::path folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(folder, ec))
+    throw OutputError(failure(target_, "the folder " + folder.string() + " does not exist"));
+
+  // Several writers (threads, or processes writing frames into one folder)
+  // may work at once: the process id and a counter keep their names apart,
+  // and O_EXCL makes sure no one else's file is ever taken over.
+  static std::atomic<unsigned> counter{0};
+  const std::string stem = target_.stem().string(), extension = target_.extension().string();
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::filesystem::path candidate =
+        folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
+    int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      temporary_ = std::move(candidate);
+      return;
+    }
+    if (errno != EEXIST) throw OutputError(failure(target_, std::strerror(errno)));
+  }
+  throw OutputError(failure(target_, "no free temporary file name in " + folder.string()));
+}
+
+AtomicFile::~AtomicFile()
+{
+  if (committed_ || temporary_.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove(temporary_, ec);  // nothing more to do if it is already gone
+}
+
+void AtomicFile::commit()
+{
+  if (committed_) return;
+  if (int error = syncToDisk(temporary_, O_RDONLY)) throw OutputError(failure(target_, std::strerror(error)));
+  std::error_code ec;
+  std::filesystem::rename(temporary_, target_, ec);
+  if (ec) throw OutputError(failure(target_, ec.message()));
+  committed_ = true;
+  // The rename itself reaches the disk with the folder's own metadata; if
+  // that cannot be forced the file is still complete, only perhaps not yet
+  // durable, so this is not an error.
+  syncToDisk(target_.has_parent_path() ? target_.parent_path() : std::filesystem::path("."), O_RDONLY | O_DIRECTORY);
+}
+
+}  // namespace lbmshape

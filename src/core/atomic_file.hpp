@@ -1,0 +1,38 @@
+// Writes a file all at once or not at all. Output goes to a temporary file
+// beside the target, and commit() renames it over the target, which is atomic
+// on one file system: a crash, a full disk or an exception half way through a
+// write never leaves a truncated file under the target's name, and readers of
+// the target see either the old content or the new.
+#pragma once
+
+#include <filesystem>
+
+namespace lbmshape {
+
+class AtomicFile {
+public:
+  // Creates the (empty) temporary file at once, so that a missing or
+  // unwritable folder is reported (OutputError naming the target) before any
+  // work is spent on the content.
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile();  // removes the temporary file unless committed
+
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::filesystem::path& target() const { return target_; }
+  // Hidden, in the target's folder, and ending with the target's extension,
+  // so that writers which choose the format by file name write the right one.
+  const std::filesystem::path& temporaryPath() const { return temporary_; }
+
+  // Flushes the temporary file to disk and renames it to the target
+  // (replacing any file there). Throws OutputError naming the target.
+  void commit();
+
+private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+}  // namespace lbmshape

@@ -1,0 +1,23 @@
+// A morph as one animated glTF file: every frame is its own mesh in its own
+// node, and an animation shows exactly one of them at a time. Scaling a node
+// to zero is the way glTF has to hide it: visibility itself cannot be
+// animated, and every viewer plays scale keys.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// Writes `frames` to a .gltf or .glb file. Node i (named "frame i") has a
+// `scale` channel with STEP interpolation: 1 from i/fps until (i+1)/fps, 0
+// before and after, the last frame staying until the end at frames/fps
+// seconds. Without the animation playing (a still viewer), frame 0 shows.
+// Written atomically, like writeMesh(). Throws UsageError for an unknown
+// extension, no frames or a frame rate that is not positive, and OutputError
+// as writeMesh() does (naming the frame that cannot be written).
+void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path);
+
+}  // namespace lbmshape

@@ -1,0 +1,15 @@
+#include "mesh/gltf_writer.hpp"
+
+#include "mesh/gltf_builder.hpp"
+
+namespace lbmshape {
+
+void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file)
+{
+  GltfBuilder builder;
+  const std::string name = file.target().stem().string();
+  builder.addNode(builder.addMesh(mesh, name), name);
+  saveGltf(builder.model(), format, file);
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,15 @@
+// A single mesh as a glTF 2.0 file (.gltf or .glb).
+#pragma once
+
+#include "core/atomic_file.hpp"
+#include "mesh/mesh_format.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// One mesh in one node of one scene (see GltfBuilder::addMesh for the
+// arrays). Writes into file.temporaryPath(); throws OutputError naming
+// file.target().
+void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file);
+
+}  // namespace lbmshape

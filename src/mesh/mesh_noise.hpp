@@ -1,0 +1,18 @@
+// Noisy copies of clean meshes, the test input of a denoiser.
+#pragma once
+
+#include <cstdint>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// Moves every vertex along its area-weighted normal by a Gaussian amount of
+// standard deviation sigmaInMeanEdgeLengths x meanEdgeLength(mesh). The same
+// seed gives the same mesh on every machine and compiler (the generator and
+// the Gaussian are spelled out here, not left to the standard library). A
+// vertex without a normal (no triangle with area uses it) stays put. The
+// result has no normals: the old ones no longer fit.
+TriangleMesh addNormalNoise(const TriangleMesh& mesh, double sigmaInMeanEdgeLengths, uint32_t seed);
+
+}  // namespace lbmshape

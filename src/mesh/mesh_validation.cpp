@@ -1,0 +1,74 @@
+#include "mesh/mesh_validation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "mesh/mesh_geometry.hpp"
+
+namespace lbmshape {
+namespace {
+
+// Relative to the mesh's size: far thinner than any lattice can resolve, and
+// well above the rounding of single-precision coordinates (about 6e-8), so a
+// plane stored in float, tilted or not, is still recognised as flat.
+constexpr double flatTolerance = 1e-6;
+
+std::string coordinates(const glm::dvec3& p)
+{
+  std::ostringstream s;
+  s << '(' << p.x << ", " << p.y << ", " << p.z << ')';
+  return s.str();
+}
+
+}  // namespace
+
+void validateInputMesh(TriangleMesh& mesh, const std::filesystem::path& path)
+{
+  const std::string prefix = "cannot read " + path.string() + ": ";
+  if (mesh.triangles.empty()) throw InputError(prefix + "it contains no triangles");
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.triangles[t][k] >= mesh.positions.size())
+        throw InputError(prefix + "triangle " + std::to_string(t + 1) + " refers to vertex number " +
+                         std::to_string(uint64_t(mesh.triangles[t][k]) + 1) + ", but there are only " +
+                         std::to_string(mesh.positions.size()) + " vertices");
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if (!isFinite(mesh.positions[v]))
+      throw InputError(prefix + "vertex " + std::to_string(v + 1) + " has a coordinate that is not a finite number " +
+                       coordinates(mesh.positions[v]));
+
+  const size_t before = mesh.triangles.size();
+  std::erase_if(mesh.triangles, [&](const glm::uvec3& t) { return isDegenerate(mesh, t); });
+  if (mesh.triangles.empty())
+    throw InputError(prefix + "all " + std::to_string(before) + " triangles are degenerate (zero area)");
+  if (mesh.triangles.size() < before)
+    log::verbose(path.string() + ": dropped " + std::to_string(before - mesh.triangles.size()) +
+                 " degenerate (zero-area) triangles of " + std::to_string(before));
+
+  if (mesh.triangles.size() == 1) throw InputError(prefix + "it is a single triangle, which encloses no volume");
+  const Bounds box = bounds(mesh);
+  const glm::dvec3 size = box.size();
+  const double largest = std::max({size.x, size.y, size.z});
+  for (int axis = 0; axis < 3; ++axis)
+    if (size[axis] <= flatTolerance * largest)
+      throw InputError(prefix + "it is flat (its bounding box has no extent along " + std::string(1, char('x' + axis)) +
+                       "), so it encloses no volume");
+  // Flat but tilted: every vertex in the plane of the largest triangle (the
+  // one whose normal is known best).
+  const glm::uvec3* largestTriangle = &mesh.triangles.front();
+  double largestArea = 0;
+  for (const auto& t : mesh.triangles)
+    if (double area = glm::length(triangleAreaVector(mesh, t)); area > largestArea)
+      largestArea = area, largestTriangle = &t;
+  const glm::dvec3 normal = glm::normalize(triangleAreaVector(mesh, *largestTriangle));
+  const glm::dvec3 origin = mesh.positions[(*largestTriangle)[0]];
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(glm::dot(mesh.positions[t[k]] - origin, normal)) > flatTolerance * box.diagonal()) return;
+  throw InputError(prefix + "it is flat (all its triangles lie in one plane), so it encloses no volume");
+}
+
+}  // namespace lbmshape

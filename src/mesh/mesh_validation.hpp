@@ -1,0 +1,20 @@
+// The checks every mesh passes on its way in, whatever its format: what
+// makes a file unusable is an InputError naming the file; what only makes it
+// untidy is fixed quietly.
+#pragma once
+
+#include <filesystem>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// Throws InputError ("cannot read <path>: <what is wrong>") when the mesh has
+// no triangles, an index out of range, a NaN or infinite coordinate, only
+// degenerate (zero-area) triangles, or encloses no volume because all of it
+// lies in one plane (which includes a single triangle). Otherwise removes the
+// degenerate triangles (saying so in the verbose log) and returns. Vertices no
+// triangle uses are allowed and kept.
+void validateInputMesh(TriangleMesh& mesh, const std::filesystem::path& path);
+
+}  // namespace lbmshape

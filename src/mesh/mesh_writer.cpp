@@ -1,0 +1,35 @@
+#include "mesh/mesh_writer.hpp"
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "mesh/gltf_writer.hpp"
+#include "mesh/mesh_format.hpp"
+#include "mesh/obj_writer.hpp"
+#include "mesh/openmesh_writer.hpp"
+#include "mesh/writable_mesh.hpp"
+
+namespace lbmshape {
+
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path)
+{
+  const auto format = meshFormatOf(path);
+  if (!format)
+    throw UsageError("cannot write " + path.string() + ": unknown mesh format '" + path.extension().string() +
+                     "' (use one of " + supportedExtensions() + ")");
+  requireWritable(mesh, path);
+  AtomicFile file(path);
+  switch (*format) {
+    case MeshFormat::Obj: writeObj(mesh, file); break;
+    case MeshFormat::Ply:
+    case MeshFormat::Off:
+    case MeshFormat::Stl: writeWithOpenMesh(mesh, *format, file); break;
+    case MeshFormat::Gltf:
+    case MeshFormat::Glb: writeGltf(mesh, *format, file); break;
+  }
+  file.commit();
+  log::verbose("wrote " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
+               std::to_string(mesh.triangleCount()) + " triangles");
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,24 @@
+// Writing a surface mesh to a file, in any format lbmshape knows.
+#pragma once
+
+#include <filesystem>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// Writes `mesh` in the format its extension names (in any letter case):
+//   .obj         text, coordinates exact (shortest round-trip doubles)
+//   .ply, .stl   binary, single precision
+//   .off         text, single precision
+//   .gltf, .glb  glTF 2.0: one mesh, one node; float positions, unit
+//                normals (computed, area-weighted, when the mesh has none),
+//                uint32 indices; a .gltf carries its data inside (data URI)
+// The file appears complete or not at all (see AtomicFile): an existing file
+// of that name is replaced only once the new one is fully written.
+// Throws UsageError for an unknown extension, before anything is written,
+// and OutputError naming the path when the folder is missing or unwritable,
+// the disk is full, or the mesh cannot be written (no triangles, NaN).
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
+
+}  // namespace lbmshape

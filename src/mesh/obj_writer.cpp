@@ -1,0 +1,53 @@
+#include "mesh/obj_writer.hpp"
+
+#include <charconv>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace lbmshape {
+namespace {
+
+template <class Vector>
+void appendVector(std::string& line, const char* keyword, const Vector& v)
+{
+  char number[32];
+  line += keyword;
+  for (int k = 0; k < 3; ++k) {
+    auto end = std::to_chars(number, number + sizeof number, v[k]).ptr;  // shortest exact round trip
+    line += ' ';
+    line.append(number, end);
+  }
+  line += '\n';
+}
+
+}  // namespace
+
+void writeObj(const TriangleMesh& mesh, const AtomicFile& file)
+{
+  const bool withNormals = mesh.normals.size() == mesh.positions.size();
+  std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
+  out << "# lbmshape " << LBMSHAPE_VERSION << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
+      << " triangles\n";
+  std::string line;
+  for (size_t i = 0; i < mesh.positions.size() && out; ++i) {
+    line.clear();
+    appendVector(line, "v", mesh.positions[i]);
+    if (withNormals) appendVector(line, "vn", mesh.normals[i]);
+    out << line;
+  }
+  for (const auto& t : mesh.triangles) {
+    if (!out) break;
+    out << 'f';
+    for (int k = 0; k < 3; ++k) {
+      out << ' ' << t[k] + 1;  // OBJ counts from 1
+      if (withNormals) out << "//" << t[k] + 1;
+    }
+    out << '\n';
+  }
+  out.close();
+  if (!out)
+    throw OutputError("cannot write " + file.target().string() + ": writing the file failed (is the disk full?)");
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,40 @@
+#include "mesh/openmesh_writer.hpp"
+
+#include <fstream>
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/MeshIO.hh>  // registers OpenMesh's writer modules
+
+#include "core/error.hpp"
+#include "mesh/openmesh_diagnostics.hpp"
+#include "mesh/soup_exporter.hpp"
+
+namespace lbmshape {
+
+void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file)
+{
+  const char* extension = format == MeshFormat::Ply ? "ply" : format == MeshFormat::Off ? "off" : "stl";
+  OpenMesh::IO::Options options;
+  if (format != MeshFormat::Off) options += OpenMesh::IO::Options::Binary;
+  if (format == MeshFormat::Ply) options += OpenMesh::IO::Options::LSB;
+
+  // Into our own stream rather than by file name: OpenMesh's writers do not
+  // check that their output reached the disk, this stream does.
+  std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
+  SoupExporter exporter(mesh);
+  bool ok = false;
+  std::string diagnostic;
+  {
+    OpenMeshDiagnostics diagnostics;
+    // 9 significant digits: enough for any float to read back exactly (OFF is text).
+    ok = out && OpenMesh::IO::IOManager().write(out, extension, exporter, options, 9);
+    if (!ok) diagnostic = diagnostics.firstMessage();
+  }
+  out.close();
+  if (!ok || !out)
+    throw OutputError(
+        "cannot write " + file.target().string() + ": " +
+        (diagnostic.empty() ? std::string("writing the file failed (is the disk full?)") : "OpenMesh: " + diagnostic));
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,22 @@
+#include "mesh/writable_mesh.hpp"
+
+#include "core/error.hpp"
+#include "mesh/mesh_geometry.hpp"
+
+namespace lbmshape {
+
+void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what)
+{
+  const std::string prefix = "cannot write " + path.string() + ": " + what;
+  if (mesh.triangles.empty()) throw OutputError(prefix + " has no triangles");
+  for (const auto& t : mesh.triangles)
+    if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size())
+      throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");
+  for (const auto& p : mesh.positions)
+    if (!isFinite(p)) throw OutputError(prefix + " has a coordinate that is not a finite number");
+  if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+    throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +
+                      std::to_string(mesh.positions.size()) + " vertices");
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,27 @@
+// Stage 1 of the signed distance: exact unsigned distances near the surface.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/volume.hpp"
+#include "sdf/grid_frame.hpp"
+#include "sdf/triangle_bvh.hpp"
+
+namespace lbmshape {
+
+// For every cell whose centre is within bandVoxels of the surface, writes
+// its exact distance (in voxels) to `distance` and its nearest triangle to
+// `nearest`; other cells are left untouched. Returns how many cells it wrote.
+// Cells it leaves are certainly farther than bandVoxels.
+size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
+                          std::vector<uint32_t>& nearest);
+
+// Exact distances (and nearest triangles) for the cells on the grid's six
+// faces that have none yet. The far field only spreads triangles that some
+// cell already holds, so when part of the mesh lies outside the grid, the
+// faces must bring in the triangles there. Returns how many cells it wrote.
+size_t exactFaceDistances(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
+                          std::vector<uint32_t>& nearest);
+
+}  // namespace lbmshape

@@ -1,0 +1,199 @@
+#include "sdf/far_field.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace lbmshape {
+namespace {
+
+constexpr uint8_t kPending = 0, kSettled = 1;
+constexpr float kBucketWidth = 1.0f;  // voxels
+constexpr uint64_t kNoOffer = std::numeric_limits<uint64_t>::max();
+
+// The 26 neighbours of a cell, with a bounds check only for cells on the
+// grid's faces.
+class Neighbourhood {
+public:
+  explicit Neighbourhood(Extent3 e) : e_(e)
+  {
+    int k = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if (dx || dy || dz) {
+            step_[k] = {dx, dy, dz};
+            offset_[k++] = (ptrdiff_t(dz) * e_.ny + dy) * e_.nx + dx;
+          }
+  }
+
+  glm::ivec3 cell(size_t i) const { return {int(i % e_.nx), int(i / e_.nx % e_.ny), int(i / e_.nx / e_.ny)}; }
+
+  // f(index, cell) for each neighbour of cell c (index i).
+  template <class F>
+  void forEach(size_t i, const glm::ivec3& c, F&& f) const
+  {
+    const bool inside = c.x > 0 && c.y > 0 && c.z > 0 && c.x < e_.nx - 1 && c.y < e_.ny - 1 && c.z < e_.nz - 1;
+    for (int k = 0; k < 26; ++k) {
+      const glm::ivec3 n = c + step_[k];
+      if (inside || e_.contains(n.x, n.y, n.z)) f(size_t(ptrdiff_t(i) + offset_[k]), n);
+    }
+  }
+
+private:
+  Extent3 e_;
+  glm::ivec3 step_[26];
+  ptrdiff_t offset_[26];
+};
+
+template <class T>
+void gather(std::vector<T>& out, const std::vector<T>& local)
+{
+#pragma omp critical(lbmshape_far_field_gather)
+  out.insert(out.end(), local.begin(), local.end());
+}
+
+// An offer is a squared distance (its float bits, which order as the values
+// do for non-negative floats) and the triangle it comes from, packed so that
+// one atomic minimum keeps the best, ties going to the lower triangle index.
+uint64_t pack(float distance2, uint32_t triangle)
+{
+  return uint64_t(std::bit_cast<uint32_t>(distance2)) << 32 | triangle;
+}
+uint32_t offeredTriangle(uint64_t offer) { return uint32_t(offer); }
+
+template <class T>
+bool lower(T& slot, T value)
+{
+  std::atomic_ref<T> a(slot);
+  T old = a.load(std::memory_order_relaxed);
+  while (value < old)
+    if (a.compare_exchange_weak(old, value, std::memory_order_relaxed)) return true;
+  return false;
+}
+
+struct Push {
+  uint32_t cell;
+  uint32_t bucket;
+};
+
+}  // namespace
+
+size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
+                         std::vector<uint32_t>& nearest, bool exact)
+{
+  const Extent3 e = frame.extent;
+  const size_t cells = e.cells();
+  const Neighbourhood neighbours(e);
+  const double inverseVoxel = 1.0 / frame.voxel;
+  std::vector<uint8_t> state(cells, kPending);
+  std::vector<uint64_t> offer(cells, kNoOffer);
+  std::vector<uint32_t> listed(cells, std::numeric_limits<uint32_t>::max());  // lowest bucket holding the cell
+  size_t seeded = 0;
+#pragma omp parallel for schedule(static) reduction(+ : seeded)
+  for (size_t i = 0; i < cells; ++i)
+    if (nearest[i] != TriangleBvh::kNoTriangle) state[i] = kSettled, ++seeded;
+  if (seeded == cells || seeded == 0) return 0;
+  size_t filled = 0;
+
+  // buckets[b] lists the cells whose best offer is in [b, b + 1) bucket widths.
+  std::vector<std::vector<uint32_t>> buckets;
+  std::vector<Push> pushes;
+  auto file = [&] {
+    for (const Push& p : pushes) {
+      if (p.bucket >= buckets.size()) buckets.resize(p.bucket + 1);
+      buckets[p.bucket].push_back(p.cell);
+    }
+    pushes.clear();
+  };
+  // A settled cell offers each pending neighbour the distance from that
+  // neighbour to its own closest point q on triangle t: an upper bound of
+  // the neighbour's distance to t, and close to it.
+  auto offerAround = [&](size_t i, const glm::ivec3& c, const glm::dvec3& q, uint32_t t, size_t floor,
+                         std::vector<Push>& out) {
+    neighbours.forEach(i, c, [&](size_t j, const glm::ivec3& n) {
+      if (state[j] != kPending) return;
+      const glm::dvec3 gap = (frame.toWorld(glm::dvec3(n)) - q) * inverseVoxel;
+      const float d2 = float(glm::dot(gap, gap));
+      if (!lower(offer[j], pack(d2, t))) return;
+      const uint32_t bucket = uint32_t(std::max(floor, size_t(std::sqrt(d2) / kBucketWidth)));
+      if (lower(listed[j], bucket)) out.push_back({uint32_t(j), bucket});
+    });
+  };
+#pragma omp parallel
+  {
+    std::vector<Push> local;
+#pragma omp for schedule(dynamic, 1024) nowait
+    for (size_t i = 0; i < cells; ++i) {
+      if (state[i] != kSettled) continue;
+      const glm::ivec3 c = neighbours.cell(i);
+      bool open = false;
+      neighbours.forEach(i, c, [&](size_t j, const glm::ivec3&) { open = open || state[j] == kPending; });
+      if (!open) continue;
+      const glm::dvec3 q = bvh.closestOnTriangle(frame.toWorld(glm::dvec3(c)), nearest[i]).point;
+      offerAround(i, c, q, nearest[i], 0, local);
+    }
+    gather(pushes, local);
+  }
+  file();
+
+  std::vector<uint32_t> batch;
+  for (size_t b = 0; b < buckets.size(); ++b) {
+    while (!buckets[b].empty()) {
+      // Settle the bucket's pending cells whose best offer still falls in it.
+      batch.clear();
+      const std::vector<uint32_t>& entries = buckets[b];
+#pragma omp parallel
+      {
+        std::vector<uint32_t> local;
+#pragma omp for schedule(static) nowait
+        for (size_t k = 0; k < entries.size(); ++k) {
+          const uint32_t i = entries[k];
+          if (state[i] == kPending && listed[i] == b) {
+            listed[i] = std::numeric_limits<uint32_t>::max() - 1;  // entries elsewhere are stale now
+            local.push_back(i);
+          }
+        }
+        gather(batch, local);
+      }
+      buckets[b].clear();
+      for (uint32_t i : batch) state[i] = kSettled;
+      // Each settles on the triangle of its best offer, measured exactly,
+      // and offers its own closest point on.
+#pragma omp parallel
+      {
+        std::vector<Push> local;
+#pragma omp for schedule(dynamic, 64) nowait
+        for (size_t k = 0; k < batch.size(); ++k) {
+          const size_t i = batch[k];
+          const glm::ivec3 c = neighbours.cell(i);
+          const uint32_t t = offeredTriangle(offer[i]);
+          const TriangleBvh::Closest best = bvh.closestOnTriangle(frame.toWorld(glm::dvec3(c)), t);
+          distance[i] = float(best.distance * inverseVoxel);
+          nearest[i] = t;
+          offerAround(i, c, best.point, t, b, local);
+        }
+        gather(pushes, local);
+      }
+      filled += batch.size();
+      file();
+    }
+    std::vector<uint32_t>().swap(buckets[b]);
+  }
+
+  if (exact) {
+#pragma omp parallel for schedule(dynamic, 256)
+    for (size_t i = 0; i < cells; ++i) {
+      if (offer[i] == kNoOffer) continue;
+      const glm::dvec3 p = frame.toWorld(glm::dvec3(neighbours.cell(i)));
+      const TriangleBvh::Closest c = bvh.closest(p, bvh.closestOnTriangle(p, nearest[i]).distance);
+      distance[i] = float(c.distance * inverseVoxel);
+      nearest[i] = c.triangle;
+    }
+  }
+  return filled;
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,96 @@
+// Exact geometry of one triangle seen from a point: the closest point on it
+// and the solid angle it subtends. The signed distance field is built from
+// these two primitives, so both accept any triangle, degenerate ones included.
+// They run in the innermost loops, hence inline.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace lbmshape {
+
+// The point of segment [a, b] nearest to p; a itself when a == b.
+inline glm::dvec3 closestPointOnSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
+{
+  const glm::dvec3 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  if (!(length2 > 0.0)) return a;
+  const double t = std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0);
+  return a + t * ab;
+}
+
+namespace detail {
+
+inline glm::dvec3 closestPointOnEdges(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                      const glm::dvec3& c)
+{
+  glm::dvec3 best = closestPointOnSegment(p, a, b);
+  double best2 = glm::dot(best - p, best - p);
+  for (const glm::dvec3& q : {closestPointOnSegment(p, b, c), closestPointOnSegment(p, c, a)}) {
+    const double d2 = glm::dot(q - p, q - p);
+    if (d2 < best2) best = q, best2 = d2;
+  }
+  return best;
+}
+
+}  // namespace detail
+
+// The point of triangle (a, b, c) nearest to p. Triangles with (almost) no
+// area, from repeated or collinear vertices, are treated as the segments
+// they are: a sliver thinner than 1e-6 of its edges is its edges to within
+// that width. Every other triangle has edges of positive length, so no
+// division below can be by zero.
+// Ericson, Real-Time Collision Detection (2005), 5.1.5: find the Voronoi
+// region of p (three vertices, three edges, the face) with a few dot
+// products, then project onto that feature.
+inline glm::dvec3 closestPointOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                         const glm::dvec3& c)
+{
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const glm::dvec3 normal = glm::cross(ab, ac);
+  const double area2 = glm::dot(normal, normal);
+  if (!(area2 > 1e-12 * glm::dot(ab, ab) * glm::dot(ac, ac))) return detail::closestPointOnEdges(p, a, b, c);
+
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+
+  // Face region: va + vb + vc is |ab x ac|^2, but computed from differences
+  // of products; clamping keeps rounding from leaving the triangle.
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = std::clamp(vb * denominator, 0.0, 1.0), w = std::clamp(vc * denominator, 0.0, 1.0 - v);
+  return a + v * ab + w * ac;
+}
+
+// Signed solid angle of triangle (a, b, c) seen from p (van Oosterom and
+// Strackee 1983), in (-2 pi, 2 pi); positive when the triangle's
+// counter-clockwise normal points away from p, so that the solid angles of a
+// closed, outward-oriented mesh add up to 4 pi inside and 0 outside.
+inline double solidAngle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+{
+  const glm::dvec3 u = a - p, v = b - p, w = c - p;
+  const double lu = glm::length(u), lv = glm::length(v), lw = glm::length(w);
+  const double numerator = glm::dot(u, glm::cross(v, w));
+  const double denominator = lu * lv * lw + glm::dot(u, v) * lw + glm::dot(v, w) * lu + glm::dot(w, u) * lv;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+}  // namespace lbmshape

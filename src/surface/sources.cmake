@@ -1,0 +1,6 @@
+target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/cube_cases.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inside_mask.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loop_triangulation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/marching_cubes.cpp
+)

@@ -1,0 +1,4 @@
+lbmshape_test(cli_tests
+  ${CMAKE_CURRENT_LIST_DIR}/json_results_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/usage_errors_test.cpp
+)

@@ -1,0 +1,58 @@
+// Bad parameters are usage errors: exit code 2 and one line on stderr naming
+// what is wrong, found before any GPU work (nothing is printed on stdout).
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace lbmshape {
+namespace {
+
+struct UsageCase {
+  const char* name;
+  std::vector<std::string> arguments;
+  const char* mentions;  // the message must name the culprit
+};
+
+void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.name; }
+
+class UsageErrors : public ::testing::TestWithParam<UsageCase> {};
+
+TEST_P(UsageErrors, ExitTwoWithOneLine)
+{
+  const UsageCase& c = GetParam();
+  testing::CliResult r = testing::runLbmshape(c.arguments);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  auto lines = testing::nonEmptyLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_EQ(lines[0].rfind("lbmshape: error: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find(c.mentions), std::string::npos) << lines[0];
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Bench, UsageErrors,
+    ::testing::Values(UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
+                      UsageCase{"negative_gamma", {"bench", "--gamma", "-0.1", "--size", "8,8,8"}, "--gamma"},
+                      UsageCase{"zero_size", {"bench", "--size", "0,8,8"}, "grid size"},
+                      UsageCase{"negative_size", {"bench", "--size", "8,-3,8"}, "grid size"},
+                      UsageCase{"two_sizes", {"bench", "--size", "8,8"}, "--size"},
+                      UsageCase{"larger_than_device_memory", {"bench", "--size", "2000,2000,2000"}, "does not fit"},
+                      UsageCase{"larger_than_a_buffer_binding", {"bench", "--size", "400,400,400"}, "does not fit"},
+                      UsageCase{"no_steps", {"bench", "--steps", "0", "--size", "8,8,8"}, "--steps"},
+                      UsageCase{"unknown_device", {"--device", "no-such-gpu", "info"}, "no-such-gpu"},
+                      UsageCase{"unknown_option", {"bench", "--frobnicate"}, "frobnicate"},
+                      UsageCase{"no_command", {}, "subcommand"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CommandLine, HelpAndVersionSucceed)
+{
+  auto help = testing::runLbmshape({"--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("bench"), std::string::npos);
+  auto version = testing::runLbmshape({"--version"});
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_NE(version.out.find(LBMSHAPE_VERSION), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,0 +1,85 @@
+// AtomicFile: the target appears, or changes, only on commit().
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "mesh/mesh_fixtures.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace meshio = testing::meshio;
+
+std::string contents(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(AtomicFile, TemporaryFileIsBesideTheTargetWithItsExtension)
+{
+  meshio::ScratchFolder folder;
+  AtomicFile file(folder / "result.glb");
+  EXPECT_EQ(file.temporaryPath().parent_path(), folder.path());
+  EXPECT_EQ(file.temporaryPath().extension(), ".glb");
+  EXPECT_NE(file.temporaryPath(), file.target());
+  EXPECT_TRUE(std::filesystem::exists(file.temporaryPath()));
+}
+
+TEST(AtomicFile, CommitMovesTheContentIntoPlace)
+{
+  meshio::ScratchFolder folder;
+  {
+    AtomicFile file(folder / "out.txt");
+    meshio::writeText(file.temporaryPath(), "new");
+    file.commit();
+  }
+  EXPECT_EQ(contents(folder / "out.txt"), "new");
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, WithoutCommitNothingChanges)
+{
+  meshio::ScratchFolder folder;
+  meshio::writeText(folder / "out.txt", "old");
+  {
+    AtomicFile file(folder / "out.txt");
+    meshio::writeText(file.temporaryPath(), "half writ");
+    EXPECT_EQ(contents(folder / "out.txt"), "old");
+  }  // as when an exception leaves the writer
+  EXPECT_EQ(contents(folder / "out.txt"), "old");
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, TwoAtOnceDoNotShareATemporaryFile)
+{
+  meshio::ScratchFolder folder;
+  AtomicFile a(folder / "frame.obj"), b(folder / "frame.obj");
+  EXPECT_NE(a.temporaryPath(), b.temporaryPath());
+}
+
+TEST(AtomicFile, MissingFolderIsAnOutputErrorNamingThePath)
+{
+  meshio::ScratchFolder folder;
+  const auto target = folder / "no" / "such" / "out.obj";
+  try {
+    AtomicFile file(target);
+    FAIL() << "expected an OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(target.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(AtomicFile, TargetThatIsAFolderIsAnOutputError)
+{
+  meshio::ScratchFolder folder;
+  std::filesystem::create_directory(folder / "taken.obj");
+  EXPECT_THROW(AtomicFile(folder / "taken.obj"), OutputError);
+}
+
+}  // namespace
+}  // namespace lbmshape

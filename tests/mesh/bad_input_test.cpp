@@ -1,0 +1,221 @@
+// Everything that can be wrong with a file going in or coming out is an
+// error of the right kind (exit code), with a one-line message that names
+// the file, and leaves no file behind.
+#include <cstring>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+#include "mesh/gltf_animation.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "mesh/mesh_fixtures.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace meshio = testing::meshio;
+
+namespace fs = std::filesystem;
+
+struct BadCase {
+  std::string name;
+  ExitCode expected;
+  // Prepares the folder and returns the path the error must name.
+  std::function<fs::path(const fs::path& folder)> prepare;
+  // Reads or writes that path; must throw.
+  std::function<void(const fs::path& path)> run;
+};
+
+void read(const fs::path& path) { readMesh(path); }
+void write(const fs::path& path) { writeMesh(meshio::box({0, 0, 0}, {1, 1, 1}), path); }
+
+fs::path objFile(const fs::path& folder, const std::string& text)
+{
+  meshio::writeText(folder / "input.obj", text);
+  return folder / "input.obj";
+}
+
+std::vector<unsigned char> garbage(size_t size)
+{
+  std::mt19937 random(7);
+  std::vector<unsigned char> bytes(size);
+  for (auto& b : bytes) b = static_cast<unsigned char>(random());
+  return bytes;
+}
+
+// A binary little-endian PLY file of one tetrahedron whose first vertex is NaN.
+fs::path plyWithNaN(const fs::path& folder)
+{
+  std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  std::vector<unsigned char> bytes(header.begin(), header.end());
+  auto put = [&](const auto& value) {
+    const auto* p = reinterpret_cast<const unsigned char*>(&value);
+    bytes.insert(bytes.end(), p, p + sizeof value);
+  };
+  for (float v : {std::nanf(""), 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) put(v);
+  for (auto face : {std::array<int, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+    put(uint8_t(3));
+    for (int i : face) put(i);
+  }
+  meshio::writeBytes(folder / "nan.ply", bytes);
+  return folder / "nan.ply";
+}
+
+const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+std::vector<BadCase> badCases()
+{
+  auto garbageAs = [](std::string name) {
+    return [name](const fs::path& folder) {
+      meshio::writeBytes(folder / name, garbage(4096));
+      return folder / name;
+    };
+  };
+  return {
+      {"MissingFile", ExitCode::Input, [](const fs::path& f) { return f / "absent.obj"; }, read},
+      {"EmptyFile", ExitCode::Input, [](const fs::path& f) { return objFile(f, ""); }, read},
+      {"BinaryGarbageNamedObj", ExitCode::Input, garbageAs("garbage.obj"), read},
+      {"BinaryGarbageNamedPly", ExitCode::Input, garbageAs("garbage.ply"), read},
+      {"BinaryGarbageNamedOff", ExitCode::Input, garbageAs("garbage.off"), read},
+      {"BinaryGarbageNamedStl", ExitCode::Input, garbageAs("garbage.stl"), read},
+      {"BinaryGarbageNamedGltf", ExitCode::Input, garbageAs("garbage.gltf"), read},
+      {"BinaryGarbageNamedGlb", ExitCode::Input, garbageAs("garbage.glb"), read},
+      {"CommentsButNoTriangles", ExitCode::Input, [](const fs::path& f) { return objFile(f, "# nothing\nv 0 0 0\n"); },
+       read},
+      {"NaNCoordinateInObj", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v nan 0 0\n" + tetra.substr(8)); }, read},
+      {"InfiniteCoordinateInObj", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v 0 0 inf\n" + tetra.substr(8)); }, read},
+      {"NaNCoordinateInBinaryPly", ExitCode::Input, plyWithNaN, read},
+      {"SingleTriangle", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n"); }, read},
+      {"ZeroExtentBoundingBox", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v 0 0 2\nv 1 0 2\nv 1 1 2\nv 0 1 2\nf 1 2 3\nf 1 3 4\nf 1 4 2\n"); },
+       read},
+      {"FlatButTilted", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v 0 0 0\nv 1 0 1\nv 1 1 1\nv 0 1 0\nf 1 2 3\nf 1 3 4\n"); }, read},
+      {"AllTrianglesDegenerate", ExitCode::Input,
+       [](const fs::path& f) { return objFile(f, "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 3 3 3\nf 1 2 3\nf 2 3 4\n"); }, read},
+      {"IndexOutOfRange", ExitCode::Input, [](const fs::path& f) { return objFile(f, tetra + "f 1 2 99\n"); }, read},
+      {"UnknownInputExtension", ExitCode::Input,
+       [](const fs::path& f) {
+         meshio::writeText(f / "mesh.xyz", tetra);
+         return f / "mesh.xyz";
+       },
+       read},
+      {"InputIsAFolder", ExitCode::Input,
+       [](const fs::path& f) {
+         fs::create_directory(f / "folder.obj");
+         return f / "folder.obj";
+       },
+       read},
+      {"UnknownOutputExtension", ExitCode::Usage, [](const fs::path& f) { return f / "out.xyz"; }, write},
+      {"OutputFolderMissing", ExitCode::Output, [](const fs::path& f) { return f / "missing" / "out.obj"; }, write},
+      {"OutputFolderIsAFile", ExitCode::Output,
+       [](const fs::path& f) {
+         meshio::writeText(f / "file", "");
+         return f / "file" / "out.glb";
+       },
+       write},
+      {"UnwritableOutputFolder", ExitCode::Output,
+       [](const fs::path& f) {
+         // Permissions do not stop root, but nobody may create files in /sys.
+         if (::geteuid() == 0) return fs::path("/sys/lbmshape-test.ply");
+         fs::create_directory(f / "locked");
+         fs::permissions(f / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+         return f / "locked" / "out.ply";
+       },
+       write},
+      {"EmptyMeshOutput", ExitCode::Output, [](const fs::path& f) { return f / "empty.obj"; },
+       [](const fs::path& p) { writeMesh(TriangleMesh{}, p); }},
+      {"NaNMeshOutput", ExitCode::Output, [](const fs::path& f) { return f / "nan.glb"; },
+       [](const fs::path& p) {
+         TriangleMesh mesh = meshio::box({0, 0, 0}, {1, 1, 1});
+         mesh.positions[3].y = std::nan("");
+         writeMesh(mesh, p);
+       }},
+      {"AnimationWithObjExtension", ExitCode::Usage, [](const fs::path& f) { return f / "morph.obj"; },
+       [](const fs::path& p) { writeGltfAnimation({testing::icosphere(0)}, 24, p); }},
+      {"AnimationWithoutFrames", ExitCode::Usage, [](const fs::path& f) { return f / "morph.glb"; },
+       [](const fs::path& p) { writeGltfAnimation({}, 24, p); }},
+      {"AnimationAtZeroFramesPerSecond", ExitCode::Usage, [](const fs::path& f) { return f / "morph.glb"; },
+       [](const fs::path& p) { writeGltfAnimation({testing::icosphere(0)}, 0.0, p); }},
+  };
+}
+
+// Names the case in test listings (instead of a dump of its bytes).
+void PrintTo(const BadCase& c, std::ostream* out) { *out << c.name; }
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, FailsWithTheRightErrorNamingTheFileAndLeavesNothing)
+{
+  const BadCase& c = GetParam();
+  meshio::ScratchFolder folder;
+  const fs::path path = c.prepare(folder.path());
+  const auto before = folder.entries();
+  try {
+    c.run(path);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.code(), c.expected) << message;
+    EXPECT_NE(message.find(path.string()), std::string::npos) << "the message names the file: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+  }
+  EXPECT_EQ(folder.entries(), before) << "nothing was written";
+  if (path.parent_path().parent_path() == folder.path() && fs::is_directory(path.parent_path())) {
+    EXPECT_TRUE(fs::is_empty(path.parent_path())) << "nothing was written in " << path.parent_path();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(badCases()),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(BadInputMessages, SayWhatIsWrong)
+{
+  // The message is for the user: spot-check that it names the problem, not only the file.
+  meshio::ScratchFolder folder;
+  auto messageOf = [](auto&& action) -> std::string {
+    try {
+      action();
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_NE(messageOf([&] { readMesh(folder / "absent.obj"); }).find("no such file"), std::string::npos);
+  EXPECT_NE(messageOf([&] { readMesh(objFile(folder.path(), "v nan 0 0\n" + tetra.substr(8))); }).find("line 1"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] { readMesh(objFile(folder.path(), tetra + "f 1 2 99\n")); }).find("99"), std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              readMesh(objFile(folder.path(), "v 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n"));
+            }).find("single triangle"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] { readMesh(plyWithNaN(folder.path())); }).find("vertex 1"), std::string::npos);
+  EXPECT_NE(messageOf([&] { writeMesh(testing::icosphere(0), folder / "out.fbx"); }).find(".fbx"), std::string::npos);
+}
+
+TEST(FailedWrite, LeavesThePreviousFileAlone)
+{
+  meshio::ScratchFolder folder;
+  writeMesh(testing::icosphere(0), folder / "kept.obj");
+  TriangleMesh broken = testing::icosphere(1);
+  broken.positions[0].x = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(writeMesh(broken, folder / "kept.obj"), OutputError);
+  EXPECT_EQ(readMesh(folder / "kept.obj").triangleCount(), 20u);
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"kept.obj"});
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,0 +1,131 @@
+// glTF files from elsewhere: node transforms (TRS and matrix, nested),
+// scenes, strips and fans, unindexed primitives, external buffers and GLB.
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "mesh/hand_made_gltf.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_fixtures.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace meshio = testing::meshio;
+
+// A unit tetrahedron with outward faces, as positions and indices.
+const std::vector<glm::vec3> tetraCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const std::vector<uint32_t> tetraIndices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+
+glm::dvec3 minimum(const TriangleMesh& mesh) { return bounds(mesh).min; }
+glm::dvec3 maximum(const TriangleMesh& mesh) { return bounds(mesh).max; }
+
+void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance = 1e-6)
+{
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+class GltfReading : public ::testing::TestWithParam<std::string> {
+protected:
+  // Writes the hand-made file as .gltf (+ .bin) or .glb, by the parameter.
+  TriangleMesh readBack(const meshio::HandMadeGltf& gltf)
+  {
+    const auto path = folder_ / ("model" + GetParam());
+    GetParam() == ".glb" ? gltf.writeGlb(path) : gltf.writeGltf(path);
+    return readMesh(path);
+  }
+
+  meshio::ScratchFolder folder_;
+};
+
+TEST_P(GltfReading, NodeTransformsAreAppliedThroughTheHierarchy)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  gltf.json["nodes"] = {{{"translation", {10, 0, 0}}, {"children", {1}}},  // parent: move by +10 x
+                        {{"scale", {2, 3, 4}}, {"mesh", mesh}}};           // child: stretch
+  gltf.json["scenes"] = {{{"nodes", {0}}}};
+  gltf.json["scene"] = 0;
+  const TriangleMesh read = readBack(gltf);
+  ASSERT_EQ(read.triangleCount(), 4u);
+  expectNear(minimum(read), {10, 0, 0});
+  expectNear(maximum(read), {12, 3, 4});
+  EXPECT_NEAR(meshio::signedVolume(read), 24.0 / 6.0, 1e-9);
+}
+
+TEST_P(GltfReading, RotationAndMatrixNodes)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const double s = std::sqrt(0.5);
+  gltf.json["nodes"] = {{{"rotation", {0, 0, s, s}}, {"mesh", mesh}},  // 90 degrees about z: x -> y
+                        {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 6, 7, 1}},
+                         {"mesh", mesh}}};  // column-major: moves by (5, 6, 7)
+  gltf.json["scenes"] = {{{"nodes", {0, 1}}}};
+  const TriangleMesh read = readBack(gltf);
+  ASSERT_EQ(read.triangleCount(), 8u);
+  expectNear(read.positions[1], {0, 1, 0});  // rotated (1, 0, 0)
+  expectNear(read.positions[4 + 3], {5, 6, 8});
+}
+
+TEST_P(GltfReading, MirroringNodesKeepFacesOutward)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  gltf.json["nodes"] = {{{"scale", {-1, 1, 1}}, {"mesh", mesh}}};
+  gltf.json["scenes"] = {{{"nodes", {0}}}};
+  EXPECT_NEAR(meshio::signedVolume(readBack(gltf)), 1.0 / 6.0, 1e-9);
+}
+
+TEST_P(GltfReading, OnlyTheDefaultSceneIsRead)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  gltf.json["nodes"] = {{{"mesh", mesh}}, {{"mesh", mesh}, {"translation", {0, 0, 5}}}};
+  gltf.json["scenes"] = {{{"nodes", {0}}}, {{"nodes", {1}}}};
+  gltf.json["scene"] = 1;
+  expectNear(minimum(readBack(gltf)), {0, 0, 5});
+}
+
+TEST_P(GltfReading, WithoutScenesEveryRootNodeIsRead)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  gltf.json["nodes"] = {
+      {{"mesh", mesh}, {"children", {2}}}, {{"mesh", mesh}, {"translation", {3, 0, 0}}}, {{"mesh", mesh}}};
+  EXPECT_EQ(readBack(gltf).triangleCount(), 12u) << "two roots, one child: each instance once";
+}
+
+TEST_P(GltfReading, StripsFansUnindexedAndShortIndices)
+{
+  meshio::HandMadeGltf gltf;
+  // Square pyramid: the base as a strip, the sides as a fan around the apex.
+  const int corners = gltf.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 1}});
+  const int strip = gltf.addMesh(corners, gltf.addIndices16({1, 0, 3, 2}), 5);
+  const int fan = gltf.addMesh(corners, gltf.addIndices({4, 0, 1, 3, 2, 0}), 6);
+  // And a tetrahedron without indices: every three positions a triangle.
+  std::vector<glm::vec3> soup;
+  for (uint32_t i : tetraIndices) soup.push_back(tetraCorners[i] + glm::vec3(5, 0, 0));
+  const int unindexed = gltf.addMesh(gltf.addPositions(soup), -1, 4);
+  gltf.json["nodes"] = {{{"mesh", strip}}, {{"mesh", fan}}, {{"mesh", unindexed}}};
+  gltf.json["scenes"] = {{{"nodes", {0, 1, 2}}}};
+  const TriangleMesh read = readBack(gltf);
+  EXPECT_EQ(read.triangleCount(), 2u + 4u + 4u);
+  EXPECT_NEAR(meshio::signedVolume(read), 1.0 / 3.0 + 1.0 / 6.0, 1e-9) << "strip and fan windings followed";
+}
+
+TEST_P(GltfReading, IndexBeyondTheVerticesIsAnInputError)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices({0, 2, 1, 0, 1, 9}));
+  gltf.json["nodes"] = {{{"mesh", mesh}}};
+  EXPECT_THROW(readBack(gltf), InputError);
+}
+
+INSTANTIATE_TEST_SUITE_P(Containers, GltfReading, ::testing::Values(".gltf", ".glb"),
+                         [](const auto& info) { return info.param.substr(1); });
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,0 +1,105 @@
+// Every format lbmshape writes reads back as the same mesh: the same vertex
+// and triangle counts and the same corner positions, exactly for OBJ (which
+// keeps doubles) and to single precision for the others.
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "mesh/mesh_fixtures.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace meshio = testing::meshio;
+
+struct RoundTripCase {
+  std::string extension;
+  double tolerance;  // relative to the mesh's size
+};
+
+// Names the case in test listings (instead of a dump of its bytes).
+void PrintTo(const RoundTripCase& c, std::ostream* out) { *out << c.extension; }
+
+class RoundTripEveryFormat : public ::testing::TestWithParam<RoundTripCase> {};
+
+void expectSameCorners(const TriangleMesh& expected, const TriangleMesh& actual, double tolerance)
+{
+  ASSERT_EQ(actual.triangleCount(), expected.triangleCount());
+  for (size_t t = 0; t < expected.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 a = expected.positions[expected.triangles[t][k]], b = actual.positions[actual.triangles[t][k]];
+      ASSERT_LE(glm::distance(a, b), tolerance) << "triangle " << t << " corner " << k;
+    }
+}
+
+TEST_P(RoundTripEveryFormat, KeepsCountsAndPositions)
+{
+  // Off the origin and not a round size, so that the coordinates use every digit.
+  const TriangleMesh sphere = testing::icosphere(2, 1.7, {3.25, -0.5, 12.0});
+  meshio::ScratchFolder folder;
+  const auto path = folder / ("sphere" + GetParam().extension);
+  writeMesh(sphere, path);
+  const TriangleMesh read = readMesh(path);
+
+  EXPECT_EQ(read.vertexCount(), sphere.vertexCount());
+  EXPECT_EQ(read.triangleCount(), sphere.triangleCount());
+  const double tolerance = GetParam().tolerance * 14.0;  // |coordinates| <= 14
+  expectSameCorners(sphere, read, tolerance);
+  // STL has no shared vertices: the reader merges equal positions in the
+  // order it meets them, so only the corners can be compared there.
+  if (GetParam().extension != ".stl") {
+    for (size_t i = 0; i < sphere.positions.size(); ++i)
+      ASSERT_LE(glm::distance(sphere.positions[i], read.positions[i]), tolerance);
+  }
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{path.filename().string()}) << "no temporary file is left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, RoundTripEveryFormat,
+                         ::testing::Values(RoundTripCase{".obj", 0.0}, RoundTripCase{".ply", 2e-7},
+                                           RoundTripCase{".off", 2e-7}, RoundTripCase{".stl", 2e-7},
+                                           RoundTripCase{".gltf", 2e-7}, RoundTripCase{".glb", 2e-7},
+                                           RoundTripCase{".OBJ", 0.0}, RoundTripCase{".Glb", 2e-7}),
+                         [](const auto& info) {
+                           std::string name = info.param.extension.substr(1);
+                           return name == "OBJ" || name == "Glb" ? name + "_upper_case" : name;
+                         });
+
+TEST(RoundTrip, ObjKeepsEveryBitOfADoubleFarFromTheOrigin)
+{
+  // 1e6 units away with detail at 1e-7: float would keep none of it.
+  const TriangleMesh far = testing::icosphere(1, 3e-7, {1e6 + 0.123456789, -2e6, 7.0});
+  meshio::ScratchFolder folder;
+  writeMesh(far, folder / "far.obj");
+  const TriangleMesh read = readMesh(folder / "far.obj");
+  ASSERT_EQ(read.positions.size(), far.positions.size());
+  for (size_t i = 0; i < far.positions.size(); ++i) EXPECT_EQ(read.positions[i], far.positions[i]) << "vertex " << i;
+}
+
+TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
+{
+  // A box with a fin: a triangle on one of its edges, so that edge has three
+  // faces, which OpenMesh's own mesh types would refuse.
+  TriangleMesh finned = meshio::box({0, 0, 0}, {1, 1, 1});
+  finned.positions.push_back({0.5, -1.0, -1.0});
+  finned.triangles.push_back({0, 1, 8});
+  meshio::ScratchFolder folder;
+  for (const char* extension : {".obj", ".ply", ".off", ".stl", ".glb"}) {
+    const auto path = folder / (std::string("finned") + extension);
+    writeMesh(finned, path);
+    EXPECT_EQ(readMesh(path).triangleCount(), 13u) << extension;
+  }
+}
+
+TEST(RoundTrip, WritingReplacesAnExistingFile)
+{
+  meshio::ScratchFolder folder;
+  const auto path = folder / "mesh.ply";
+  writeMesh(testing::icosphere(0), path);
+  writeMesh(testing::icosphere(1), path);
+  EXPECT_EQ(readMesh(path).triangleCount(), 80u);
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"mesh.ply"});
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,0 +1,11 @@
+lbmshape_test(sdf_tests
+  ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sdf_fixtures.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/triangle_bvh_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/winding_gradient_bound_test.cpp
+)
+lbmshape_shared_asset_test(sdf_shared_asset_tests
+  ${CMAKE_CURRENT_LIST_DIR}/shared_mesh_sdf_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sdf_fixtures.cpp
+)

@@ -1,0 +1,59 @@
+#include "support/cli_runner.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace lbmshape::testing {
+namespace {
+
+std::string shellQuote(const std::string& s)
+{
+  std::string quoted = "'";
+  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string slurp(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+CliResult runLbmshape(const std::vector<std::string>& arguments)
+{
+  static int counter = 0;
+  const auto base = std::filesystem::temp_directory_path() /
+                    ("lbmshape-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::string command = shellQuote(LBMSHAPE_BINARY);
+  for (const auto& a : arguments) command += " " + shellQuote(a);
+  command += " >" + shellQuote(base.string() + ".out") + " 2>" + shellQuote(base.string() + ".err") + " </dev/null";
+  const int status = std::system(command.c_str());
+  CliResult result;
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = slurp(base.string() + ".out");
+  result.err = slurp(base.string() + ".err");
+  std::filesystem::remove(base.string() + ".out");
+  std::filesystem::remove(base.string() + ".err");
+  return result;
+}
+
+std::vector<std::string> nonEmptyLines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace lbmshape::testing

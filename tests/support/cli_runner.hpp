@@ -1,0 +1,21 @@
+// Runs the lbmshape binary as a user would, for end-to-end tests of the
+// command line: exit code, stdout and stderr.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lbmshape::testing {
+
+struct CliResult {
+  int exitCode = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+CliResult runLbmshape(const std::vector<std::string>& arguments);
+
+// Lines of text, without empty ones.
+std::vector<std::string> nonEmptyLines(const std::string& text);
+
+}  // namespace lbmshape::testing

@@ -1,0 +1,21 @@
+// Small meshes built in code, with known topology and geometry.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape::testing {
+
+// Corners (0,0,0), (1,0,0), (0,1,0), (0,0,1); outward triangles.
+TriangleMesh tetrahedron();
+// An icosahedron split `subdivisions` times (20 * 4^n triangles), vertices on the sphere; outward.
+TriangleMesh icosphere(int subdivisions, double radius = 1.0, glm::dvec3 centre = glm::dvec3(0.0));
+// A torus around z: `rings` steps around the axis, `sides` around the tube; outward.
+TriangleMesh torusMesh(double R, double r, int rings, int sides);
+// Both meshes in one, b's indices shifted.
+TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b);
+// Every position p becomes centre + scale * (p - centre).
+TriangleMesh scaled(TriangleMesh mesh, double scale, glm::dvec3 centre = glm::dvec3(0.0));
+
+}  // namespace lbmshape::testing

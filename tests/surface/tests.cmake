@@ -1,0 +1,4 @@
+lbmshape_test(surface_tests
+  ${CMAKE_CURRENT_LIST_DIR}/cube_cases_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/marching_cubes_test.cpp
+)

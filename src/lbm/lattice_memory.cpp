@@ -1,6 +1,5 @@
 #include "lbm/lattice_memory.hpp"
 
-#include <algorithm>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -27,14 +26,11 @@ LatticeLayout latticeLayout(const Extent3& extent)
 {
   checkExtent(extent);
   LatticeLayout layout;
-  const auto [nx, ny, nz] = extent;
   layout.extent = extent;
-  layout.row = (nx + 1 + 3) / 4 * 4;
-  layout.plane = uint64_t(layout.row) * uint64_t(ny + 2);
-  layout.floatsPerDirection = 8 + layout.plane * uint64_t(nz + 2);
-  // 256 bytes satisfies every device's binding offset alignment.
-  layout.directionBytes = (layout.floatsPerDirection * 4 + 255) / 256 * 256;
-  layout.faceBlocks = uint64_t((nx + 3) / 4) * uint64_t(std::max(ny, nz));
+  layout.row = (extent.nx + 3) / 4 * 4;
+  // 64 floats = 256 bytes satisfies every device's binding offset alignment.
+  layout.directionFloats = (uint64_t(layout.row) * uint64_t(extent.ny) * uint64_t(extent.nz) + 63) / 64 * 64;
+  layout.directionBytes = layout.directionFloats * 4;
   // two lattices, plus the field, staging, per-cell omega and source volumes
   layout.totalBytes = (2 * 19 + 4) * layout.directionBytes;
   return layout;
@@ -47,15 +43,20 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
     throw UsageError("a " + e.toString() + " lattice does not fit on " + device.name + ": " + why +
                      "; use a coarser grid (--res) or another --device");
   };
-  if (layout.floatsPerDirection >= (uint64_t(1) << 31)) tooLarge("more than 2^31 cells");
+  const uint64_t pairFloats = 2 * layout.directionFloats;
+  if (pairFloats >= (uint64_t(1) << 31)) tooLarge("more than 2^30 cells");
   if (layout.directionBytes > device.maxStorageBufferRange)
     tooLarge("one direction needs " + mebibytes(layout.directionBytes) + " but a storage buffer may span at most " +
              mebibytes(device.maxStorageBufferRange));
-  if (layout.floatsPerDirection > device.maxTexelBufferElements)
-    tooLarge(std::to_string(layout.floatsPerDirection) + " cells exceed the texel buffer limit of " +
-             std::to_string(device.maxTexelBufferElements) + " elements");
-  if (uint64_t(e.ny) + 2 > device.maxWorkgroupCount[1] || uint64_t(e.nz) + 2 > device.maxWorkgroupCount[2] ||
-      std::max(layout.faceBlocks, 2 * uint64_t(e.ny) * e.nz) / 64 + 1 > device.maxWorkgroupCount[0])
+  if (pairFloats > device.maxTexelBufferElements)
+    tooLarge("two directions need " + std::to_string(pairFloats) + " texels but a texel buffer may hold at most " +
+             std::to_string(device.maxTexelBufferElements));
+  if (device.maxAllocationBytes && 2 * layout.directionBytes > device.maxAllocationBytes)
+    tooLarge("two directions need " + mebibytes(2 * layout.directionBytes) + " in one allocation, more than " +
+             mebibytes(device.maxAllocationBytes));
+  const uint64_t blocksPerPlane = uint64_t(layout.row / 4) * uint64_t(e.ny);
+  if (blocksPerPlane / 128 + 1 > device.maxWorkgroupCount[0] || uint64_t(e.nz) > device.maxWorkgroupCount[2] ||
+      uint64_t(layout.row) / 64 + 1 > device.maxWorkgroupCount[0] || uint64_t(e.ny) > device.maxWorkgroupCount[1])
     tooLarge("more workgroups than the device can dispatch");
   if (device.deviceLocalBytes && layout.totalBytes > device.deviceLocalBytes)
     tooLarge("it needs " + mebibytes(layout.totalBytes) + " but the device has " + mebibytes(device.deviceLocalBytes));

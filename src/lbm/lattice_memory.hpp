@@ -11,21 +11,22 @@
 
 namespace lbmshape {
 
-// Ghost rows and planes surround the grid in y and z; rows are padded to `row`
-// cells (at least nx + 1, a multiple of 4); 4 floats lead and trail.
+// Rows are padded to `row` cells (a multiple of 4); each direction's array
+// takes `directionFloats`; opposite directions share one buffer ("pair").
 struct LatticeLayout {
   Extent3 extent;
   int row = 0;
-  uint64_t plane = 0;               // row * (ny + 2)
-  uint64_t floatsPerDirection = 0;  // 8 + plane * (nz + 2)
-  uint64_t directionBytes = 0;      // aligned for any device's binding offsets
-  uint64_t faceBlocks = 0;          // four-cell blocks on the largest y or z face
-  uint64_t totalBytes = 0;          // everything the Vulkan solver allocates
+  uint64_t directionFloats = 0;  // row * ny * nz, rounded up so offsets stay 256-byte aligned
+  uint64_t directionBytes = 0;
+  uint64_t totalBytes = 0;       // everything the Vulkan solver allocates
 
-  uint64_t linearIndex(int x, int y, int z) const
-  {
-    return uint64_t(4 + x + row * (y + 1)) + plane * uint64_t(z + 1);
-  }
+  static constexpr int pairs = 10;  // the rest direction, then (1,2), (3,4), ... (17,18)
+
+  uint64_t linearIndex(int x, int y, int z) const { return uint64_t(x) + uint64_t(row) * (uint64_t(y) + uint64_t(extent.ny) * uint64_t(z)); }
+  static int pairOf(int direction) { return (direction + 1) / 2; }
+  // Offset of a direction's array in its pair buffer, in floats.
+  uint64_t offsetInPair(int direction) const { return direction > 0 && direction % 2 == 0 ? directionFloats : 0; }
+  uint64_t pairBytes(int pair) const { return pair == 0 ? directionBytes : 2 * directionBytes; }
 
   // Bytes moved per cell update: 19 distributions read and written, fp32.
   static constexpr uint64_t bytesPerUpdate = 19 * 4 * 2;

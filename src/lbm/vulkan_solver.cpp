@@ -1,7 +1,6 @@
 #include "lbm/vulkan_solver.hpp"
 
 #include <array>
-#include <bit>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -20,36 +19,24 @@ using gpu::MemoryUse;
 
 namespace {
 
+constexpr int pairs = LatticeLayout::pairs;
 constexpr int stepsPerSubmit = 256;
-constexpr int flatWorkgroupSize = 64;  // init and halo passes
+constexpr uint32_t initWorkgroupSize = 64;
+// Invocations per workgroup of the lattice passes. They run over the
+// four-cell blocks of a z plane, so workgroups are full whatever the row
+// length; larger workgroups cut lavapipe's per-workgroup cost (measured at
+// 128^3 with one 32-block row per 32 invocations: 32 invocations 67.3 MLUPS,
+// 64: 69.1, 128: 71.0, 256: 71.0).
+constexpr uint32_t latticeWorkgroupSize = 128;
 
 // Binding numbers, as in shaders/lattice.glsl and shaders/lbm_*.comp.
-enum LatticeBinding : uint32_t { InVec4 = 0, InScalar = 1, OmegaPerCell = 2, SourceBase = 3, OutVec4 = 4, FieldOut = 5 };
+enum LatticeBinding : uint32_t { PairVec4 = 0, PairScalar = 1, OmegaPerCell = 2, SourceBase = 3, OutVec4 = 4, FieldOut = 5 };
 enum InitBinding : uint32_t { InitDensity = 0, InitOut = 1 };
-enum HaloBinding : uint32_t { HaloInVec4 = 0, HaloInScalar = 1, HaloOut = 2 };
-
 
 struct PushConstants {
   float omega;
   float decay;
 };
-
-uint32_t blocksPerRow(const Extent3& e) { return uint32_t((e.nx + 3) / 4); }
-
-// Workgroups of the lattice passes: up to 32 invocations (128 cells) along a
-// row, and enough rows to make 128 invocations. Fewer, larger workgroups cut
-// lavapipe's per-workgroup cost (measured at 128^3: 32 invocations 67.3
-// MLUPS, 64: 69.1, 128: 71.0, 256: 71.0); short rows leave no lanes idle.
-struct StepShape {
-  uint32_t x, y;
-};
-StepShape stepShape(const Extent3& e)
-{
-  uint32_t x = std::min(32u, std::bit_ceil(blocksPerRow(e)));
-  uint32_t y = std::min(128u / x, std::bit_ceil(uint32_t(e.ny)));
-  return {x, y};
-}
-constexpr StepShape flatShape{flatWorkgroupSize, 1};
 
 uint32_t groups(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
 
@@ -57,7 +44,7 @@ std::vector<vk::DescriptorSetLayoutBinding> latticeBindings()
 {
   using T = vk::DescriptorType;
   return {
-      {InVec4, T::eUniformTexelBuffer, Q, {}},       {InScalar, T::eUniformTexelBuffer, Q, {}},
+      {PairVec4, T::eUniformTexelBuffer, pairs, {}},  {PairScalar, T::eUniformTexelBuffer, pairs, {}},
       {OmegaPerCell, T::eUniformTexelBuffer, 1, {}}, {SourceBase, T::eUniformTexelBuffer, 1, {}},
       {OutVec4, T::eStorageBuffer, Q, {}},           {FieldOut, T::eStorageBuffer, 1, {}},
   };
@@ -69,20 +56,22 @@ std::vector<vk::DescriptorSetLayoutBinding> initBindings()
   return {{InitDensity, T::eStorageBuffer, 1, {}}, {InitOut, T::eStorageBuffer, Q, {}}};
 }
 
-std::vector<vk::DescriptorSetLayoutBinding> haloBindings()
-{
-  using T = vk::DescriptorType;
-  return {{HaloInVec4, T::eUniformTexelBuffer, Q, {}}, {HaloInScalar, T::eUniformTexelBuffer, Q, {}},
-          {HaloOut, T::eStorageBuffer, Q, {}}};
-}
-
-// Specialization constants 0..8 of shaders/lattice_layout.glsl and lattice.glsl.
-std::vector<uint32_t> gridConstants(const LatticeLayout& layout, StepShape shape)
+// Specialization constants 0..9 of shaders/lattice_layout.glsl and lattice.glsl
+// (constant 1 is unused).
+std::vector<uint32_t> gridConstants(const LatticeLayout& layout, uint32_t workgroupSize)
 {
   using gpu::specFloat, gpu::specInt;
   const Extent3& e = layout.extent;
-  return {shape.x, shape.y, specInt(e.nx), specInt(e.ny), specInt(e.nz), specInt(layout.row),
-          specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)};
+  return {workgroupSize,
+          1,
+          specInt(e.nx),
+          specInt(e.ny),
+          specInt(e.nz),
+          specInt(layout.row),
+          specFloat(d3q19::restWeight),
+          specFloat(d3q19::axialWeight),
+          specFloat(d3q19::diagonalWeight),
+          specInt(int(layout.directionFloats))};
 }
 
 void barrier(vk::CommandBuffer cmd, vk::AccessFlags src, vk::PipelineStageFlags srcStage, vk::AccessFlags dst,
@@ -96,13 +85,6 @@ constexpr auto shaderWrite = vk::AccessFlagBits::eShaderWrite;
 constexpr auto computeStage = vk::PipelineStageFlagBits::eComputeShader;
 constexpr auto transferStage = vk::PipelineStageFlagBits::eTransfer;
 
-// Between two lattice passes: the next reads what this one wrote and may
-// overwrite what it read.
-void computeToCompute(vk::CommandBuffer cmd)
-{
-  barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
-}
-
 }  // namespace
 
 struct VulkanSolver::Resources {
@@ -110,15 +92,14 @@ struct VulkanSolver::Resources {
 
   gpu::GpuContext& context;
   LatticeLayout layout;
-  // lattice[k][i]: distribution i of lattice copy k; a step reads one copy
-  // and writes the other.
+  // lattice[k][p]: pair buffer p of lattice copy k; a step reads one copy and
+  // writes the other.
   std::array<std::vector<GpuBuffer>, 2> lattice;
   std::array<std::vector<vk::raii::BufferView>, 2> vec4Views, scalarViews;
   GpuBuffer field, staging, omega, sourceBuffer;
   vk::raii::BufferView omegaView{nullptr}, sourceView{nullptr};
   vk::raii::DescriptorPool pool{nullptr};
   std::vector<vk::raii::DescriptorSet> latticeSets;  // [k]: reads copy k, writes the other
-  std::vector<vk::raii::DescriptorSet> haloSets;     // [k]: fills the ghost rows of copy k
   vk::raii::DescriptorSet initSet{nullptr};
 
   int current = 0;  // copy holding the latest post-collision distributions
@@ -129,17 +110,19 @@ struct VulkanSolver::Resources {
 
   gpu::ProgramSpec latticeProgram(const char* shader) const
   {
-    auto constants = gridConstants(layout, stepShape(layout.extent));
+    auto constants = gridConstants(layout, latticeWorkgroupSize);
     constants.push_back(gpu::specBool(perCellOmega));
     constants.push_back(gpu::specBool(source.has_value()));
     return {shader, latticeBindings(), constants, sizeof(PushConstants)};
   }
-  gpu::ProgramSpec flatProgram(const char* shader, std::vector<vk::DescriptorSetLayoutBinding> bindings) const
-  {
-    return {shader, std::move(bindings), gridConstants(layout, flatShape), 0};
-  }
+  gpu::ProgramSpec initProgram() const { return {"lbm_init", initBindings(), gridConstants(layout, initWorkgroupSize), 0}; }
+
   // Dispatches a lattice pipeline over every block of the grid.
-  void dispatchLattice(vk::CommandBuffer cmd) const;
+  void dispatchLattice(vk::CommandBuffer cmd) const
+  {
+    const Extent3& e = layout.extent;
+    cmd.dispatch(groups(uint64_t(layout.row / 4) * uint64_t(e.ny), latticeWorkgroupSize), 1, uint32_t(e.nz));
+  }
 
   void upload(const Volume& values, GpuBuffer& target);
   void writeDescriptors();
@@ -174,8 +157,8 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
     return vk::raii::BufferView(device, vk::BufferViewCreateInfo({}, buffer, format, 0, VK_WHOLE_SIZE));
   };
   for (int k = 0; k < 2; ++k) {
-    for (int i = 0; i < Q; ++i) {
-      lattice[k].emplace_back(context, layout.directionBytes, usage, MemoryUse::Device);
+    for (int p = 0; p < pairs; ++p) {
+      lattice[k].emplace_back(context, layout.pairBytes(p), usage, MemoryUse::Device);
       vec4Views[k].push_back(view(lattice[k].back().handle(), vk::Format::eR32G32B32A32Sfloat));
       scalarViews[k].push_back(view(lattice[k].back().handle(), vk::Format::eR32Sfloat));
     }
@@ -184,21 +167,20 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
   sourceView = view(sourceBuffer.handle(), vk::Format::eR32G32B32A32Sfloat);
 
   std::array<vk::DescriptorPoolSize, 2> sizes = {
-      vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * (2 * Q + 2) + 2 * 2 * Q),
-      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (Q + 1) + (Q + 1) + 2 * Q)};
+      vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * (2 * pairs + 2)),
+      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (Q + 1) + (Q + 1))};
   pool = vk::raii::DescriptorPool(
-      device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 5, sizes));
+      device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 3, sizes));
   auto allocate = [&](const vk::raii::DescriptorSetLayout& setLayout, uint32_t count) {
     std::vector<vk::DescriptorSetLayout> layouts(count, *setLayout);
     return vk::raii::DescriptorSets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
   };
   latticeSets = allocate(context.program(latticeProgram("lbm_step")).setLayout, 2);
-  haloSets = allocate(context.program(flatProgram("lbm_halo", haloBindings())).setLayout, 2);
-  initSet = std::move(allocate(context.program(flatProgram("lbm_init", initBindings())).setLayout, 1).front());
+  initSet = std::move(allocate(context.program(initProgram()).setLayout, 1).front());
   writeDescriptors();
 
-  // Padding slots are never read by a real cell, but zeros keep every value
-  // the device ever computes finite and the runs reproducible.
+  // Row padding is never read by a real cell, but zeros keep every value the
+  // device computes finite and the runs reproducible.
   context.runAndWait([&](vk::CommandBuffer cmd) {
     for (auto& copy : lattice)
       for (auto& buffer : copy) cmd.fillBuffer(buffer.handle(), 0, VK_WHOLE_SIZE, 0u);
@@ -208,43 +190,35 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
 void VulkanSolver::Resources::writeDescriptors()
 {
   std::vector<vk::WriteDescriptorSet> writes;
-  std::array<std::array<vk::BufferView, Q>, 2> vec4Handles, scalarHandles;
-  std::array<std::array<vk::DescriptorBufferInfo, Q>, 2> whole;
-  for (int k = 0; k < 2; ++k)
-    for (int i = 0; i < Q; ++i) {
-      vec4Handles[k][i] = *vec4Views[k][i];
-      scalarHandles[k][i] = *scalarViews[k][i];
-      whole[k][i] = vk::DescriptorBufferInfo(lattice[k][i].handle(), 0, VK_WHOLE_SIZE);
+  std::array<std::array<vk::BufferView, pairs>, 2> vec4Handles, scalarHandles;
+  std::array<std::array<vk::DescriptorBufferInfo, Q>, 2> directions;  // each direction's range of its pair
+  for (int k = 0; k < 2; ++k) {
+    for (int p = 0; p < pairs; ++p) {
+      vec4Handles[k][p] = *vec4Views[k][p];
+      scalarHandles[k][p] = *scalarViews[k][p];
     }
+    for (int i = 0; i < Q; ++i)
+      directions[k][i] = vk::DescriptorBufferInfo(lattice[k][LatticeLayout::pairOf(i)].handle(),
+                                                  layout.offsetInPair(i) * 4, layout.directionBytes);
+  }
   vk::BufferView omegaHandle = *omegaView, sourceHandle = *sourceView;
   vk::DescriptorBufferInfo fieldInfo(field.handle(), 0, VK_WHOLE_SIZE);
   using T = vk::DescriptorType;
   for (int k = 0; k < 2; ++k) {
     vk::DescriptorSet set = *latticeSets[k];
-    writes.emplace_back(set, InVec4, 0, Q, T::eUniformTexelBuffer, nullptr, nullptr, vec4Handles[k].data());
-    writes.emplace_back(set, InScalar, 0, Q, T::eUniformTexelBuffer, nullptr, nullptr, scalarHandles[k].data());
+    writes.emplace_back(set, PairVec4, 0, pairs, T::eUniformTexelBuffer, nullptr, nullptr, vec4Handles[k].data());
+    writes.emplace_back(set, PairScalar, 0, pairs, T::eUniformTexelBuffer, nullptr, nullptr, scalarHandles[k].data());
     writes.emplace_back(set, OmegaPerCell, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaHandle);
     writes.emplace_back(set, SourceBase, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceHandle);
-    writes.emplace_back(set, OutVec4, 0, Q, T::eStorageBuffer, nullptr, whole[1 - k].data());
+    writes.emplace_back(set, OutVec4, 0, Q, T::eStorageBuffer, nullptr, directions[1 - k].data());
     writes.emplace_back(set, FieldOut, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
-    writes.emplace_back(*haloSets[k], HaloInVec4, 0, Q, T::eUniformTexelBuffer, nullptr, nullptr, vec4Handles[k].data());
-    writes.emplace_back(*haloSets[k], HaloInScalar, 0, Q, T::eUniformTexelBuffer, nullptr, nullptr,
-                        scalarHandles[k].data());
-    writes.emplace_back(*haloSets[k], HaloOut, 0, Q, T::eStorageBuffer, nullptr, whole[k].data());
   }
   writes.emplace_back(*initSet, InitDensity, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
-  writes.emplace_back(*initSet, InitOut, 0, Q, T::eStorageBuffer, nullptr, whole[0].data());
+  writes.emplace_back(*initSet, InitOut, 0, Q, T::eStorageBuffer, nullptr, directions[0].data());
   context.device().updateDescriptorSets(writes, {});
 }
 
-void VulkanSolver::Resources::dispatchLattice(vk::CommandBuffer cmd) const
-{
-  const Extent3& e = layout.extent;
-  const StepShape shape = stepShape(e);
-  cmd.dispatch(groups(blocksPerRow(e), shape.x), groups(uint64_t(e.ny), shape.y), uint32_t(e.nz));
-}
-
-// Copies a volume into a device buffer in the lattice layout (ghosts zero).
+// Copies a volume into a device buffer in the lattice layout (padding zero).
 void VulkanSolver::Resources::upload(const Volume& values, GpuBuffer& target)
 {
   const Extent3& e = layout.extent;
@@ -298,12 +272,12 @@ void VulkanSolver::initialize(const Volume& fieldValues)
 {
   solver_state::checkSameExtent(extent(), fieldValues.extent(), "field");
   r_->upload(solver_state::initialDensity(fieldValues, r_->source), r_->field);
-  auto& program = r_->context.program(r_->flatProgram("lbm_init", initBindings()));
+  auto& program = r_->context.program(r_->initProgram());
   const LatticeLayout& l = r_->layout;
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->initSet, {});
-    cmd.dispatch(groups(uint64_t(l.row + 1), flatWorkgroupSize), uint32_t(l.extent.ny + 2), uint32_t(l.extent.nz + 2));
+    cmd.dispatch(groups(uint64_t(l.row), initWorkgroupSize), uint32_t(l.extent.ny), uint32_t(l.extent.nz));
   });
   r_->current = 0;
   r_->steps = 0;
@@ -311,25 +285,19 @@ void VulkanSolver::initialize(const Volume& fieldValues)
 
 void VulkanSolver::step(int count)
 {
-  auto& stepProgram = r_->context.program(r_->latticeProgram("lbm_step"));
-  auto& halo = r_->context.program(r_->flatProgram("lbm_halo", haloBindings()));
-  const uint32_t haloGroups = groups(r_->layout.faceBlocks, flatWorkgroupSize);
+  auto& program = r_->context.program(r_->latticeProgram("lbm_step"));
   const PushConstants push{r_->uniformOmega, r_->source ? r_->source->decay : 0.0f};
   const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
     int batch = std::min(count, stepsPerSubmit);
     r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.bindPipeline(bind, *program.pipeline);
+      cmd.pushConstants<PushConstants>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       for (int s = 0; s < batch; ++s) {
-        int reads = (r_->current + s) % 2;
-        cmd.bindPipeline(bind, *stepProgram.pipeline);
-        cmd.pushConstants<PushConstants>(*stepProgram.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-        cmd.bindDescriptorSets(bind, *stepProgram.layout, 0, *r_->latticeSets[reads], {});
+        cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(r_->current + s) % 2], {});
         r_->dispatchLattice(cmd);
-        computeToCompute(cmd);
-        cmd.bindPipeline(bind, *halo.pipeline);
-        cmd.bindDescriptorSets(bind, *halo.layout, 0, *r_->haloSets[1 - reads], {});
-        cmd.dispatch(haloGroups, 1, 4);  // one layer per y and z face
-        computeToCompute(cmd);
+        // The next step reads what this one wrote and overwrites what it read.
+        barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
       }
     });
     r_->current = (r_->current + batch) % 2;

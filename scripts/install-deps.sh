@@ -10,8 +10,11 @@ packages=(
   libglm-dev libtinygltf-dev libstb-dev libopenmesh-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
 )
-if [[ "${1:-}" == "--with-test-tools" ]]; then
-  packages+=(nodejs npm)  # the Khronos glTF-Validator runs on Node
+# The Khronos glTF-Validator runs on Node. A machine may already have Node
+# with its own npm from elsewhere (then Debian's npm package conflicts), so
+# what counts is that both commands exist.
+if [[ "${1:-}" == "--with-test-tools" ]] && ! { command -v node && command -v npm; } >/dev/null; then
+  packages+=(nodejs npm)
 fi
 
 missing=()

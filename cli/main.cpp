@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "info_command.hpp"
+#include "mesh_commands.hpp"
 
 namespace {
 
@@ -45,6 +46,9 @@ int main(int argc, char** argv)
     log::setLevel(common.quiet ? log::Level::Quiet : common.verbose ? log::Level::Verbose : log::Level::Normal);
   });
 
+  cli::addDenoiseCommand(app, common);
+  cli::addCompareCommand(app, common);
+  cli::addNoiseCommand(app, common);
   cli::addInfoCommand(app, common);
   cli::addBenchCommand(app, common);
 

@@ -11,21 +11,35 @@
 
 namespace lbmshape {
 
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path)
+namespace {
+MeshFormat outputFormat(const std::filesystem::path& path)
 {
   const auto format = meshFormatOf(path);
   if (!format)
     throw UsageError("cannot write " + path.string() + ": unknown mesh format '" + path.extension().string() +
                      "' (use one of " + supportedExtensions() + ")");
+  return *format;
+}
+}  // namespace
+
+void checkMeshDestination(const std::filesystem::path& path)
+{
+  outputFormat(path);
+  AtomicFile probe(path);  // created and, uncommitted, removed again
+}
+
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path)
+{
+  const auto format = outputFormat(path);
   requireWritable(mesh, path);
   AtomicFile file(path);
-  switch (*format) {
+  switch (format) {
     case MeshFormat::Obj: writeObj(mesh, file); break;
     case MeshFormat::Ply:
     case MeshFormat::Off:
-    case MeshFormat::Stl: writeWithOpenMesh(mesh, *format, file); break;
+    case MeshFormat::Stl: writeWithOpenMesh(mesh, format, file); break;
     case MeshFormat::Gltf:
-    case MeshFormat::Glb: writeGltf(mesh, *format, file); break;
+    case MeshFormat::Glb: writeGltf(mesh, format, file); break;
   }
   file.commit();
   log::verbose("wrote " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +

@@ -21,4 +21,9 @@ namespace lbmshape {
 // the disk is full, or the mesh cannot be written (no triangles, NaN).
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
 
+// The checks writeMesh makes before writing, for commands to make before
+// their work: UsageError for an unknown extension, OutputError for a missing
+// or unwritable folder (tested by creating and removing a temporary file).
+void checkMeshDestination(const std::filesystem::path& path);
+
 }  // namespace lbmshape

@@ -22,7 +22,7 @@ std::string contents(const std::filesystem::path& path)
 
 TEST(AtomicFile, TemporaryFileIsBesideTheTargetWithItsExtension)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   AtomicFile file(folder / "result.glb");
   EXPECT_EQ(file.temporaryPath().parent_path(), folder.path());
   EXPECT_EQ(file.temporaryPath().extension(), ".glb");
@@ -32,7 +32,7 @@ TEST(AtomicFile, TemporaryFileIsBesideTheTargetWithItsExtension)
 
 TEST(AtomicFile, CommitMovesTheContentIntoPlace)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   {
     AtomicFile file(folder / "out.txt");
     meshio::writeText(file.temporaryPath(), "new");
@@ -44,7 +44,7 @@ TEST(AtomicFile, CommitMovesTheContentIntoPlace)
 
 TEST(AtomicFile, WithoutCommitNothingChanges)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::writeText(folder / "out.txt", "old");
   {
     AtomicFile file(folder / "out.txt");
@@ -57,14 +57,14 @@ TEST(AtomicFile, WithoutCommitNothingChanges)
 
 TEST(AtomicFile, TwoAtOnceDoNotShareATemporaryFile)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   AtomicFile a(folder / "frame.obj"), b(folder / "frame.obj");
   EXPECT_NE(a.temporaryPath(), b.temporaryPath());
 }
 
 TEST(AtomicFile, MissingFolderIsAnOutputErrorNamingThePath)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   const auto target = folder / "no" / "such" / "out.obj";
   try {
     AtomicFile file(target);
@@ -76,7 +76,7 @@ TEST(AtomicFile, MissingFolderIsAnOutputErrorNamingThePath)
 
 TEST(AtomicFile, TargetThatIsAFolderIsAnOutputError)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   std::filesystem::create_directory(folder / "taken.obj");
   EXPECT_THROW(AtomicFile(folder / "taken.obj"), OutputError);
 }

@@ -35,7 +35,7 @@ struct BadCase {
 };
 
 void read(const fs::path& path) { readMesh(path); }
-void write(const fs::path& path) { writeMesh(meshio::box({0, 0, 0}, {1, 1, 1}), path); }
+void write(const fs::path& path) { writeMesh(testing::box({0, 0, 0}, {1, 1, 1}), path); }
 
 fs::path objFile(const fs::path& folder, const std::string& text)
 {
@@ -140,7 +140,7 @@ std::vector<BadCase> badCases()
        [](const fs::path& p) { writeMesh(TriangleMesh{}, p); }},
       {"NaNMeshOutput", ExitCode::Output, [](const fs::path& f) { return f / "nan.glb"; },
        [](const fs::path& p) {
-         TriangleMesh mesh = meshio::box({0, 0, 0}, {1, 1, 1});
+         TriangleMesh mesh = testing::box({0, 0, 0}, {1, 1, 1});
          mesh.positions[3].y = std::nan("");
          writeMesh(mesh, p);
        }},
@@ -161,7 +161,7 @@ class BadInput : public ::testing::TestWithParam<BadCase> {};
 TEST_P(BadInput, FailsWithTheRightErrorNamingTheFileAndLeavesNothing)
 {
   const BadCase& c = GetParam();
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   const fs::path path = c.prepare(folder.path());
   const auto before = folder.entries();
   try {
@@ -185,7 +185,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(badCases()),
 TEST(BadInputMessages, SayWhatIsWrong)
 {
   // The message is for the user: spot-check that it names the problem, not only the file.
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   auto messageOf = [](auto&& action) -> std::string {
     try {
       action();
@@ -208,7 +208,7 @@ TEST(BadInputMessages, SayWhatIsWrong)
 
 TEST(FailedWrite, LeavesThePreviousFileAlone)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   writeMesh(testing::icosphere(0), folder / "kept.obj");
   TriangleMesh broken = testing::icosphere(1);
   broken.positions[0].x = std::numeric_limits<double>::infinity();

@@ -37,7 +37,7 @@ protected:
     return readMesh(path);
   }
 
-  meshio::ScratchFolder folder_;
+  testing::ScratchFolder folder_;
 };
 
 TEST_P(GltfReading, NodeTransformsAreAppliedThroughTheHierarchy)

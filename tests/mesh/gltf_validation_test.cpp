@@ -20,7 +20,7 @@ namespace meshio = testing::meshio;
 class GltfOutput : public ::testing::TestWithParam<std::string> {
 protected:
   std::filesystem::path path(const std::string& stem) const { return folder_ / (stem + GetParam()); }
-  meshio::ScratchFolder folder_;
+  testing::ScratchFolder folder_;
 };
 
 TEST_P(GltfOutput, SingleMeshIsValid)
@@ -32,7 +32,7 @@ TEST_P(GltfOutput, SingleMeshIsValid)
 
 TEST_P(GltfOutput, MeshWithItsOwnNormalsAndAnUnusedVertexIsValid)
 {
-  TriangleMesh mesh = meshio::box({-1, -1, -1}, {2, 3, 4});
+  TriangleMesh mesh = testing::box({-1, -1, -1}, {2, 3, 4});
   for (const auto& p : mesh.positions) mesh.normals.push_back(glm::vec3(p) * 5.0f);  // not unit: normalised on writing
   mesh.normals[2] = glm::vec3(0.0f);                                                 // unusable: replaced
   mesh.positions.push_back({100, 100, 100});                                         // used by no triangle
@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Containers, GltfOutput, ::testing::Values(".gltf", ".gl
 TEST(GltfValidatorHarness, ReportsTheErrorsOfABrokenFile)
 {
   // Without bounds on POSITION a glTF file is invalid: the harness must say so.
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::HandMadeGltf gltf;
   const int positions = gltf.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
   gltf.json["accessors"][size_t(positions)].erase("min");
@@ -81,8 +81,8 @@ TEST(GltfValidatorHarness, ReportsTheErrorsOfABrokenFile)
 
 TEST(GltfOutputContent, SingleMeshHasGeneratorBoundsAndUnitNormals)
 {
-  meshio::ScratchFolder folder;
-  writeMesh(meshio::box({-1, 0, 2}, {3, 5, 7}), folder / "box.glb");
+  testing::ScratchFolder folder;
+  writeMesh(testing::box({-1, 0, 2}, {3, 5, 7}), folder / "box.glb");
   const auto glb = meshio::readGlb(folder / "box.glb");
   EXPECT_EQ(glb.json["asset"]["generator"], std::string("lbmshape ") + LBMSHAPE_VERSION);
   ASSERT_EQ(glb.json["meshes"].size(), 1u);
@@ -125,7 +125,7 @@ TEST(GltfOutputContent, AnimationShowsExactlyOneFrameAtATime)
   const double fps = 10.0;
   std::vector<TriangleMesh> frames;
   for (size_t i = 0; i < frameCount; ++i) frames.push_back(testing::icosphere(1, 1.0 + 0.1 * double(i)));
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   writeGltfAnimation(frames, fps, folder / "morph.glb");
   const auto glb = meshio::readGlb(folder / "morph.glb");
   ASSERT_EQ(glb.json["nodes"].size(), frameCount);

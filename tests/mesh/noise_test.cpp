@@ -18,8 +18,8 @@ namespace meshio = testing::meshio;
 TEST(MeanEdgeLength, OfATriangulatedCube)
 {
   // Every triangle has two unit edges and a diagonal of sqrt(2).
-  EXPECT_NEAR(meanEdgeLength(meshio::box({0, 0, 0}, {1, 1, 1})), (2.0 + std::sqrt(2.0)) / 3.0, 1e-12);
-  EXPECT_NEAR(meanEdgeLength(meshio::box({0, 0, 0}, {3, 3, 3})), (2.0 + std::sqrt(2.0)), 1e-12);
+  EXPECT_NEAR(meanEdgeLength(testing::box({0, 0, 0}, {1, 1, 1})), (2.0 + std::sqrt(2.0)) / 3.0, 1e-12);
+  EXPECT_NEAR(meanEdgeLength(testing::box({0, 0, 0}, {3, 3, 3})), (2.0 + std::sqrt(2.0)), 1e-12);
   EXPECT_EQ(meanEdgeLength(TriangleMesh{}), 0.0);
 }
 

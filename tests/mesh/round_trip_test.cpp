@@ -37,7 +37,7 @@ TEST_P(RoundTripEveryFormat, KeepsCountsAndPositions)
 {
   // Off the origin and not a round size, so that the coordinates use every digit.
   const TriangleMesh sphere = testing::icosphere(2, 1.7, {3.25, -0.5, 12.0});
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   const auto path = folder / ("sphere" + GetParam().extension);
   writeMesh(sphere, path);
   const TriangleMesh read = readMesh(path);
@@ -69,7 +69,7 @@ TEST(RoundTrip, ObjKeepsEveryBitOfADoubleFarFromTheOrigin)
 {
   // 1e6 units away with detail at 1e-7: float would keep none of it.
   const TriangleMesh far = testing::icosphere(1, 3e-7, {1e6 + 0.123456789, -2e6, 7.0});
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   writeMesh(far, folder / "far.obj");
   const TriangleMesh read = readMesh(folder / "far.obj");
   ASSERT_EQ(read.positions.size(), far.positions.size());
@@ -80,10 +80,10 @@ TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
 {
   // A box with a fin: a triangle on one of its edges, so that edge has three
   // faces, which OpenMesh's own mesh types would refuse.
-  TriangleMesh finned = meshio::box({0, 0, 0}, {1, 1, 1});
+  TriangleMesh finned = testing::box({0, 0, 0}, {1, 1, 1});
   finned.positions.push_back({0.5, -1.0, -1.0});
   finned.triangles.push_back({0, 1, 8});
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   for (const char* extension : {".obj", ".ply", ".off", ".stl", ".glb"}) {
     const auto path = folder / (std::string("finned") + extension);
     writeMesh(finned, path);
@@ -93,7 +93,7 @@ TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
 
 TEST(RoundTrip, WritingReplacesAnExistingFile)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   const auto path = folder / "mesh.ply";
   writeMesh(testing::icosphere(0), path);
   writeMesh(testing::icosphere(1), path);

@@ -32,7 +32,7 @@ f -8 -4 -1 -5
 
 TEST(SoupReading, PolygonsAreFanTriangulated)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::writeText(folder / "cube.obj", cubeOfQuads);
   const TriangleMesh cube = readMesh(folder / "cube.obj");
   EXPECT_EQ(cube.vertexCount(), 8u);
@@ -45,7 +45,7 @@ TEST(SoupReading, ThreeFacesOnOneEdgeAreAllKept)
 {
   // Two tetrahedra glued along edge 1-2 and a third triangle on that edge:
   // non-manifold, which OpenMesh's TriMesh would drop with a warning.
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::writeText(folder / "fins.off",
                     "OFF\n6 7 0\n"
                     "0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.3 0.3 -1\n-1 -1 0.5\n"
@@ -55,7 +55,7 @@ TEST(SoupReading, ThreeFacesOnOneEdgeAreAllKept)
 
 TEST(SoupReading, DegenerateTrianglesAreDroppedTheRestKept)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::writeText(folder / "cube.obj", std::string(cubeOfQuads) +
                                              "f 1 1 2\n"  // a repeated corner
                                              "v 2 0 0\n"
@@ -69,7 +69,7 @@ TEST(SoupReading, OpenMeshesAreFine)
 {
   TriangleMesh open = testing::icosphere(1);
   open.triangles.resize(70);  // ten triangles short of closed
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   meshio::writeText(folder / "open.obj", [&] {
     std::string text;
     for (const auto& p : open.positions)
@@ -83,7 +83,7 @@ TEST(SoupReading, OpenMeshesAreFine)
 
 TEST(SoupReading, WindowsLineEndingsAndUpperCaseExtension)
 {
-  meshio::ScratchFolder folder;
+  testing::ScratchFolder folder;
   std::string text;
   for (const char* c = cubeOfQuads; *c; ++c) *c == '\n' ? text += "\r\n" : text += *c;
   meshio::writeText(folder / "CUBE.OBJ", text);

@@ -9,11 +9,10 @@
 #include <glm/glm.hpp>
 
 #include "mesh/triangle_mesh.hpp"
+#include "support/test_meshes.hpp"
 
 namespace lbmshape::testing::sdf {
 
-// Axis-aligned box of 12 outward-oriented triangles.
-TriangleMesh box(const glm::dvec3& lo, const glm::dvec3& hi);
 // The mesh without `count` triangles picked at random (seeded), leaving
 // holes; the removed triangles are spread over the surface.
 TriangleMesh withHoles(const TriangleMesh& mesh, size_t count, uint32_t seed);

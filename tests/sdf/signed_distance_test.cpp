@@ -84,7 +84,7 @@ TEST(SignedDistance, SphereBandIsTheExactDistanceToThePolygon)
 TEST(SignedDistance, BoxMatchesTheAnalyticDistanceEverywhere)
 {
   const glm::dvec3 lo(-0.9, -0.5, -0.7), hi(0.8, 0.6, 0.5);
-  const TriangleMesh mesh = testing::sdf::box(lo, hi);
+  const TriangleMesh mesh = testing::box(lo, hi);
   const GridFrame frame = frameWithResolution(bounds(mesh), 48, 6);
   const Volume sdf = signedDistance(mesh, frame);
   double band = 0.0, far = 0.0;
@@ -108,7 +108,7 @@ TEST(SignedDistance, BandIsExactOnASelfIntersectingSoup)
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(0.9, 1.1);
   for (auto& p : bumpy.positions) p *= u(rng);
-  const TriangleMesh mesh = testing::merged(bumpy, testing::sdf::box({0.2, -0.3, -0.4}, {1.1, 0.5, 0.3}));
+  const TriangleMesh mesh = testing::merged(bumpy, testing::box({0.2, -0.3, -0.4}, {1.1, 0.5, 0.3}));
   const GridFrame frame = frameWithResolution(bounds(mesh), 40, 3);
   expectExactBand(mesh, frame, signedDistance(mesh, frame));
 }
@@ -207,7 +207,7 @@ TEST(SignedDistance, FarFieldIsCloseToExactAndNeverBelowIt)
   // Concave corners where the two spheres meet, and a box beside them.
   const TriangleMesh mesh = testing::merged(
       testing::merged(testing::icosphere(3, 0.6, {-0.3, 0, 0}), testing::icosphere(3, 0.5, {0.4, 0.1, 0})),
-      testing::sdf::box({-0.2, -1.0, -0.3}, {0.3, -0.6, 0.2}));
+      testing::box({-0.2, -1.0, -0.3}, {0.3, -0.6, 0.2}));
   const GridFrame frame = frameWithResolution(bounds(mesh), 48, 8);
   SignedDistanceStats stats;
   const Volume fast = signedDistance(mesh, frame, {}, &stats);
@@ -269,7 +269,7 @@ TEST(SignedDistance, GridCroppingTheMeshMeasuresTheWholeMesh)
   // from it, yet it is the nearest face of the cells along the grid's x = -0.5
   // side: the distances there must still come from it.
   const glm::dvec3 lo(-1.0, -1.0, -1.0), hi(1.0, 1.0, 1.0);
-  const TriangleMesh mesh = testing::sdf::box(lo, hi);
+  const TriangleMesh mesh = testing::box(lo, hi);
   const GridFrame frame = frameWithResolution(Bounds{{-0.5, -1.3, -1.3}, {1.3, 1.3, 1.3}}, 28, 0);
   ASSERT_GT((frame.origin.x - lo.x) / frame.voxel, kBand + 1.0);
   const Volume sdf = signedDistance(mesh, frame);

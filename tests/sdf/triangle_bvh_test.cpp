@@ -41,7 +41,7 @@ TriangleMesh randomSoup(size_t count, uint32_t seed)
 TEST(TriangleBvh, ClosestMatchesBruteForce)
 {
   const TriangleMesh meshes[] = {randomSoup(3000, 1), testing::icosphere(3, 0.7),
-                                testing::sdf::box({-1, -1, -1}, {1, 1, 1})};
+                                testing::box({-1, -1, -1}, {1, 1, 1})};
   for (const TriangleMesh& mesh : meshes) {
     const TriangleBvh bvh(mesh);
     std::mt19937 rng(2);

@@ -8,6 +8,17 @@
 
 namespace lbmshape::testing {
 
+TriangleMesh box(const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k) mesh.positions.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+  // Two triangles per face, counter-clockwise seen from outside.
+  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6},   // z = lo, z = hi
+                    {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},   // y = lo, y = hi
+                    {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};  // x = lo, x = hi
+  return mesh;
+}
+
 TriangleMesh tetrahedron()
 {
   TriangleMesh m;

@@ -7,6 +7,8 @@
 
 namespace lbmshape::testing {
 
+// An axis-aligned box of 12 triangles, outward.
+TriangleMesh box(const glm::dvec3& lo, const glm::dvec3& hi);
 // Corners (0,0,0), (1,0,0), (0,1,0), (0,0,1); outward triangles.
 TriangleMesh tetrahedron();
 // An icosahedron split `subdivisions` times (20 * 4^n triangles), vertices on the sphere; outward.

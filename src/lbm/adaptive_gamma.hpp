@@ -1,0 +1,35 @@
+// Per-cell diffusion coefficients for the anisotropic smoothing of section 5.1.
+#pragma once
+
+#include "core/volume.hpp"
+
+namespace lbmshape::adaptive_gamma {
+
+// The range every per-cell gamma is clamped to, in voxels^2 per step. Below,
+// tau = 3 gamma + 1/2 would approach the BGK stability limit 1/2 (0.01 keeps
+// omega <= 1.89); above, one step would have to carry the field farther than
+// the lattice's one-cell links can (a diffusion length sqrt(2 gamma) of 1.4
+// voxels at 1.0).
+inline constexpr double lowest = 0.01;
+inline constexpr double highest = 1.0;
+
+// The paper's rule, Eqs. 18-20: with |grad X| = 1 the step's change of X is
+// gamma times the mean curvature, so kappa = (X(n+1) - X(n)) / gamma(n), and
+// the next step uses gamma(n+1) = gamma0 + kappa, clamped to [lowest, highest].
+// kappa is negative where the surface is convex (X is positive inside), so
+// convex ridges diffuse less and concave creases more.
+Volume paperRule(const Volume& before, const Volume& after, const Volume& gammaUsed, double gamma0);
+
+// lbmshape's feature-preserving rule, in the spirit of Perona-Malik: gamma
+// falls where the surface bends sharply at the scale of the smoothing,
+//     gamma = gamma0 / (1 + (kappa_s / kappaEdge)^2),
+// with kappa_s the mean curvature (the Laplacian, |grad X| = 1) of a copy of
+// the field already smoothed isotropically, where the noise is gone but the
+// sharp edges are still sharp bends. Clamped to [lowest, gamma0].
+Volume featurePreservingRule(const Volume& smoothed, double gamma0, double kappaEdge);
+
+// The mean curvature of a distance field by the 7-point Laplacian (zero-flux
+// at the grid's faces, like the lattice's walls).
+Volume laplacian(const Volume& field);
+
+}  // namespace lbmshape::adaptive_gamma

@@ -1,0 +1,55 @@
+// lbmshape denoise: mesh in, signed distance field, lattice Boltzmann
+// smoothing (section 5.1 of the paper), marching cubes, mesh out.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "mesh/triangle_mesh.hpp"
+#include "pipeline/compute_device.hpp"
+#include "pipeline/field_noise.hpp"
+#include "sdf/grid_frame.hpp"
+
+namespace lbmshape {
+
+// How the grid is placed around the mesh.
+struct GridOptions {
+  int resolution = 128;          // cells along the longest side, margins included
+  std::optional<double> voxel;   // or: the voxel size, in the mesh's units
+  double marginVoxels = 4.0;     // empty cells around the mesh's bounding box
+};
+
+enum class Smoothing {
+  Isotropic,         // one gamma everywhere
+  Anisotropic,       // the paper's gamma = gamma0 + kappa (Eq. 20)
+  PreserveFeatures,  // gamma falling at sharp edges (adaptive_gamma.hpp)
+};
+
+struct DenoiseOptions {
+  GridOptions grid;
+  int steps = 7;        // the paper's Figs. 4-6
+  double gamma = 0.2;   // voxels^2 per step
+  Smoothing smoothing = Smoothing::Isotropic;
+  FieldNoise noise;     // the paper's noise on the distance field, off by default
+};
+
+struct DenoiseResult {
+  TriangleMesh mesh;
+  nlohmann::json report;  // counts, grid, timings, volume change, MLUPS
+};
+
+// Checks the options (UsageError) before any work.
+void checkDenoiseOptions(const DenoiseOptions& options);
+
+// The grid for a mesh.
+GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);
+
+// Reads `input`, smooths it, and writes `output` (format by extension). The
+// output path is checked first, so a bad extension or folder costs nothing.
+DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
+                          const DenoiseOptions& options, const ComputeDevice& device);
+
+}  // namespace lbmshape

@@ -1,0 +1,6 @@
+target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/compute_device.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/denoise.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/field_noise.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/stage_clock.cpp
+)

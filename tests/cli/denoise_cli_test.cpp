@@ -1,0 +1,173 @@
+// lbmshape denoise, compare and noise as a user runs them: every bad input
+// has its exit code, a one-line message and leaves no output file; good runs
+// write meshes that the Khronos glTF-Validator accepts.
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "mesh/mesh_writer.hpp"
+#include "support/cli_runner.hpp"
+#include "support/gltf_validator.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace fs = std::filesystem;
+
+void writeText(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+struct BadInput {
+  const char* name;
+  int exitCode;
+  // Prepares the folder; returns the input and output arguments.
+  std::function<std::pair<std::string, std::string>(const fs::path&)> prepare;
+};
+
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
+
+std::string sphereObj(const fs::path& folder)
+{
+  writeMesh(testing::icosphere(3), folder / "sphere.obj");
+  return (folder / "sphere.obj").string();
+}
+
+class DenoiseBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(DenoiseBadInput, ExitCodeOneLineNoOutput)
+{
+  testing::ScratchFolder folder;
+  auto [input, output] = GetParam().prepare(folder.path());
+  const auto before = folder.entries();
+  testing::CliResult r = testing::runLbmshape({"denoise", input, output, "--res", "24"});
+  EXPECT_EQ(r.exitCode, GetParam().exitCode) << r.err;
+  auto lines = testing::nonEmptyLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_EQ(lines[0].rfind("lbmshape: error: ", 0), 0u) << lines[0];
+  EXPECT_EQ(folder.entries(), before) << "no output, no temporary file left behind";
+  EXPECT_TRUE(r.out.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, DenoiseBadInput,
+    ::testing::Values(
+        BadInput{"missing_file", 3, [](const fs::path& f) { return std::pair{(f / "nothing.obj").string(), (f / "out.glb").string()}; }},
+        BadInput{"empty_file", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "empty.obj", "");
+                   return std::pair{(f / "empty.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"binary_garbage_named_obj", 3,
+                 [](const fs::path& f) {
+                   std::string junk;
+                   for (int i = 0; i < 4096; ++i) junk += char((i * 7919 + 13) % 256);
+                   writeText(f / "junk.obj", junk);
+                   return std::pair{(f / "junk.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"nan_coordinates", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
+                   return std::pair{(f / "nan.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"single_triangle", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+                   return std::pair{(f / "one.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"zero_area_bounding_box", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n");
+                   return std::pair{(f / "line.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"flat_mesh", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "flat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
+                   return std::pair{(f / "flat.obj").string(), (f / "out.glb").string()};
+                 }},
+        BadInput{"missing_output_folder", 4,
+                 [](const fs::path& f) { return std::pair{sphereObj(f), (f / "no" / "such" / "out.glb").string()}; }},
+        BadInput{"output_folder_is_a_file", 4,
+                 [](const fs::path& f) {
+                   writeText(f / "afile", "x");
+                   return std::pair{sphereObj(f), (f / "afile" / "out.glb").string()};
+                 }},
+        BadInput{"unknown_output_extension", 2,
+                 [](const fs::path& f) { return std::pair{sphereObj(f), (f / "out.xyz").string()}; }},
+        BadInput{"unknown_input_extension", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "mesh.xyz", "v 0 0 0\n");
+                   return std::pair{(f / "mesh.xyz").string(), (f / "out.glb").string()};
+                 }}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(DenoiseCli, BadParametersAreUsageErrors)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  for (std::vector<std::string> extra : {std::vector<std::string>{"--gamma", "0"}, {"--gamma", "-1"}, {"--steps", "-2"},
+                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--noise", "-0.5"},
+                                         {"--anisotropic", "--preserve-features"}, {"--res", "64", "--voxel", "0.1"}}) {
+    std::vector<std::string> args = {"denoise", input, output};
+    args.insert(args.end(), extra.begin(), extra.end());
+    testing::CliResult r = testing::runLbmshape(args);
+    EXPECT_EQ(r.exitCode, 2) << extra[0] << " " << r.err;
+    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    EXPECT_FALSE(fs::exists(output));
+  }
+}
+
+TEST(DenoiseCli, WritesValidGltfAndReportsJson)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  for (const char* name : {"out.glb", "out.gltf"}) {
+    const fs::path output = folder / name;
+    testing::CliResult r = testing::runLbmshape({"denoise", input, output.string(), "--res", "32", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    for (const char* key : {"input", "output", "grid", "gamma", "steps", "ms", "mlups", "volume_change", "device"})
+      EXPECT_TRUE(j.contains(key)) << key;
+    for (const char* stage : {"read", "sdf", "lbm", "extract", "write", "total"}) EXPECT_TRUE(j["ms"].contains(stage)) << stage;
+    EXPECT_TRUE(j["output"]["closed_manifold"].get<bool>());
+    EXPECT_LT(std::abs(j["volume_change"].get<double>()), 0.1);
+    const auto validation = testing::validateGltf(output);
+    EXPECT_TRUE(validation.passed()) << validation;
+  }
+}
+
+TEST(CompareCli, IdenticalMeshesAreAtDistanceZero)
+{
+  testing::ScratchFolder folder;
+  const std::string a = sphereObj(folder.path());
+  testing::CliResult r = testing::runLbmshape({"compare", a, a, "--json", "--samples", "2000"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["hausdorff"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(j["mean_normal_angle_deg"].get<double>(), 0.0, 1e-6);
+  EXPECT_EQ(j["a"]["genus"], 0);
+  EXPECT_EQ(j["a"]["boundary_edges"], 0);
+  EXPECT_TRUE(j["b"]["closed_manifold"].get<bool>());
+}
+
+TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  for (const char* name : {"a.obj", "b.obj"})
+    ASSERT_EQ(testing::runLbmshape({"noise", input, (folder / name).string(), "--sigma", "0.3", "--seed", "5"}).exitCode, 0);
+  auto compare = [&](const std::string& x, const std::string& y) {
+    return nlohmann::json::parse(testing::runLbmshape({"compare", x, y, "--json", "--samples", "2000"}).out);
+  };
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(folder / "a.obj"), bytes(folder / "b.obj")) << "the same seed gives the same mesh";
+  EXPECT_GT(compare(input, (folder / "a.obj").string())["mean"].get<double>(), 0.0);
+  EXPECT_EQ(testing::runLbmshape({"noise", input, (folder / "c.obj").string(), "--sigma", "-1"}).exitCode, 2);
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -142,7 +142,7 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
   };
 
   if (!options.paper) {
-    if (common.json) printJson(resultJson(results.front()));
+    if (common.json) common.report(resultJson(results.front()));
     else printSingle(results.front(), device, bandwidth, options.settings);
     return;
   }
@@ -156,7 +156,7 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
       j["paper"] = {{"cpu_ms_per_step", row.cpuMs}, {"gpu_ms_per_step", row.gpuMs}, {"texture_megabytes", row.textureMegabytes}};
       rows.push_back(j);
     }
-    printJson({{"device", device}, {"table1", rows}});
+    common.report({{"device", device}, {"table1", rows}});
   } else {
     printPaper(results, device);
   }

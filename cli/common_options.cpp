@@ -3,8 +3,18 @@
 #include <iostream>
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 
 namespace lbmshape::cli {
+
+ComputeDevice& CommonOptions::computeDevice() const
+{
+  if (!device_) {
+    device_ = std::make_shared<ComputeDevice>(device, validation);
+    log::verbose("device: " + device_->name());
+  }
+  return *device_;
+}
 
 std::unique_ptr<gpu::GpuContext> openDevice(const CommonOptions& options)
 {

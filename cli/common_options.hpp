@@ -1,12 +1,15 @@
-// Options every command shares, and opening the device they ask for.
+// Options every command shares, the device they run on, and where their
+// results go.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "gpu/gpu_context.hpp"
+#include "pipeline/compute_device.hpp"
 
 namespace lbmshape::cli {
 
@@ -16,6 +19,17 @@ struct CommonOptions {
   bool json = false;        // one JSON object on stdout
   std::string device;       // --device: index, part of a name, or "reference"
   bool validation = false;  // --validate: Khronos validation layer, any message fails the run
+
+  // Where a command's JSON report goes: printed with --json; a jobs file
+  // collects one per job instead.
+  std::function<void(const nlohmann::json&)> report;
+
+  // The compute device, opened on first use and then shared, so the jobs of
+  // one process share the Vulkan device and its compiled pipelines.
+  ComputeDevice& computeDevice() const;
+
+private:
+  mutable std::shared_ptr<ComputeDevice> device_;
 };
 
 inline bool wantsReference(const CommonOptions& o) { return o.device == "reference"; }

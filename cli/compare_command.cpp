@@ -53,17 +53,16 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
   options.minSamples = args.samples;
   options.seed = args.seed;
   const SurfaceComparison c = compareSurfaces(a, b, options);
-  if (common.json) {
-    printJson({{"a", topologyJson(args.a, ta)},
+  common.report({{"command", "compare"},
+                 {"a", topologyJson(args.a, ta)},
                {"b", topologyJson(args.b, tb)},
                {"hausdorff", c.hausdorff},
                {"mean", c.mean},
                {"rms", c.rms},
                {"mean_normal_angle_deg", c.meanNormalAngle},
                {"a_to_b", directedJson(c.aToB)},
-               {"b_to_a", directedJson(c.bToA)}});
-    return;
-  }
+                 {"b_to_a", directedJson(c.bToA)}});
+  if (common.json) return;
   printTopology("A", args.a, ta);
   printTopology("B", args.b, tb);
   std::printf("distance (in the meshes' units): Hausdorff %.6g (A->B %.6g, B->A %.6g), mean %.6g, RMS %.6g\n",

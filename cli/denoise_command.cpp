@@ -20,12 +20,9 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   checkDenoiseOptions(a.options);  // before the device is opened
-  ComputeDevice device(common.device, common.validation);
-  log::verbose("device: " + device.name());
-  DenoiseResult result = denoiseFile(a.input, a.output, a.options, device);
-  if (common.json) {
-    printJson(result.report);
-  } else {
+  DenoiseResult result = denoiseFile(a.input, a.output, a.options, common.computeDevice());
+  common.report(result.report);
+  if (!common.json) {
     const auto& out = result.report["output"];
     log::info("wrote " + a.output + " (" + std::to_string(out["triangles"].get<size_t>()) + " triangles" +
               (out["closed_manifold"].get<bool>() ? ", closed" : ", open") + ") in " +

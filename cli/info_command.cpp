@@ -40,7 +40,7 @@ void runInfo(const CommonOptions& common)
   if (common.json) {
     nlohmann::json list = nlohmann::json::array();
     for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
-    printJson({{"version", LBMSHAPE_VERSION},
+    common.report({{"version", LBMSHAPE_VERSION},
                {"devices", list},
                {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
                {"validation", instance.validationEnabled()}});

@@ -13,6 +13,8 @@
 #include "core/log.hpp"
 #include "info_command.hpp"
 #include "mesh_commands.hpp"
+#include "run_command.hpp"
+#include "core/interrupt.hpp"
 
 namespace {
 
@@ -46,12 +48,18 @@ int main(int argc, char** argv)
     log::setLevel(common.quiet ? log::Level::Quiet : common.verbose ? log::Level::Verbose : log::Level::Normal);
   });
 
+  common.report = [&common](const nlohmann::json& report) {
+    if (common.json) cli::printJson(report);
+  };
   cli::addDenoiseCommand(app, common);
+  cli::addMorphCommand(app, common);
+  cli::addRunCommand(app, common);
   cli::addCompareCommand(app, common);
   cli::addNoiseCommand(app, common);
   cli::addInfoCommand(app, common);
   cli::addBenchCommand(app, common);
 
+  interrupt::installHandler();
   try {
     app.parse(argc, argv);
     return 0;

@@ -22,10 +22,9 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
   const TriangleMesh mesh = readMesh(args.input);
   const double edge = meanEdgeLength(mesh);
   writeMesh(addNormalNoise(mesh, args.sigma, args.seed), args.output);
-  if (common.json)
-    printJson({{"command", "noise"}, {"input", args.input}, {"output", args.output}, {"sigma", args.sigma},
-               {"sigma_absolute", args.sigma * edge}, {"mean_edge_length", edge}, {"seed", args.seed}});
-  else
+  common.report({{"command", "noise"}, {"input", args.input}, {"output", args.output}, {"sigma", args.sigma},
+                 {"sigma_absolute", args.sigma * edge}, {"mean_edge_length", edge}, {"seed", args.seed}});
+  if (!common.json)
     log::info("wrote " + args.output + " (noise sigma " + std::to_string(args.sigma * edge) + " = " +
               std::to_string(args.sigma) + " mean edge lengths)");
 }

@@ -15,3 +15,8 @@ echo "Against the clean bolt:"
 build/lbmshape compare build/demo/bolt_clean.glb build/demo/bolt_denoised.glb | tail -2
 echo
 echo "The denoised bolt is at $(pwd)/build/demo/bolt_denoised.glb (glTF binary: open it in any glTF viewer)."
+echo
+# Then the bolt becomes a nut (genus 0 to 1), over the bolt's head.
+build/lbmshape morph assets/bolt.obj assets/nut.obj build/demo/bolt_to_nut --align none --force
+echo "The morph's frames are in $(pwd)/build/demo/bolt_to_nut/ (frame_0000.glb ... frame_0047.glb);"
+echo "build/demo/bolt_to_nut/morph.glb plays them as one animation."

@@ -14,6 +14,7 @@ enum class ExitCode : int {
   Input = 3,   // unreadable or invalid input file
   Output = 4,  // cannot write the result
   Device = 5,  // Vulkan device failure or numerical blow-up
+  Interrupted = 130,  // Ctrl-C: the shell's convention, 128 + SIGINT
 };
 
 class Error : public std::runtime_error {
@@ -36,6 +37,10 @@ struct OutputError : Error {
 };
 struct DeviceError : Error {
   explicit DeviceError(const std::string& m) : Error(ExitCode::Device, m) {}
+};
+// The user pressed Ctrl-C; what was complete is kept, nothing partial.
+struct Interrupted : Error {
+  explicit Interrupted(const std::string& m) : Error(ExitCode::Interrupted, m) {}
 };
 // A result that is not a number, or a scheme driven outside its stable range.
 struct NumericalError : Error {

@@ -1,5 +1,6 @@
 target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/atomic_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cache_directory.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/interrupt.cpp
   ${CMAKE_CURRENT_LIST_DIR}/log.cpp
 )

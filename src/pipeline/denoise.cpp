@@ -89,15 +89,19 @@ Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& 
 
 }  // namespace
 
+void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
+{
+  if (grid.voxel && !(*grid.voxel > 0.0 && std::isfinite(*grid.voxel))) throw UsageError("--voxel must be a positive size");
+  if (!grid.voxel && grid.resolution < 8) throw UsageError("--res must be at least 8");
+  if (!(grid.marginVoxels >= 1.0)) throw UsageError("--margin must be at least 1 voxel");
+  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude)) throw UsageError("--noise must be zero or positive");
+}
+
 void checkDenoiseOptions(const DenoiseOptions& o)
 {
   relaxation::checkGamma(o.gamma, "--gamma");
   if (o.steps < 0) throw UsageError("--steps must be zero or more");
-  if (o.grid.voxel && !(*o.grid.voxel > 0.0 && std::isfinite(*o.grid.voxel)))
-    throw UsageError("--voxel must be a positive size");
-  if (!o.grid.voxel && o.grid.resolution < 8) throw UsageError("--res must be at least 8");
-  if (!(o.grid.marginVoxels >= 1.0)) throw UsageError("--margin must be at least 1 voxel");
-  if (!(o.noise.amplitude >= 0.0) || !std::isfinite(o.noise.amplitude)) throw UsageError("--noise must be zero or positive");
+  checkGridAndNoise(o.grid, o.noise);
 }
 
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options)

@@ -43,6 +43,8 @@ struct DenoiseResult {
 
 // Checks the options (UsageError) before any work.
 void checkDenoiseOptions(const DenoiseOptions& options);
+// The checks of the grid and noise options, which morph shares.
+void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise);
 
 // The grid for a mesh.
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);

@@ -29,6 +29,8 @@ std::string slurp(const std::filesystem::path& path)
 
 }  // namespace
 
+std::string lbmshapeBinary() { return LBMSHAPE_BINARY; }
+
 CliResult runLbmshape(const std::vector<std::string>& arguments)
 {
   static int counter = 0;

@@ -15,6 +15,9 @@ struct CliResult {
 
 CliResult runLbmshape(const std::vector<std::string>& arguments);
 
+// Path of the lbmshape binary under test.
+std::string lbmshapeBinary();
+
 // Lines of text, without empty ones.
 std::vector<std::string> nonEmptyLines(const std::string& text);
 

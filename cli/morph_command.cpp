@@ -1,0 +1,68 @@
+#include "core/log.hpp"
+#include "mesh_commands.hpp"
+#include "pipeline/morph.hpp"
+
+namespace lbmshape::cli {
+namespace {
+
+struct MorphArguments {
+  std::string source, target, folder;
+  MorphOptions options;
+  double voxel = 0.0;
+  int stepsPerFrame = 0, steps = 0;
+  bool noAnimation = false;
+};
+
+void runMorph(const CommonOptions& common, MorphArguments& a)
+{
+  if (a.voxel != 0.0) a.options.grid.voxel = a.voxel;
+  if (a.stepsPerFrame != 0) a.options.stepsPerFrame = a.stepsPerFrame;
+  if (a.steps != 0) a.options.steps = a.steps;
+  a.options.animation = !a.noAnimation;
+  checkMorphOptions(a.options);  // before the device is opened
+  nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
+  common.report(report);
+  if (!common.json)
+    log::info("wrote " + std::to_string(a.options.frames) + " frames to " + a.folder +
+              (a.options.animation ? " and the animation " + report["animation"].get<std::string>() : "") +
+              "; mean distance of the last frame to the target " +
+              std::to_string(report["final"]["mean_distance_to_target_voxels"].get<double>()) + " voxels");
+}
+
+}  // namespace
+
+void addMorphCommand(CLI::App& app, const CommonOptions& common)
+{
+  auto a = std::make_shared<MorphArguments>();
+  auto* cmd = app.add_subcommand("morph", "Morph one mesh into another; write the frames and an animated morph.glb");
+  cmd->add_option("source", a->source, "Mesh to start from")->required();
+  cmd->add_option("target", a->target, "Mesh to end at")->required();
+  cmd->add_option("output", a->folder, "Folder for frame_0000.glb ... and morph.glb")->required();
+  auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
+  cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
+  cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around both meshes")->capture_default_str();
+  cmd->add_option("--align", a->options.align, "Place the target: none, center (on the source), fit (center and scale)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, Alignment>{{"none", Alignment::None},
+                                                                           {"center", Alignment::Center},
+                                                                           {"fit", Alignment::Fit}},
+                                          CLI::ignore_case))
+      ->default_str("fit");
+  cmd->add_option("--cs", a->options.cs, "Morphing speed Cs of the force Cs (X_target - X)")->capture_default_str();
+  cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
+  cmd->add_option("--frames", a->options.frames, "Frames, the source and the result included")->capture_default_str();
+  auto* perFrame = cmd->add_option("--steps-per-frame", a->stepsPerFrame, "Lattice steps between frames (default 1)");
+  cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames")->excludes(perFrame);
+  cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
+  cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
+  cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
+  cmd->add_option("--tolerance", a->options.tolerance,
+                  "Converged when max |X - X_target| near the target is below this (voxels); later frames repeat it")
+      ->capture_default_str();
+  cmd->add_flag("--force", a->options.force, "Write into a folder that is not empty (replacing earlier frames)");
+  cmd->add_option("--noise", a->options.noise.amplitude, "The paper's noise on the source's distance field (0.05 = 5%)")
+      ->capture_default_str();
+  cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
+  cmd->callback([&common, a] { runMorph(common, *a); });
+}
+
+}  // namespace lbmshape::cli

@@ -1,0 +1,151 @@
+#include "run_command.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include <vulkan/vulkan.hpp>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/log.hpp"
+#include "mesh_commands.hpp"
+
+namespace lbmshape::cli {
+namespace {
+namespace fs = std::filesystem;
+
+struct RunArguments {
+  std::string jobsFile;
+  bool failFast = false;
+};
+
+// The positional arguments of each command, in order; they are paths,
+// relative to the jobs file.
+const std::map<std::string, std::vector<std::string>> positionals = {
+    {"denoise", {"input", "output"}},
+    {"morph", {"source", "target", "output"}},
+};
+
+nlohmann::json readJobs(const fs::path& file)
+{
+  std::ifstream in(file);
+  if (!in) throw InputError("cannot read " + file.string() + ": no such file or not readable");
+  nlohmann::json jobs;
+  try {
+    jobs = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError("cannot read " + file.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!jobs.is_array()) throw InputError("cannot read " + file.string() + ": expected a JSON array of jobs");
+  return jobs;
+}
+
+// The command line a job stands for: the command, its positional paths
+// (relative to the jobs file's folder), then every other key as --key.
+std::vector<std::string> commandLine(const nlohmann::json& job, const fs::path& base)
+{
+  if (!job.is_object()) throw UsageError("a job must be a JSON object");
+  if (!job.contains("command") || !job["command"].is_string()) throw UsageError("a job needs a \"command\"");
+  const std::string command = job["command"];
+  auto known = positionals.find(command);
+  if (known == positionals.end()) throw UsageError("unknown command \"" + command + "\" (use denoise or morph)");
+  std::vector<std::string> args = {command};
+  for (const auto& name : known->second) {
+    if (!job.contains(name) || !job[name].is_string())
+      throw UsageError(command + " job needs \"" + name + "\" (a path)");
+    fs::path p = job[name].get<std::string>();
+    args.push_back((p.is_absolute() ? p : base / p).string());
+  }
+  for (const auto& [key, value] : job.items()) {
+    if (key == "command" || std::find(known->second.begin(), known->second.end(), key) != known->second.end()) continue;
+    if (value.is_boolean()) {
+      if (value.get<bool>()) args.push_back("--" + key);
+    } else if (value.is_number() || value.is_string()) {
+      args.push_back("--" + key);
+      args.push_back(value.is_string() ? value.get<std::string>() : value.dump());
+    } else if (!value.is_null()) {
+      throw UsageError("option \"" + key + "\" must be a number, a string or true/false");
+    }
+  }
+  return args;
+}
+
+std::string describe(const std::vector<std::string>& args)
+{
+  std::string s;
+  for (size_t i = 0; i < args.size() && i < 3; ++i) s += (i ? " " : "") + args[i];
+  return s;
+}
+
+// Runs one job through the same command definitions as the command line.
+nlohmann::json runJob(const std::vector<std::string>& args, const CommonOptions& common)
+{
+  CommonOptions jobOptions = common;  // shares the opened device
+  nlohmann::json report;
+  jobOptions.json = true;  // the job's own output stays quiet; its report is collected
+  jobOptions.report = [&report](const nlohmann::json& r) { report = r; };
+  CLI::App app("job");
+  app.require_subcommand(1);
+  addDenoiseCommand(app, jobOptions);
+  addMorphCommand(app, jobOptions);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  app.parse(reversed);
+  return report;
+}
+
+void runJobs(CommonOptions& common, const RunArguments& a)
+{
+  const fs::path file = a.jobsFile;
+  const nlohmann::json jobs = readJobs(file);
+  const fs::path base = file.parent_path();
+  common.computeDevice();  // opened once, before the jobs copy the options
+  nlohmann::json results = nlohmann::json::array();
+  int failed = 0, firstFailureCode = 0;
+  std::string firstFailure;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    nlohmann::json result = {{"job", i + 1}};
+    std::string what = "job " + std::to_string(i + 1);
+    try {
+      interrupt::check(std::to_string(i) + " of " + std::to_string(jobs.size()) + " jobs done");
+      auto args = commandLine(jobs[i], base);
+      what += " (" + describe(args) + ")";
+      result["command"] = args[0];
+      log::info(what + "...");
+      result["report"] = runJob(args, common);
+      result["ok"] = true;
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      int code = int(ExitCode::Device);
+      if (auto* error = dynamic_cast<const Error*>(&e)) code = int(error->code());
+      else if (dynamic_cast<const CLI::ParseError*>(&e)) code = int(ExitCode::Usage);
+      result["ok"] = false;
+      result["exit_code"] = code;
+      result["error"] = e.what();
+      log::warning(what + " failed: " + e.what());
+      if (failed++ == 0) firstFailureCode = code, firstFailure = what + ": " + e.what();
+    }
+    results.push_back(result);
+    if (failed && a.failFast) break;
+  }
+  common.report({{"command", "run"}, {"jobs", jobs.size()}, {"run", results.size()}, {"failed", failed},
+                 {"results", results}});
+  if (failed)
+    throw Error(ExitCode(firstFailureCode), std::to_string(failed) + " of " + std::to_string(results.size()) +
+                                                " jobs failed" + (a.failFast ? " (stopped at the first, --fail-fast)" : "") +
+                                                "; first: " + firstFailure);
+  log::info("all " + std::to_string(jobs.size()) + " jobs succeeded");
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app, CommonOptions& common)
+{
+  auto a = std::make_shared<RunArguments>();
+  auto* cmd = app.add_subcommand("run", "Run a JSON list of denoise and morph jobs in one process");
+  cmd->add_option("jobs", a->jobsFile, "Jobs file: a JSON array of {\"command\": ..., paths, options}")->required();
+  cmd->add_flag("--fail-fast", a->failFast, "Stop at the first job that fails");
+  cmd->callback([&common, a] { runJobs(common, *a); });
+}
+
+}  // namespace lbmshape::cli

@@ -1,0 +1,121 @@
+#include "pipeline/frame_writer.hpp"
+
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "core/stopwatch.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "surface/marching_cubes.hpp"
+
+namespace lbmshape {
+namespace {
+constexpr size_t queueCapacity = 2;
+}
+
+FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount)
+    : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)),
+      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size())))
+{
+  thread_ = std::thread([this] { run(); });
+}
+
+FrameWriter::~FrameWriter()
+{
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    queue_.clear();
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+std::filesystem::path FrameWriter::framePath(int index) const
+{
+  char name[64];
+  std::snprintf(name, sizeof name, "frame_%0*d", digits_, index);
+  return folder_ / (name + extension_);
+}
+
+double FrameWriter::push(int index, std::shared_ptr<const Volume> field)
+{
+  Stopwatch waited;
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.size() < queueCapacity || error_; });
+  if (error_) std::rethrow_exception(error_);
+  const double ms = waited.ms();
+  queue_.emplace_back(index, std::move(field));
+  changed_.notify_all();
+  return ms;
+}
+
+std::vector<TriangleMesh> FrameWriter::finish()
+{
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return (queue_.empty() && !busy_) || error_; });
+  if (error_) std::rethrow_exception(error_);
+  return std::move(meshes_);
+}
+
+int FrameWriter::framesWritten() const
+{
+  std::lock_guard lock(mutex_);
+  return int(meshes_.size());
+}
+double FrameWriter::extractMs() const
+{
+  std::lock_guard lock(mutex_);
+  return extractMs_;
+}
+double FrameWriter::writeMs() const
+{
+  std::lock_guard lock(mutex_);
+  return writeMs_;
+}
+
+void FrameWriter::run()
+{
+  std::shared_ptr<const Volume> previousField;
+  for (;;) {
+    std::pair<int, std::shared_ptr<const Volume>> job;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      if (stopping_) return;
+      job = queue_.front();
+      queue_.pop_front();
+      busy_ = true;
+    }
+    try {
+      Stopwatch extract;
+      TriangleMesh mesh;
+      if (job.second == previousField) {
+        std::lock_guard lock(mutex_);
+        mesh = meshes_.back();
+      } else {
+        mesh = extractSurface(*job.second, grid_);
+        if (mesh.triangles.empty())
+          throw NumericalError("frame " + std::to_string(job.first) +
+                               " has no surface: the shape vanished (where source and target barely overlap, their "
+                               "blend has no inside); place them to overlap (--align) or use a larger --cs");
+      }
+      const double extractMs = extract.ms();
+      Stopwatch write;
+      writeMesh(mesh, framePath(job.first));
+      const double writeMs = write.ms();
+      previousField = job.second;
+      std::lock_guard lock(mutex_);
+      meshes_.push_back(std::move(mesh));
+      extractMs_ += extractMs;
+      writeMs_ += writeMs;
+      busy_ = false;
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      error_ = std::current_exception();
+      busy_ = false;
+    }
+    changed_.notify_all();
+  }
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,66 @@
+// Turns the fields of a morph into frame files on a thread of its own, so
+// that the lattice computes frame k+1 while frame k is extracted and written.
+// What is written does not depend on this: every frame is a copy of the field
+// taken between steps, and the files are written in order.
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/volume.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "sdf/grid_frame.hpp"
+
+namespace lbmshape {
+
+class FrameWriter {
+public:
+  // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
+  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount);
+  ~FrameWriter();  // stops the thread; frames still queued are dropped
+  FrameWriter(const FrameWriter&) = delete;
+  FrameWriter& operator=(const FrameWriter&) = delete;
+
+  std::filesystem::path framePath(int index) const;
+
+  // Queues frame `index`'s field (pass the same pointer again for a frame
+  // identical to the previous one: it is written without extracting again).
+  // Blocks while two frames are already waiting, and returns the
+  // milliseconds it waited. Rethrows an error of the writer thread.
+  double push(int index, std::shared_ptr<const Volume> field);
+
+  // Waits until every queued frame is written; returns the meshes in frame
+  // order. Rethrows an error of the writer thread.
+  std::vector<TriangleMesh> finish();
+
+  int framesWritten() const;
+  double extractMs() const;
+  double writeMs() const;
+
+private:
+  void run();
+  void rethrowError();
+
+  GridFrame grid_;
+  std::filesystem::path folder_;
+  std::string extension_;
+  int digits_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::pair<int, std::shared_ptr<const Volume>>> queue_;
+  bool stopping_ = false;
+  bool busy_ = false;
+  std::exception_ptr error_;
+  std::vector<TriangleMesh> meshes_;
+  double extractMs_ = 0.0, writeMs_ = 0.0;
+  std::thread thread_;
+};
+
+}  // namespace lbmshape

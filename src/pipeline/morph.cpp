@@ -1,0 +1,236 @@
+#include "pipeline/morph.hpp"
+
+#include <cmath>
+#include <memory>
+#include <system_error>
+
+#include "analysis/mesh_topology.hpp"
+#include "analysis/surface_comparison.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/log.hpp"
+#include "lbm/relaxation.hpp"
+#include "mesh/gltf_animation.hpp"
+#include "mesh/mesh_format.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "pipeline/frame_writer.hpp"
+#include "pipeline/stage_clock.hpp"
+#include "sdf/signed_distance.hpp"
+
+namespace lbmshape {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Cells within this many voxels of the target's surface decide convergence.
+constexpr float convergenceBand = 2.0f;
+
+const char* alignmentName(Alignment a)
+{
+  switch (a) {
+  case Alignment::None: return "none";
+  case Alignment::Center: return "center";
+  case Alignment::Fit: return "fit";
+  }
+  return "?";
+}
+
+// Moves (and for Fit scales) the target into the source's place.
+struct Placement {
+  glm::dvec3 fromCentre{0.0}, toCentre{0.0};
+  double scale = 1.0;
+  glm::dvec3 apply(const glm::dvec3& p) const { return toCentre + scale * (p - fromCentre); }
+};
+
+Placement placeTarget(const Bounds& source, const Bounds& target, Alignment align)
+{
+  Placement p;
+  if (align == Alignment::None) return p;
+  p.fromCentre = target.centre();
+  p.toCentre = source.centre();
+  if (align == Alignment::Fit && target.diagonal() > 0) p.scale = source.diagonal() / target.diagonal();
+  return p;
+}
+
+Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
+
+bool isOurFile(const fs::path& file)
+{
+  const std::string name = file.filename().string();
+  return name == "morph.glb" || (name.rfind("frame_", 0) == 0 && meshFormatOf(file).has_value());
+}
+
+// The output folder may be missing or empty; a non-empty one only with
+// --force. Checked before anything else, changes nothing.
+void checkFolder(const fs::path& folder, bool force)
+{
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    throw OutputError("cannot write frames to " + folder.string() + ": it is a file, not a folder");
+  if (fs::is_directory(folder, ec) && !fs::is_empty(folder, ec) && !force)
+    throw OutputError(folder.string() + " is not empty; use --force to write the frames into it anyway");
+}
+
+// Creates the folder; with --force only the files a morph writes (frame_*,
+// morph.glb) are removed, so that no frame of an earlier, longer run stays
+// behind.
+void prepareFolder(const fs::path& folder)
+{
+  std::error_code ec;
+  if (fs::is_directory(folder, ec) && !fs::is_empty(folder, ec)) {
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+      if (entry.is_regular_file() && isOurFile(entry.path())) fs::remove(entry.path(), ec);
+  }
+  fs::create_directories(folder, ec);
+  if (ec) throw OutputError("cannot create the folder " + folder.string() + ": " + ec.message());
+  AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
+}
+
+// max |X - X_target| over the cells near the target's surface.
+double bandError(const Volume& X, const Volume& target)
+{
+  double worst = 0.0;
+#pragma omp parallel for reduction(max : worst) schedule(static)
+  for (size_t i = 0; i < X.size(); ++i)
+    if (std::abs(target[i]) <= convergenceBand) worst = std::max(worst, double(std::abs(X[i] - target[i])));
+  return worst;
+}
+
+}  // namespace
+
+void checkMorphOptions(const MorphOptions& o)
+{
+  relaxation::checkGamma(o.gamma, "--gamma");
+  if (!(o.cs > 0.0) || !std::isfinite(o.cs)) throw UsageError("--cs must be a positive morphing speed (the paper uses 0.1 to 0.3)");
+  if (o.frames < 2) throw UsageError("--frames must be at least 2 (the source and the result)");
+  if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
+  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1");
+  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1");
+  if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
+  if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
+  if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
+  checkGridAndNoise(o.grid, o.noise);
+}
+
+std::vector<int> frameSchedule(const MorphOptions& o)
+{
+  const int intervals = o.frames - 1;
+  const long total = o.steps ? *o.steps : long(o.stepsPerFrame.value_or(1)) * intervals;
+  std::vector<int> steps(size_t(o.frames));
+  for (int k = 0; k < o.frames; ++k) steps[size_t(k)] = int(std::lround(double(total) * k / intervals));
+  return steps;
+}
+
+nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
+                          const MorphOptions& o, const ComputeDevice& device)
+{
+  checkMorphOptions(o);
+  const std::vector<int> schedule = frameSchedule(o);
+  checkFolder(folder, o.force);
+  StageClock clock;
+
+  TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
+  TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
+  prepareFolder(folder);
+  const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
+  for (auto& p : target.positions) p = placement.apply(p);
+  const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
+  device.checkFits(frame.extent);
+  log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
+
+  Volume field = clock.time("sdf", [&] { return signedDistance(source, frame); });
+  const Volume targetField = clock.time("sdf", [&] { return signedDistance(target, frame); });
+  addFieldNoise(field, o.noise);
+
+  auto solver = clock.time("setup", [&] {
+    auto s = device.makeSolver(frame.extent);
+    Volume base(frame.extent);
+    for (size_t i = 0; i < base.size(); ++i) base[i] = float(o.cs) * targetField[i];
+    s->setUniformGamma(o.gamma);
+    s->setSource(LinearSource{std::move(base), float(o.cs)});
+    s->initialize(field);
+    return s;
+  });
+
+  FrameWriter writer(frame, folder, "." + o.format, o.frames);
+  double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
+  std::optional<int> convergedAt;
+  double lastError = 0.0;
+  Stopwatch sinceProgress, running;
+  std::shared_ptr<const Volume> current;
+  for (int k = 0; k < o.frames; ++k) {
+    interrupt::check(std::to_string(writer.framesWritten()) + " complete frames in " + folder.string());
+    if (!convergedAt) {
+      Stopwatch lbm;
+      solver->step(schedule[size_t(k)] - solver->stepsTaken());
+      lbmMs += lbm.ms();
+      Stopwatch download;
+      current = std::make_shared<const Volume>(solver->field());
+      downloadMs += download.ms();
+      lastError = bandError(*current, targetField);
+      if (k > 0 && lastError < o.tolerance) {
+        convergedAt = solver->stepsTaken();
+        if (k + 1 < o.frames)
+          log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
+                    std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) +
+                    " to " + std::to_string(o.frames - 1) + " repeat it");
+      }
+    }
+    waitedMs += writer.push(k, current);
+    if (sinceProgress.ms() > 1000.0) {
+      log::info("frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " +
+                std::to_string(int(solver->stepsTaken() / (running.ms() * 1e-3))) + " steps/s");
+      sinceProgress.restart();
+    }
+  }
+  std::vector<TriangleMesh> meshes = writer.finish();
+  clock.record("lbm", lbmMs);
+  clock.record("download", downloadMs);
+  clock.record("extract", writer.extractMs());
+  clock.record("write", writer.writeMs());
+  StageClock::report("lbm", lbmMs);
+  StageClock::report("extract", writer.extractMs());
+  StageClock::report("write", writer.writeMs());
+  if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
+
+  interrupt::check(std::to_string(meshes.size()) + " complete frames in " + folder.string());
+  if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb"); });
+  device.requireCleanValidation();
+
+  const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
+  const MeshTopology last = analyzeTopology(meshes.back());
+  const int steps = solver->stepsTaken();
+  const double updates = double(frame.extent.cells()) * steps;
+  return {{"command", "morph"},
+          {"source", sourcePath.string()},
+          {"target", targetPath.string()},
+          {"folder", folder.string()},
+          {"frames", o.frames},
+          {"frame_steps", schedule},
+          {"steps", steps},
+          {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
+          {"max_band_error_voxels", lastError},
+          {"gamma", o.gamma},
+          {"cs", o.cs},
+          {"noise", o.noise.amplitude},
+          {"align", {{"mode", alignmentName(o.align)}, {"scale", placement.scale},
+                     {"translation", {(placement.toCentre - placement.scale * placement.fromCentre).x,
+                                      (placement.toCentre - placement.scale * placement.fromCentre).y,
+                                      (placement.toCentre - placement.scale * placement.fromCentre).z}}}},
+          {"grid", {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}}, {"voxel", frame.voxel},
+                    {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
+          {"device", device.name()},
+          {"ms", clock.toJson()},
+          {"lattice_waited_for_writer_ms", waitedMs},
+          {"mlups", lbmMs > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
+          {"final", {{"mean_distance_to_target", final.mean},
+                     {"mean_distance_to_target_voxels", final.mean / frame.voxel},
+                     {"hausdorff_to_target_voxels", final.hausdorff / frame.voxel},
+                     {"closed_manifold", last.closedManifold},
+                     {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
+                     {"triangles", meshes.back().triangleCount()}}},
+          {"animation", o.animation ? nlohmann::json((folder / "morph.glb").string()) : nlohmann::json(nullptr)}};
+}
+
+}  // namespace lbmshape

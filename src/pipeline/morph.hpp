@@ -1,0 +1,49 @@
+// lbmshape morph: the level set of a source mesh flows into a target mesh
+// (section 5.2 of the paper): the lattice diffuses X (gamma, Eq. 21) while the
+// source term F = Cs (X_target - X) (Eq. 22) pulls it towards the target's
+// distance field. Frames are written while the lattice goes on.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/compute_device.hpp"
+#include "pipeline/denoise.hpp"
+
+namespace lbmshape {
+
+enum class Alignment {
+  None,    // both meshes as they are
+  Center,  // the target's bounding-box centre moved onto the source's
+  Fit,     // and the target scaled to the source's bounding-box diagonal
+};
+
+struct MorphOptions {
+  GridOptions grid;                // around both meshes (after alignment)
+  Alignment align = Alignment::Fit;
+  double cs = 0.1;                 // Cs of Eq. 22 (the paper's Fig. 8)
+  double gamma = 0.05;             // voxels^2 per step (Fig. 8)
+  int frames = 48;
+  std::optional<int> stepsPerFrame;  // default 1
+  std::optional<int> steps;          // or the total, spread over the frames
+  std::string format = "glb";      // of the frame files: glb, gltf, obj, ply, off, stl
+  double fps = 24.0;               // of the animation in morph.glb
+  bool animation = true;           // write morph.glb
+  bool force = false;              // write into a non-empty folder
+  double tolerance = 0.1;          // converged: max |X - X_target| near the target below this (voxels)
+  FieldNoise noise;                // on the source's field (the paper's noisy sphere)
+};
+
+void checkMorphOptions(const MorphOptions& options);
+
+// The frames' step numbers: frame k shows the state after steps[k] steps.
+std::vector<int> frameSchedule(const MorphOptions& options);
+
+// Returns the JSON report. Throws Interrupted (Ctrl-C) after writing only
+// complete frames.
+nlohmann::json morphFiles(const std::filesystem::path& source, const std::filesystem::path& target,
+                          const std::filesystem::path& folder, const MorphOptions& options, const ComputeDevice& device);
+
+}  // namespace lbmshape

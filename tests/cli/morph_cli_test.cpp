@@ -1,0 +1,225 @@
+// lbmshape morph and lbmshape run as a user runs them.
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "support/cli_runner.hpp"
+#include "support/gltf_validator.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+extern char** environ;
+
+namespace lbmshape {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The JSON chunk of a .glb file.
+nlohmann::json glbJson(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return nlohmann::json::parse(bytes.substr(20, length));
+}
+
+class MorphCli : public ::testing::Test {
+protected:
+  testing::ScratchFolder folder;
+  std::string sphere = (folder / "sphere.obj").string(), torus = (folder / "torus.obj").string();
+  void SetUp() override
+  {
+    writeMesh(testing::icosphere(3), sphere);
+    writeMesh(testing::torusMesh(1.0, 0.4, 48, 24), torus);
+  }
+};
+
+TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
+{
+  const fs::path out = folder / "frames";
+  testing::CliResult r =
+      testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "32", "--frames", "5", "--fps", "10", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (int k = 0; k < 5; ++k) {
+    const fs::path frame = out / ("frame_000" + std::to_string(k) + ".glb");
+    const auto v = testing::validateGltf(frame);
+    EXPECT_TRUE(v.passed()) << frame << ": " << v;
+  }
+  const auto v = testing::validateGltf(out / "morph.glb");
+  EXPECT_TRUE(v.passed()) << v;
+  const nlohmann::json gltf = glbJson(out / "morph.glb");
+  EXPECT_EQ(gltf["nodes"].size(), 5u);
+  ASSERT_EQ(gltf["animations"].size(), 1u);
+  double end = 0.0;
+  for (const auto& sampler : gltf["animations"][0]["samplers"]) {
+    const auto& input = gltf["accessors"][sampler["input"].get<size_t>()];
+    end = std::max(end, input["max"][0].get<double>());
+  }
+  EXPECT_NEAR(end, 5 / 10.0, 1e-6) << "the animation spans frames / fps";
+  auto report = nlohmann::json::parse(r.out);
+  for (const char* key : {"steps", "frames", "converged_at_step", "ms", "mlups", "final"}) EXPECT_TRUE(report.contains(key)) << key;
+  for (const char* stage : {"sdf", "lbm", "extract", "write"}) EXPECT_TRUE(report["ms"].contains(stage)) << stage;
+  EXPECT_TRUE(report["final"].contains("mean_distance_to_target"));
+}
+
+TEST_F(MorphCli, OtherFrameFormats)
+{
+  for (const char* format : {"obj", "ply"}) {
+    const fs::path out = folder / format;
+    ASSERT_EQ(testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "24", "--frames", "3", "--format", format,
+                                    "--no-animation"})
+                  .exitCode,
+              0);
+    EXPECT_NO_THROW(readMesh(out / (std::string("frame_0002.") + format)));
+    EXPECT_FALSE(fs::exists(out / "morph.glb"));
+  }
+}
+
+struct BadMorph {
+  const char* name;
+  int exitCode;
+  std::vector<std::string> extra;  // after "morph"; SPHERE, TORUS, OUT, FILE are replaced
+};
+
+void PrintTo(const BadMorph& c, std::ostream* os) { *os << c.name; }
+
+class MorphBadInput : public MorphCli, public ::testing::WithParamInterface<BadMorph> {};
+
+TEST_P(MorphBadInput, ExitCodeAndOneLine)
+{
+  std::ofstream(folder / "afile") << "x";
+  std::vector<std::string> args = {"morph"};
+  for (std::string a : GetParam().extra) {
+    if (a == "SPHERE") a = sphere;
+    if (a == "TORUS") a = torus;
+    if (a == "OUT") a = (folder / "out").string();
+    if (a == "FILE") a = (folder / "afile" / "out").string();
+    if (a == "MISSING") a = (folder / "missing.obj").string();
+    args.push_back(a);
+  }
+  testing::CliResult r = testing::runLbmshape(args);
+  EXPECT_EQ(r.exitCode, GetParam().exitCode) << r.err;
+  if (GetParam().exitCode != 0) {
+    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    EXPECT_FALSE(fs::exists(folder / "out")) << "nothing written, not even the folder";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, MorphBadInput,
+    ::testing::Values(BadMorph{"missing_target", 3, {"SPHERE", "MISSING", "OUT", "--res", "16"}},
+                      BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
+                      BadMorph{"same_file_twice_is_fine", 0, {"SPHERE", "SPHERE", "OUT", "--res", "16", "--frames", "2", "-q"}},
+                      BadMorph{"unwritable_folder", 4, {"SPHERE", "TORUS", "FILE", "--res", "16"}},
+                      BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},
+                      BadMorph{"zero_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "0"}},
+                      BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
+                      BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
+                      BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
+                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
+{
+  const fs::path out = folder / "frames";
+  std::vector<std::string> args = {testing::lbmshapeBinary(), "-q", "morph", sphere, torus, out.string(), "--res", "64",
+                                   "--frames", "400", "--format", "obj", "--no-animation"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+  // Wait for a few frames, then press Ctrl-C.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "frame_0003.obj") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.rfind("frame_", 0), 0u) << "only frame files, no temporary ones: " << name;
+    EXPECT_NO_THROW(readMesh(entry.path())) << name;
+    ++frames;
+  }
+  EXPECT_GE(frames, 4);
+  EXPECT_LT(frames, 400) << "it stopped";
+}
+
+class JobsFile : public MorphCli {
+protected:
+  fs::path write(const nlohmann::json& jobs)
+  {
+    const fs::path file = folder / "jobs.json";
+    std::ofstream(file) << jobs.dump(2);
+    return file;
+  }
+  nlohmann::json threeJobs()
+  {
+    return nlohmann::json::array({
+        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "sphere_smooth.glb"}, {"res", 24}, {"preserve-features", true}},
+        {{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 24}},
+        {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "frames"}, {"res", 24},
+         {"frames", 3}, {"gamma", 0.1}},
+    });
+  }
+};
+
+TEST_F(JobsFile, OneMissingFileFailsOnlyItsJob)
+{
+  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  ASSERT_EQ(report["results"].size(), 3u);
+  EXPECT_TRUE(report["results"][0]["ok"].get<bool>());
+  EXPECT_FALSE(report["results"][1]["ok"].get<bool>());
+  EXPECT_EQ(report["results"][1]["exit_code"], 3);
+  EXPECT_NE(report["results"][1]["error"].get<std::string>().find("no_such_mesh.obj"), std::string::npos);
+  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
+  EXPECT_TRUE(fs::exists(folder / "sphere_smooth.glb")) << "relative to the jobs file";
+  EXPECT_TRUE(fs::exists(folder / "frames" / "frame_0002.glb"));
+  EXPECT_EQ(report["results"][0]["report"]["smoothing"], "preserve-features");
+  EXPECT_EQ(report["results"][2]["report"]["gamma"], 0.1);
+  EXPECT_NE(r.err.find("no_such_mesh.obj"), std::string::npos) << "the failure is reported";
+}
+
+TEST_F(JobsFile, FailFastStopsAtTheFailure)
+{
+  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--fail-fast", "--json"});
+  EXPECT_EQ(r.exitCode, 3);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["results"].size(), 2u);
+  EXPECT_FALSE(fs::exists(folder / "frames"));
+}
+
+TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
+{
+  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"frobnicate", 1}},
+                                     {{"command", "explode"}},
+                                     {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"res", 20}}});
+  testing::CliResult r = testing::runLbmshape({"run", write(jobs).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 2);
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["failed"], 2);
+  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
+  testing::CliResult notJson = testing::runLbmshape({"run", sphere});
+  EXPECT_EQ(notJson.exitCode, 3);
+  EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,0 +1,125 @@
+// lbmshape morph on shapes made in code: a sphere becomes a torus (genus 0 to
+// 1), frame by frame closer to it; frame 0 is the source; the frame files and
+// the animation are what the options say.
+#include <gtest/gtest.h>
+
+#include "analysis/mesh_topology.hpp"
+#include "analysis/surface_comparison.hpp"
+#include "core/error.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/morph.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+class Morph : public ::testing::Test {
+protected:
+  ComputeDevice device{"", true};  // Vulkan, with the validation layer
+  testing::ScratchFolder folder;
+  TriangleMesh sphere = testing::icosphere(4, 1.0);
+  TriangleMesh torus = testing::torusMesh(1.0, 0.4, 96, 48);
+
+  void SetUp() override
+  {
+    writeMesh(sphere, folder / "sphere.obj");
+    writeMesh(torus, folder / "torus.obj");
+  }
+  nlohmann::json morph(const MorphOptions& options)
+  {
+    return morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "frames", options, device);
+  }
+  static MorphOptions sphereToTorus()
+  {
+    MorphOptions o;
+    o.grid.resolution = 64;
+    o.align = Alignment::None;
+    o.format = "obj";
+    return o;
+  }
+  TriangleMesh frame(int k)
+  {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.obj", k);
+    return readMesh(folder / "frames" / name);
+  }
+};
+
+TEST_F(Morph, SphereBecomesTorusFrameByFrame)
+{
+  const MorphOptions options = sphereToTorus();
+  const nlohmann::json report = morph(options);
+  const double voxel = report["grid"]["voxel"];
+  ASSERT_EQ(report["frames"], 48);
+
+  const TriangleMesh last = frame(47);
+  const MeshTopology t = analyzeTopology(last);
+  EXPECT_TRUE(t.closedManifold);
+  EXPECT_EQ(t.genus, 1);
+  const SurfaceComparison final = compareSurfaces(last, torus);
+  EXPECT_LT(final.hausdorff, 1.0 * voxel);
+
+  // The mean distance to the torus falls at every frame (until it has
+  // settled to within the samples' precision, a hundredth of a voxel).
+  double previous = 1e30;
+  for (int k = 0; k < 48; ++k) {
+    const double mean = compareSurfaces(frame(k), torus, ComparisonOptions{20000, 0.0, false}).mean / voxel;
+    EXPECT_LT(mean, previous + 0.01) << "frame " << k;
+    if (previous > 0.05) EXPECT_LT(mean, previous) << "frame " << k;
+    previous = mean;
+  }
+}
+
+TEST_F(Morph, FrameZeroIsTheSource)
+{
+  morph(sphereToTorus());
+  const nlohmann::json report = morph([] {
+    MorphOptions o = sphereToTorus();
+    o.force = true;
+    return o;
+  }());
+  const double voxel = report["grid"]["voxel"];
+  EXPECT_LT(compareSurfaces(frame(0), sphere).mean, 0.5 * voxel);
+}
+
+TEST_F(Morph, ScheduleSpreadsTheSteps)
+{
+  MorphOptions o;
+  o.frames = 5;
+  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 1, 2, 3, 4}));
+  o.stepsPerFrame = 3;
+  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 3, 6, 9, 12}));
+  o.stepsPerFrame.reset();
+  o.steps = 10;
+  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 3, 5, 8, 10}));
+}
+
+TEST_F(Morph, ConvergedMorphRepeatsItsLastShape)
+{
+  // Morphing the torus into itself converges at once.
+  MorphOptions o = sphereToTorus();
+  o.frames = 6;
+  const nlohmann::json report =
+      morphFiles(folder / "torus.obj", folder / "torus.obj", folder / "frames", o, device);
+  ASSERT_FALSE(report["converged_at_step"].is_null());
+  EXPECT_EQ(report["converged_at_step"], 1);
+  EXPECT_EQ(report["steps"], 1);
+  EXPECT_EQ(frame(5).positions, frame(1).positions);
+}
+
+TEST_F(Morph, RefusesANonEmptyFolderUnlessForced)
+{
+  MorphOptions o = sphereToTorus();
+  o.frames = 3;
+  std::filesystem::create_directories(folder / "frames");
+  writeMesh(sphere, folder / "frames" / "mine.obj");
+  EXPECT_THROW(morph(o), OutputError);
+  o.force = true;
+  EXPECT_NO_THROW(morph(o));
+  EXPECT_TRUE(std::filesystem::exists(folder / "frames" / "mine.obj")) << "--force only replaces frames";
+}
+
+}  // namespace
+}  // namespace lbmshape

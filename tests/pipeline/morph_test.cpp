@@ -67,7 +67,9 @@ TEST_F(Morph, SphereBecomesTorusFrameByFrame)
   for (int k = 0; k < 48; ++k) {
     const double mean = compareSurfaces(frame(k), torus, ComparisonOptions{20000, 0.0, false}).mean / voxel;
     EXPECT_LT(mean, previous + 0.01) << "frame " << k;
-    if (previous > 0.05) EXPECT_LT(mean, previous) << "frame " << k;
+    if (previous > 0.05) {
+      EXPECT_LT(mean, previous) << "frame " << k;
+    }
     previous = mean;
   }
 }

@@ -37,7 +37,7 @@ CliResult runLbmshape(const std::vector<std::string>& arguments)
   const auto base = std::filesystem::temp_directory_path() /
                     ("lbmshape-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::string command = shellQuote(LBMSHAPE_BINARY);
-  for (const auto& a : arguments) command += " " + shellQuote(a);
+  for (const auto& a : arguments) command.append(" ").append(shellQuote(a));
   command += " >" + shellQuote(base.string() + ".out") + " 2>" + shellQuote(base.string() + ".err") + " </dev/null";
   const int status = std::system(command.c_str());
   CliResult result;

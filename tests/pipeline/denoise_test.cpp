@@ -75,6 +75,25 @@ TEST_F(Denoise, PreserveFeaturesRoundsABoxLessThanIsotropic)
   EXPECT_LT(preserving, 0.9 * isotropic) << "isotropic " << isotropic << " deg, preserving " << preserving << " deg";
 }
 
+// The CPU reference back end (--device reference) runs the same pipeline:
+// the same mesh within rounding, in every smoothing mode.
+TEST_F(Denoise, ReferenceDeviceGivesTheSameMesh)
+{
+  const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 48, 24);
+  ComputeDevice reference("reference", false);
+  for (Smoothing mode : {Smoothing::Isotropic, Smoothing::Anisotropic, Smoothing::PreserveFeatures}) {
+    DenoiseOptions options;
+    options.grid.resolution = 40;
+    options.smoothing = mode;
+    const DenoiseResult onVulkan = run(torus, options);
+    writeMesh(torus, folder / "in.obj");
+    const DenoiseResult onReference = denoiseFile(folder / "in.obj", folder / "ref.obj", options, reference);
+    EXPECT_EQ(onReference.report["device"], "reference (CPU)");
+    EXPECT_LT(compareSurfaces(onVulkan.mesh, onReference.mesh, ComparisonOptions{5000}).hausdorff, 1e-3 * voxel(onVulkan))
+        << onVulkan.report["smoothing"];
+  }
+}
+
 TEST_F(Denoise, FieldNoiseIsRepeatableAndSmoothedAway)
 {
   const TriangleMesh sphere = testing::icosphere(4);

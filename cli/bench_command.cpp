@@ -9,6 +9,7 @@
 #include "bench/paper_table.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "gpu/gpu_context.hpp"
 #include "lbm/lattice_memory.hpp"
 #include "lbm/reference_solver.hpp"
 #include "lbm/relaxation.hpp"
@@ -109,19 +110,15 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
   }
   for (const auto& e : sizes) checkExtent(e);
 
-  std::unique_ptr<gpu::GpuContext> context;
-  std::string device = "reference (CPU)";
-  if (!wantsReference(common)) {
-    context = openDevice(common);
-    device = context->description().name;
-    for (const auto& e : sizes) checkFitsDevice(latticeLayout(e), context->description());
-  }
-  log::verbose("device: " + device);
+  const ComputeDevice& compute = common.computeDevice();
+  gpu::GpuContext* context = compute.gpu();  // none with --device reference
+  const std::string device = compute.name();
+  for (const auto& e : sizes) compute.checkFits(e);
   log::info("measuring memory bandwidth...");
-  const BandwidthMeasurement bandwidth = measureMemoryBandwidth(context.get());
+  const BandwidthMeasurement bandwidth = measureMemoryBandwidth(context);
   std::vector<SizeResult> results;
-  for (const auto& e : sizes) results.push_back(benchSize(e, context.get(), options.settings));
-  if (context) requireCleanValidation(*context);
+  for (const auto& e : sizes) results.push_back(benchSize(e, context, options.settings));
+  compute.requireCleanValidation();
 
   const double rooflineMlups = bandwidth.gbps * 1e9 / double(LatticeLayout::bytesPerUpdate) / 1e6;
   auto resultJson = [&](const SizeResult& r) {

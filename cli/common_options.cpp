@@ -2,7 +2,6 @@
 
 #include <iostream>
 
-#include "core/error.hpp"
 #include "core/log.hpp"
 
 namespace lbmshape::cli {
@@ -11,21 +10,9 @@ ComputeDevice& CommonOptions::computeDevice() const
 {
   if (!device_) {
     device_ = std::make_shared<ComputeDevice>(device, validation);
-    log::verbose("device: " + device_->name());
+    if (device_->isReference()) log::verbose("device: " + device_->name());  // a Vulkan device logs itself
   }
   return *device_;
-}
-
-std::unique_ptr<gpu::GpuContext> openDevice(const CommonOptions& options)
-{
-  return std::make_unique<gpu::GpuContext>(gpu::GpuOptions{options.device, options.validation});
-}
-
-void requireCleanValidation(const gpu::GpuContext& context)
-{
-  if (context.validationMessages() > 0)
-    throw DeviceError("the Vulkan validation layer reported " + std::to_string(context.validationMessages()) +
-                      " problem(s), printed above");
 }
 
 void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }

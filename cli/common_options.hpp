@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gpu/gpu_context.hpp"
 #include "pipeline/compute_device.hpp"
 
 namespace lbmshape::cli {
@@ -33,12 +32,6 @@ private:
 };
 
 inline bool wantsReference(const CommonOptions& o) { return o.device == "reference"; }
-
-// The Vulkan device for a command (never for --device reference).
-std::unique_ptr<gpu::GpuContext> openDevice(const CommonOptions& options);
-
-// With validation on, a run that drew any validation message fails (exit 5).
-void requireCleanValidation(const gpu::GpuContext& context);
 
 // Writes one JSON document on stdout.
 void printJson(const nlohmann::json& document);

@@ -74,6 +74,28 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
   EXPECT_TRUE(report["final"].contains("mean_distance_to_target"));
 }
 
+// Frames are extracted and written on a thread of their own while the
+// lattice goes on; two runs interleave differently, and must still write the
+// same bytes.
+TEST_F(MorphCli, FramesDoNotDependOnTheWritersTiming)
+{
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* run : {"a", "b"})
+    ASSERT_EQ(testing::runLbmshape({"morph", sphere, torus, (folder / run).string(), "--res", "40", "--frames", "12",
+                                    "--format", "obj", "--no-animation"})
+                  .exitCode,
+              0);
+  for (int k = 0; k < 12; ++k) {
+    const std::string name = k < 10 ? "frame_000" + std::to_string(k) + ".obj" : "frame_00" + std::to_string(k) + ".obj";
+    const std::string a = bytes(folder / "a" / name);
+    EXPECT_FALSE(a.empty()) << name;
+    EXPECT_EQ(a, bytes(folder / "b" / name)) << name;
+  }
+}
+
 TEST_F(MorphCli, OtherFrameFormats)
 {
   for (const char* format : {"obj", "ply"}) {

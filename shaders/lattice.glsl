@@ -17,15 +17,13 @@ layout(push_constant) uniform StepParameters {
   float decay;  // c in the source S = A - c X
 } params;
 
-// Post-collision distributions of the previous step, one view per pair of
-// opposite directions, read as vec4 (four cells) and as float (for the one
-// neighbour outside the vec4 that the x-moving directions need).
-layout(set = 0, binding = 0) uniform samplerBuffer pairVec4[10];
-layout(set = 0, binding = 1) uniform samplerBuffer pairScalar[10];
-layout(set = 0, binding = 2) uniform samplerBuffer omegaPerCell;  // 1/tau per cell
-layout(set = 0, binding = 3) uniform samplerBuffer sourceBase;    // A per cell
+// Post-collision distributions of the previous step: the whole lattice copy,
+// read as vec4 (four cells of one direction).
+layout(set = 0, binding = 0) uniform samplerBuffer lattice;
+layout(set = 0, binding = 1) uniform samplerBuffer omegaPerCell;  // 1/tau per cell
+layout(set = 0, binding = 2) uniform samplerBuffer sourceBase;    // A per cell
 
-int ownBlock, cellY, cellZ;  // this invocation's block (vec4 index) and row
+int ownBlock, cellY, cellZ;  // this invocation's block and row
 bool firstInRow;             // cell x0 is at the x = 0 wall
 bvec4 pastRowEnd;            // per lane: the upstream neighbour along -x is beyond x = NX - 1
 int lastLane;                // the lane of cell NX - 1 if it is in this block, else 3
@@ -33,26 +31,27 @@ vec4 f[19];                  // the four cells' distributions after streaming
 
 // f[I] = f*_I(r - e_I), or f*_O(r) where r - e_I is outside (bounce-back),
 // for direction I with velocity (EX, EY, EZ) and opposite O. One vec4 fetch,
-// plus one float for the cell that the x shift brings in; at a wall both
-// indices simply point at the cell's own f*_O, in the same pair buffer.
+// plus, for the x-moving directions, the neighbouring block's vec4 for the one
+// cell the x shift brings in (a vec4 fetch is plain loads on lavapipe; a
+// float fetch is a gather, slower on AMD). At a wall the index simply points
+// at the cell's own f*_O.
 #define PULL(I, EX, EY, EZ, O)                                                                    \
   {                                                                                               \
-    const int pair = ((I) + 1) / 2;                                                               \
-    const int ownOffset = ((I) % 2 == 0 && (I) > 0) ? DIRECTION_FLOATS : 0;                       \
-    const int oppositeOffset = DIRECTION_FLOATS - ownOffset;                                      \
     bool rowOutside = cellY - (EY) < 0 || cellY - (EY) >= NY || cellZ - (EZ) < 0 || cellZ - (EZ) >= NZ; \
-    int from = ownBlock - ((EY) * ROW + (EZ) * PLANE) / 4;                                        \
-    int bounced = oppositeOffset / 4 + ownBlock;                                                  \
-    vec4 c = texelFetch(pairVec4[pair], rowOutside ? bounced : ownOffset / 4 + from);            \
+    int from = latticeIndex(ownBlock - ((EY) * ROW + (EZ) * PLANE) / 4, I);                       \
+    int bounced = latticeIndex(ownBlock, O);                                                      \
+    const int nextBlock = groupSize[groupOf[I]];                                                  \
+    vec4 c = texelFetch(lattice, rowOutside ? bounced : from);                                    \
     if ((EX) == 0) {                                                                              \
       f[I] = c;                                                                                   \
     } else if ((EX) == 1) {                                                                       \
       bool wall = rowOutside || firstInRow;                                                       \
-      float left = texelFetch(pairScalar[pair], wall ? 4 * bounced : 4 * (ownOffset / 4 + from) - 1).x; \
-      f[I] = rowOutside ? c : vec4(left, c.xyz);                                                  \
+      vec4 n = texelFetch(lattice, wall ? bounced : from - nextBlock);                            \
+      f[I] = rowOutside ? c : vec4(wall ? n.x : n.w, c.xyz);                                      \
     } else {                                                                                      \
       bool wall = rowOutside || pastRowEnd.w;                                                     \
-      float right = texelFetch(pairScalar[pair], wall ? 4 * bounced + lastLane : 4 * (ownOffset / 4 + from) + 4).x; \
+      vec4 n = texelFetch(lattice, wall ? bounced : from + nextBlock);                            \
+      float right = wall ? n[lastLane] : n.x;                                                     \
       f[I] = rowOutside ? c : mix(vec4(c.yzw, right), vec4(right), pastRowEnd);                   \
     }                                                                                             \
   }

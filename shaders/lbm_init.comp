@@ -8,12 +8,13 @@
 
 layout(local_size_x_id = 0) in;
 layout(set = 0, binding = 0, std430) readonly buffer Density { float cells[]; } density;  // same layout
-layout(set = 0, binding = 1, std430) writeonly buffer Distribution { float cells[]; } lattice[19];
+layout(set = 0, binding = 1, std430) writeonly buffer Distribution { float cells[]; } group[GROUPS];
 
-#define INIT(J)                                                                           \
-  {                                                                                       \
-    ivec3 target = q + velocity[J];                                                       \
-    lattice[J].cells[own] = weight(J) * density.cells[isRealCell(target) ? linearIndex(target) : own]; \
+#define INIT(J)                                                                                   \
+  {                                                                                               \
+    ivec3 target = q + velocity[J];                                                               \
+    group[groupOf[J]].cells[4 * indexInGroup(own / 4, J) + own % 4] =                             \
+        weight(J) * density.cells[isRealCell(target) ? linearIndex(target) : own];                \
   }
 
 void main()

@@ -5,9 +5,11 @@
 // post-collision distributions for the next step.
 #include "lattice.glsl"
 
-layout(set = 0, binding = 4, std430) writeonly buffer Distribution { vec4 cells[]; } outVec4[19];
+// The next lattice copy, one binding per row group.
+layout(set = 0, binding = 3, std430) writeonly buffer Distribution { vec4 cells[]; } nextGroup[GROUPS];
 
-#define COLLIDE(I, W) outVec4[I].cells[ownBlock] = f[I] + omega * ((W) * X - f[I]) + sourceShare * (W) * S;
+#define COLLIDE(I, W) \
+  nextGroup[groupOf[I]].cells[indexInGroup(ownBlock, I)] = f[I] + omega * ((W) * X - f[I]) + sourceShare * (W) * S;
 
 void main()
 {

@@ -1,6 +1,7 @@
 // The D3Q19 lattice: 19 discrete velocities (rest, 6 axial, 12 planar
-// diagonals) and their weights. shaders/d3q19.glsl lists the same velocities in
-// the same order; the GPU-versus-reference tests fail if the two ever differ.
+// diagonals) and their weights. shaders/lattice_layout.glsl lists the same
+// velocities in the same order (and lattice.glsl's PULL_ALL spells them out);
+// the GPU-versus-reference tests fail if the two ever differ.
 #pragma once
 
 #include <array>

@@ -28,11 +28,12 @@ LatticeLayout latticeLayout(const Extent3& extent)
   LatticeLayout layout;
   layout.extent = extent;
   layout.row = (extent.nx + 3) / 4 * 4;
-  // 64 floats = 256 bytes satisfies every device's binding offset alignment.
-  layout.directionFloats = (uint64_t(layout.row) * uint64_t(extent.ny) * uint64_t(extent.nz) + 63) / 64 * 64;
-  layout.directionBytes = layout.directionFloats * 4;
-  // two lattices, plus the field, staging, per-cell omega and source volumes
-  layout.totalBytes = (2 * 19 + 4) * layout.directionBytes;
+  const uint64_t cells = uint64_t(layout.row) * uint64_t(extent.ny) * uint64_t(extent.nz);
+  layout.blocks = (cells / 4 + 15) / 16 * 16;
+  layout.copyBytes = layout.blocks * d3q19::Q * 16;
+  layout.volumeBytes = layout.blocks * 16;
+  // two lattice copies, plus the field, staging, per-cell omega and source volumes
+  layout.totalBytes = 2 * layout.copyBytes + 4 * layout.volumeBytes;
   return layout;
 }
 
@@ -43,16 +44,22 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
     throw UsageError("a " + e.toString() + " lattice does not fit on " + device.name + ": " + why +
                      "; use a coarser grid (--res) or another --device");
   };
-  const uint64_t pairFloats = 2 * layout.directionFloats;
-  if (pairFloats >= (uint64_t(1) << 31)) tooLarge("more than 2^30 cells");
-  if (layout.directionBytes > device.maxStorageBufferRange)
-    tooLarge("one direction needs " + mebibytes(layout.directionBytes) + " but a storage buffer may span at most " +
+  // The shaders index a lattice copy with 32-bit ints, in vec4 (and, in the
+  // init pass, in floats within one group).
+  const uint64_t copyTexels = layout.blocks * d3q19::Q;
+  if (4 * layout.blocks * row_groups::largest >= (uint64_t(1) << 31) || copyTexels >= (uint64_t(1) << 31))
+    tooLarge("more than " + std::to_string((uint64_t(1) << 31) / (4 * row_groups::largest)) + " cells");
+  // The largest storage-buffer binding is a group of three directions (a
+  // volume is a third of that).
+  const uint64_t largestGroup = uint64_t(row_groups::largest) * layout.blocks * 16;
+  if (largestGroup > device.maxStorageBufferRange)
+    tooLarge("three directions need " + mebibytes(largestGroup) + " but a storage buffer may span at most " +
              mebibytes(device.maxStorageBufferRange));
-  if (pairFloats > device.maxTexelBufferElements)
-    tooLarge("two directions need " + std::to_string(pairFloats) + " texels but a texel buffer may hold at most " +
+  if (copyTexels > device.maxTexelBufferElements)
+    tooLarge("the lattice needs " + std::to_string(copyTexels) + " texels but a texel buffer may hold at most " +
              std::to_string(device.maxTexelBufferElements));
-  if (device.maxAllocationBytes && 2 * layout.directionBytes > device.maxAllocationBytes)
-    tooLarge("two directions need " + mebibytes(2 * layout.directionBytes) + " in one allocation, more than " +
+  if (device.maxAllocationBytes && layout.copyBytes > device.maxAllocationBytes)
+    tooLarge("the lattice needs " + mebibytes(layout.copyBytes) + " in one allocation, more than " +
              mebibytes(device.maxAllocationBytes));
   const uint64_t blocksPerPlane = uint64_t(layout.row / 4) * uint64_t(e.ny);
   if (blocksPerPlane / 128 + 1 > device.maxWorkgroupCount[0] || uint64_t(e.nz) > device.maxWorkgroupCount[2] ||

@@ -4,29 +4,64 @@
 // not a driver crash.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/extent.hpp"
 #include "gpu/device_description.hpp"
+#include "lbm/d3q19.hpp"
 
 namespace lbmshape {
 
-// Rows are padded to `row` cells (a multiple of 4); each direction's array
-// takes `directionFloats`; opposite directions share one buffer ("pair").
+// The nine groups of directions that pull from the same neighbouring row
+// (e_y, e_z), in the order of shaders/lattice_layout.glsl: (0,0) {0,1,2},
+// (1,0) {3,7,10}, (-1,0) {4,8,9}, (0,1) {5,11,14}, (0,-1) {6,12,13}, then
+// (1,1) {15}, (-1,-1) {16}, (1,-1) {17}, (-1,1) {18}. Each group is one
+// contiguous array, so a step reads nine streams and writes nine.
+namespace row_groups {
+inline constexpr int count = 9;
+inline constexpr std::array<int, d3q19::Q> groupOf = {0, 0, 0, 1, 2, 3, 4, 1, 2, 2, 1, 3, 4, 4, 3, 5, 6, 7, 8};
+inline constexpr std::array<int, count> size = {3, 3, 3, 3, 3, 1, 1, 1, 1};
+inline constexpr std::array<int, count> start = {0, 3, 6, 9, 12, 15, 16, 17, 18};  // directions before the group
+inline constexpr int largest = 3;
+
+// Every direction of a group pulls from the group's row, each group holds
+// `size` directions, and the groups follow each other.
+constexpr bool consistent()
+{
+  for (int g = 0; g < count; ++g) {
+    int members = 0, first = -1;
+    for (int i = 0; i < d3q19::Q; ++i) {
+      if (groupOf[i] != g) continue;
+      if (first < 0) first = i;
+      if (d3q19::velocities[i].y != d3q19::velocities[first].y || d3q19::velocities[i].z != d3q19::velocities[first].z)
+        return false;
+      ++members;
+    }
+    if (members != size[g] || members > largest || start[g] != (g == 0 ? 0 : start[g - 1] + size[g - 1])) return false;
+  }
+  return start[count - 1] + size[count - 1] == d3q19::Q;
+}
+static_assert(consistent(), "row groups must match the D3Q19 velocities");
+}  // namespace row_groups
+
+// Cells are x-fastest with rows padded to `row` cells (a multiple of 4), and
+// taken four at a time: block b holds cells 4b..4b+3 of that order.
+//  - A lattice copy: for each row group g, the blocks one after another, each
+//    with its size(g) directions side by side as vec4 (four cells).
+//  - A volume (field, per-cell omega, source): one float per cell, the same
+//    cell order.
 struct LatticeLayout {
   Extent3 extent;
   int row = 0;
-  uint64_t directionFloats = 0;  // row * ny * nz, rounded up so offsets stay 256-byte aligned
-  uint64_t directionBytes = 0;
-  uint64_t totalBytes = 0;       // everything the Vulkan solver allocates
-
-  static constexpr int pairs = 10;  // the rest direction, then (1,2), (3,4), ... (17,18)
+  uint64_t blocks = 0;        // four-cell blocks, rounded up to a multiple of 16 (group offsets stay 256-byte aligned)
+  uint64_t copyBytes = 0;     // one lattice copy
+  uint64_t volumeBytes = 0;   // one volume
+  uint64_t totalBytes = 0;    // everything the Vulkan solver allocates
 
   uint64_t linearIndex(int x, int y, int z) const { return uint64_t(x) + uint64_t(row) * (uint64_t(y) + uint64_t(extent.ny) * uint64_t(z)); }
-  static int pairOf(int direction) { return (direction + 1) / 2; }
-  // Offset of a direction's array in its pair buffer, in floats.
-  uint64_t offsetInPair(int direction) const { return direction > 0 && direction % 2 == 0 ? directionFloats : 0; }
-  uint64_t pairBytes(int pair) const { return pair == 0 ? directionBytes : 2 * directionBytes; }
+  uint64_t groupOffsetBytes(int group) const { return uint64_t(row_groups::start[group]) * blocks * 16; }
+  uint64_t groupBytes(int group) const { return uint64_t(row_groups::size[group]) * blocks * 16; }
 
   // Bytes moved per cell update: 19 distributions read and written, fp32.
   static constexpr uint64_t bytesPerUpdate = 19 * 4 * 2;

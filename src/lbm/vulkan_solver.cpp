@@ -13,24 +13,24 @@
 
 namespace lbmshape {
 
-using d3q19::Q;
 using gpu::GpuBuffer;
 using gpu::MemoryUse;
 
 namespace {
 
-constexpr int pairs = LatticeLayout::pairs;
+constexpr int groupCount = row_groups::count;
 constexpr int stepsPerSubmit = 256;
 constexpr uint32_t initWorkgroupSize = 64;
 // Invocations per workgroup of the lattice passes. They run over the
 // four-cell blocks of a z plane, so workgroups are full whatever the row
 // length; larger workgroups cut lavapipe's per-workgroup cost (measured at
-// 128^3 with one 32-block row per 32 invocations: 32 invocations 67.3 MLUPS,
-// 64: 69.1, 128: 71.0, 256: 71.0).
+// 128^3 on a Xeon with the previous layout: 32 invocations 67.3 MLUPS, 64:
+// 69.1, 128: 71.0, 256: 71.0; on an AMD EPYC with the row-grouped layout 64,
+// 128 and 256 are the same within noise).
 constexpr uint32_t latticeWorkgroupSize = 128;
 
 // Binding numbers, as in shaders/lattice.glsl and shaders/lbm_*.comp.
-enum LatticeBinding : uint32_t { PairVec4 = 0, PairScalar = 1, OmegaPerCell = 2, SourceBase = 3, OutVec4 = 4, FieldOut = 5 };
+enum LatticeBinding : uint32_t { LatticeIn = 0, OmegaPerCell = 1, SourceBase = 2, NextGroups = 3, FieldOut = 4 };
 enum InitBinding : uint32_t { InitDensity = 0, InitOut = 1 };
 
 struct PushConstants {
@@ -44,16 +44,16 @@ std::vector<vk::DescriptorSetLayoutBinding> latticeBindings()
 {
   using T = vk::DescriptorType;
   return {
-      {PairVec4, T::eUniformTexelBuffer, pairs, {}},  {PairScalar, T::eUniformTexelBuffer, pairs, {}},
-      {OmegaPerCell, T::eUniformTexelBuffer, 1, {}}, {SourceBase, T::eUniformTexelBuffer, 1, {}},
-      {OutVec4, T::eStorageBuffer, Q, {}},           {FieldOut, T::eStorageBuffer, 1, {}},
+      {LatticeIn, T::eUniformTexelBuffer, 1, {}},    {OmegaPerCell, T::eUniformTexelBuffer, 1, {}},
+      {SourceBase, T::eUniformTexelBuffer, 1, {}},   {NextGroups, T::eStorageBuffer, groupCount, {}},
+      {FieldOut, T::eStorageBuffer, 1, {}},
   };
 }
 
 std::vector<vk::DescriptorSetLayoutBinding> initBindings()
 {
   using T = vk::DescriptorType;
-  return {{InitDensity, T::eStorageBuffer, 1, {}}, {InitOut, T::eStorageBuffer, Q, {}}};
+  return {{InitDensity, T::eStorageBuffer, 1, {}}, {InitOut, T::eStorageBuffer, groupCount, {}}};
 }
 
 // Specialization constants 0..9 of shaders/lattice_layout.glsl and lattice.glsl
@@ -71,7 +71,7 @@ std::vector<uint32_t> gridConstants(const LatticeLayout& layout, uint32_t workgr
           specFloat(d3q19::restWeight),
           specFloat(d3q19::axialWeight),
           specFloat(d3q19::diagonalWeight),
-          specInt(int(layout.directionFloats))};
+          specInt(int(layout.blocks))};
 }
 
 void barrier(vk::CommandBuffer cmd, vk::AccessFlags src, vk::PipelineStageFlags srcStage, vk::AccessFlags dst,
@@ -92,10 +92,10 @@ struct VulkanSolver::Resources {
 
   gpu::GpuContext& context;
   LatticeLayout layout;
-  // lattice[k][p]: pair buffer p of lattice copy k; a step reads one copy and
+  // The two lattice copies: a step reads one (through its texel view) and
   // writes the other.
-  std::array<std::vector<GpuBuffer>, 2> lattice;
-  std::array<std::vector<vk::raii::BufferView>, 2> vec4Views, scalarViews;
+  std::vector<GpuBuffer> lattice;
+  std::vector<vk::raii::BufferView> latticeViews;
   GpuBuffer field, staging, omega, sourceBuffer;
   vk::raii::BufferView omegaView{nullptr}, sourceView{nullptr};
   vk::raii::DescriptorPool pool{nullptr};
@@ -131,7 +131,7 @@ struct VulkanSolver::Resources {
 namespace {
 GpuBuffer volumeBuffer(gpu::GpuContext& c, const LatticeLayout& l, vk::BufferUsageFlags usage, MemoryUse use)
 {
-  return GpuBuffer(c, l.directionBytes, usage, use);
+  return GpuBuffer(c, l.volumeBytes, usage, use);
 }
 }  // namespace
 
@@ -157,18 +157,15 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
     return vk::raii::BufferView(device, vk::BufferViewCreateInfo({}, buffer, format, 0, VK_WHOLE_SIZE));
   };
   for (int k = 0; k < 2; ++k) {
-    for (int p = 0; p < pairs; ++p) {
-      lattice[k].emplace_back(context, layout.pairBytes(p), usage, MemoryUse::Device);
-      vec4Views[k].push_back(view(lattice[k].back().handle(), vk::Format::eR32G32B32A32Sfloat));
-      scalarViews[k].push_back(view(lattice[k].back().handle(), vk::Format::eR32Sfloat));
-    }
+    lattice.emplace_back(context, layout.copyBytes, usage, MemoryUse::Device);
+    latticeViews.push_back(view(lattice.back().handle(), vk::Format::eR32G32B32A32Sfloat));
   }
   omegaView = view(omega.handle(), vk::Format::eR32G32B32A32Sfloat);
   sourceView = view(sourceBuffer.handle(), vk::Format::eR32G32B32A32Sfloat);
 
   std::array<vk::DescriptorPoolSize, 2> sizes = {
-      vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * (2 * pairs + 2)),
-      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (Q + 1) + (Q + 1))};
+      vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 3),
+      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (groupCount + 1) + (groupCount + 1))};
   pool = vk::raii::DescriptorPool(
       device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 3, sizes));
   auto allocate = [&](const vk::raii::DescriptorSetLayout& setLayout, uint32_t count) {
@@ -182,39 +179,31 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
   // Row padding is never read by a real cell, but zeros keep every value the
   // device computes finite and the runs reproducible.
   context.runAndWait([&](vk::CommandBuffer cmd) {
-    for (auto& copy : lattice)
-      for (auto& buffer : copy) cmd.fillBuffer(buffer.handle(), 0, VK_WHOLE_SIZE, 0u);
+    for (auto& copy : lattice) cmd.fillBuffer(copy.handle(), 0, VK_WHOLE_SIZE, 0u);
   });
 }
 
 void VulkanSolver::Resources::writeDescriptors()
 {
   std::vector<vk::WriteDescriptorSet> writes;
-  std::array<std::array<vk::BufferView, pairs>, 2> vec4Handles, scalarHandles;
-  std::array<std::array<vk::DescriptorBufferInfo, Q>, 2> directions;  // each direction's range of its pair
-  for (int k = 0; k < 2; ++k) {
-    for (int p = 0; p < pairs; ++p) {
-      vec4Handles[k][p] = *vec4Views[k][p];
-      scalarHandles[k][p] = *scalarViews[k][p];
-    }
-    for (int i = 0; i < Q; ++i)
-      directions[k][i] = vk::DescriptorBufferInfo(lattice[k][LatticeLayout::pairOf(i)].handle(),
-                                                  layout.offsetInPair(i) * 4, layout.directionBytes);
-  }
+  std::array<vk::BufferView, 2> copyViews = {*latticeViews[0], *latticeViews[1]};
+  std::array<std::array<vk::DescriptorBufferInfo, groupCount>, 2> groupRanges;  // [k][g]: group g of copy k
+  for (int k = 0; k < 2; ++k)
+    for (int g = 0; g < groupCount; ++g)
+      groupRanges[k][g] = vk::DescriptorBufferInfo(lattice[k].handle(), layout.groupOffsetBytes(g), layout.groupBytes(g));
   vk::BufferView omegaHandle = *omegaView, sourceHandle = *sourceView;
   vk::DescriptorBufferInfo fieldInfo(field.handle(), 0, VK_WHOLE_SIZE);
   using T = vk::DescriptorType;
   for (int k = 0; k < 2; ++k) {
     vk::DescriptorSet set = *latticeSets[k];
-    writes.emplace_back(set, PairVec4, 0, pairs, T::eUniformTexelBuffer, nullptr, nullptr, vec4Handles[k].data());
-    writes.emplace_back(set, PairScalar, 0, pairs, T::eUniformTexelBuffer, nullptr, nullptr, scalarHandles[k].data());
+    writes.emplace_back(set, LatticeIn, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
     writes.emplace_back(set, OmegaPerCell, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaHandle);
     writes.emplace_back(set, SourceBase, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceHandle);
-    writes.emplace_back(set, OutVec4, 0, Q, T::eStorageBuffer, nullptr, directions[1 - k].data());
+    writes.emplace_back(set, NextGroups, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[1 - k].data());
     writes.emplace_back(set, FieldOut, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
   }
   writes.emplace_back(*initSet, InitDensity, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
-  writes.emplace_back(*initSet, InitOut, 0, Q, T::eStorageBuffer, nullptr, directions[0].data());
+  writes.emplace_back(*initSet, InitOut, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[0].data());
   context.device().updateDescriptorSets(writes, {});
 }
 
@@ -223,12 +212,12 @@ void VulkanSolver::Resources::upload(const Volume& values, GpuBuffer& target)
 {
   const Extent3& e = layout.extent;
   float* dst = reinterpret_cast<float*>(staging.mapped());
-  std::memset(dst, 0, layout.directionBytes);
+  std::memset(dst, 0, layout.volumeBytes);
   for (int z = 0; z < e.nz; ++z)
     for (int y = 0; y < e.ny; ++y)
       std::memcpy(dst + layout.linearIndex(0, y, z), values.data() + e.index(0, y, z), size_t(e.nx) * 4);
   context.runAndWait([&](vk::CommandBuffer cmd) {
-    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, layout.directionBytes));
+    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, layout.volumeBytes));
   });
 }
 
@@ -318,7 +307,7 @@ Volume VulkanSolver::field()
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->latticeSets[r_->current], {});
     r_->dispatchLattice(cmd);
     barrier(cmd, shaderWrite, computeStage, vk::AccessFlagBits::eTransferRead, transferStage);
-    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, l.directionBytes));
+    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
     barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
             vk::PipelineStageFlagBits::eHost);
   });

@@ -111,9 +111,9 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
   for (const auto& e : sizes) checkExtent(e);
 
   const ComputeDevice& compute = common.computeDevice();
-  gpu::GpuContext* context = compute.gpu();  // none with --device reference
+  for (const auto& e : sizes) compute.checkFits(e);  // against the device's limits, before it is opened
+  gpu::GpuContext* context = compute.gpu();          // none with --device reference
   const std::string device = compute.name();
-  for (const auto& e : sizes) compute.checkFits(e);
   log::info("measuring memory bandwidth...");
   const BandwidthMeasurement bandwidth = measureMemoryBandwidth(context);
   std::vector<SizeResult> results;

@@ -10,7 +10,7 @@ ComputeDevice& CommonOptions::computeDevice() const
 {
   if (!device_) {
     device_ = std::make_shared<ComputeDevice>(device, validation);
-    if (device_->isReference()) log::verbose("device: " + device_->name());  // a Vulkan device logs itself
+    if (device_->isReference()) log::verbose("device: " + device_->name());  // a Vulkan device logs itself when opened
   }
   return *device_;
 }

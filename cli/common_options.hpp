@@ -23,8 +23,9 @@ struct CommonOptions {
   // collects one per job instead.
   std::function<void(const nlohmann::json&)> report;
 
-  // The compute device, opened on first use and then shared, so the jobs of
-  // one process share the Vulkan device and its compiled pipelines.
+  // The compute device, shared by the jobs of one process, and with it the
+  // Vulkan device and its compiled pipelines; it opens what it needs when
+  // first asked (compute_device.hpp).
   ComputeDevice& computeDevice() const;
 
 private:

@@ -22,11 +22,17 @@ uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device)
 
 }  // namespace
 
-GpuContext::GpuContext(const GpuOptions& options) : instance_(options.validation)
+std::unique_ptr<GpuContext> GpuContext::open(const GpuOptions& options)
 {
-  size_t chosen = chooseDevice(instance_.devices(), options.device);
-  description_ = instance_.devices()[chosen];
-  physical_ = &instance_.physicalDevice(chosen);
+  auto instance = std::make_shared<VulkanInstance>(options.validation);
+  size_t chosen = chooseDevice(instance->devices(), options.device);
+  return std::make_unique<GpuContext>(std::move(instance), chosen);
+}
+
+GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIndex) : instance_(std::move(instance))
+{
+  description_ = instance_->devices().at(deviceIndex);
+  physical_ = &instance_->physicalDevice(deviceIndex);
   properties_ = physical_->getProperties();
   memoryProperties_ = physical_->getMemoryProperties();
   log::verbose("device: " + description_.name + " [" + description_.type + ", " + description_.driver + "]");

@@ -26,7 +26,11 @@ struct GpuOptions {
 
 class GpuContext {
 public:
-  explicit GpuContext(const GpuOptions& options);
+  // Opens device `deviceIndex` (into instance->devices()) of an instance
+  // created, and its device chosen, beforehand.
+  GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIndex);
+  // A new instance and the device `options.device` names.
+  static std::unique_ptr<GpuContext> open(const GpuOptions& options);
   ~GpuContext();
   GpuContext(const GpuContext&) = delete;
   GpuContext& operator=(const GpuContext&) = delete;
@@ -36,8 +40,8 @@ public:
   vk::raii::Device& device() { return device_; }
   vk::raii::Queue& queue() { return queue_; }
   const vk::raii::PhysicalDevice& physicalDevice() const { return *physical_; }
-  int validationMessages() const { return instance_.validationMessages(); }
-  bool validationEnabled() const { return instance_.validationEnabled(); }
+  int validationMessages() const { return instance_->validationMessages(); }
+  bool validationEnabled() const { return instance_->validationEnabled(); }
 
   // Index of a memory type allowed by `typeBits` that has all `required` flags,
   // preferring one that also has the `preferred` ones.
@@ -55,7 +59,7 @@ public:
   size_t pipelineCacheLoadedBytes() const { return pipelineCache_->loadedBytes(); }
 
 private:
-  VulkanInstance instance_;
+  std::shared_ptr<VulkanInstance> instance_;
   DeviceDescription description_;
   vk::raii::PhysicalDevice* physical_ = nullptr;
   vk::PhysicalDeviceProperties properties_;

@@ -1,6 +1,9 @@
 // Where the lattice runs: a Vulkan device, or the CPU reference solver
 // (--device reference). Jobs in one process share it, and with it the
-// compiled pipelines.
+// compiled pipelines. Nothing is opened until it is needed: the Vulkan
+// instance (and the choice of device) when a grid is first checked against
+// the device's limits, the device itself when the first solver is made; so
+// bad input and impossible grids cost no device start-up.
 #pragma once
 
 #include <memory>
@@ -13,20 +16,23 @@ namespace lbmshape {
 
 namespace gpu {
 class GpuContext;
+class VulkanInstance;
+struct DeviceDescription;
 }
 
 class ComputeDevice {
 public:
   // `request`: empty (the best device), an index, part of a device name, or
-  // "reference". Throws UsageError when nothing matches, DeviceError when
-  // Vulkan is unusable.
+  // "reference". Opening it later throws UsageError when nothing matches,
+  // DeviceError when Vulkan is unusable.
   ComputeDevice(const std::string& request, bool validation);
   ~ComputeDevice();
   ComputeDevice(ComputeDevice&&) noexcept;
 
   std::string name() const;
-  bool isReference() const { return !gpu_; }
-  gpu::GpuContext* gpu() const { return gpu_.get(); }
+  bool isReference() const { return request_ == "reference"; }
+  // The chosen Vulkan device, opened on first use; null for the reference.
+  gpu::GpuContext* gpu() const;
 
   // A solver for a lattice of this size; throws UsageError when it does not
   // fit the device, before allocating anything.
@@ -38,7 +44,13 @@ public:
   void requireCleanValidation() const;
 
 private:
-  std::unique_ptr<gpu::GpuContext> gpu_;
+  const gpu::DeviceDescription& description() const;  // creates the instance, chooses the device
+
+  std::string request_;
+  bool validation_ = false;
+  mutable std::shared_ptr<gpu::VulkanInstance> instance_;
+  mutable size_t chosen_ = 0;
+  mutable std::unique_ptr<gpu::GpuContext> gpu_;
 };
 
 }  // namespace lbmshape

@@ -10,7 +10,8 @@ namespace {
 TEST(ValidationLayer, CountsAMisuse)
 {
   // Its own context, so the deliberate error stays out of the shared one.
-  gpu::GpuContext context(gpu::GpuOptions{"", true});
+  auto opened = gpu::GpuContext::open(gpu::GpuOptions{"", true});
+  gpu::GpuContext& context = *opened;
   ASSERT_TRUE(context.validationEnabled());
   ASSERT_EQ(context.validationMessages(), 0);
   // A buffer of size 0 breaks VUID-VkBufferCreateInfo-size-00912.

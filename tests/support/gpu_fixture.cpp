@@ -9,7 +9,7 @@ gpu::GpuContext& sharedGpu()
   static std::unique_ptr<gpu::GpuContext> context = [] {
     gpu::GpuOptions options;
     options.validation = true;
-    return std::make_unique<gpu::GpuContext>(options);
+    return gpu::GpuContext::open(options);
   }();
   return *context;
 }

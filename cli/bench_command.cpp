@@ -165,11 +165,12 @@ void addBenchCommand(CLI::App& app, const CommonOptions& common)
 {
   auto options = std::make_shared<BenchOptions>();
   auto* bench = app.add_subcommand("bench", "Time the lattice step on the device and on the CPU reference");
-  bench->add_option("--size", options->size, "Lattice size NX,NY,NZ")->delimiter(',')->expected(3)->capture_default_str();
+  auto* size = bench->add_option("--size", options->size, "Lattice size NX,NY,NZ")->delimiter(',')->expected(3)->capture_default_str();
   bench->add_option("--steps", options->settings.steps, "Steps per timed run")->capture_default_str();
   bench->add_option("--runs", options->settings.runs, "Timed runs; the median is reported")->capture_default_str();
   bench->add_option("--gamma", options->settings.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
-  bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours");
+  bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours")
+      ->excludes(size);
   bench->callback([&common, options] { runBench(common, *options); });
 }
 

@@ -15,6 +15,11 @@ ComputeDevice& CommonOptions::computeDevice() const
   return *device_;
 }
 
+void CommonOptions::closeDevice() const
+{
+  if (device_) device_->close();
+}
+
 void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
 
 }  // namespace lbmshape::cli

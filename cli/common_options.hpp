@@ -27,6 +27,8 @@ struct CommonOptions {
   // Vulkan device and its compiled pipelines; it opens what it needs when
   // first asked (compute_device.hpp).
   ComputeDevice& computeDevice() const;
+  // Closes the device, if one was opened (ComputeDevice::close).
+  void closeDevice() const;
 
 private:
   mutable std::shared_ptr<ComputeDevice> device_;

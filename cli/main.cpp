@@ -62,6 +62,9 @@ int main(int argc, char** argv)
   interrupt::installHandler();
   try {
     app.parse(argc, argv);
+    // Closing the device can draw validation messages too (objects still
+    // alive, for one); they fail the run like any other.
+    common.closeDevice();
     return 0;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

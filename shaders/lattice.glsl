@@ -30,17 +30,17 @@ int lastLane;                // the lane of cell NX - 1 if it is in this block, 
 vec4 f[19];                  // the four cells' distributions after streaming
 
 // f[I] = f*_I(r - e_I), or f*_O(r) where r - e_I is outside (bounce-back),
-// for direction I with velocity (EX, EY, EZ) and opposite O. One vec4 fetch,
-// plus, for the x-moving directions, the neighbouring block's vec4 for the one
-// cell the x shift brings in (a vec4 fetch is plain loads on lavapipe; a
-// float fetch is a gather, slower on AMD). At a wall the index simply points
-// at the cell's own f*_O.
-#define PULL(I, EX, EY, EZ, O)                                                                    \
+// for direction I with velocity (EX, EY, EZ) and opposite O = -e_I. One vec4
+// fetch, plus, for the x-moving directions, the neighbouring block's vec4 for
+// the one cell the x shift brings in (a vec4 fetch is plain loads on
+// lavapipe; a float fetch is a gather, slower on AMD). At a wall the index
+// simply points at the cell's own f*_O.
+#define PULL(I, EX, EY, EZ)                                                                       \
   {                                                                                               \
     bool rowOutside = cellY - (EY) < 0 || cellY - (EY) >= NY || cellZ - (EZ) < 0 || cellZ - (EZ) >= NZ; \
-    int from = latticeIndex(ownBlock - ((EY) * ROW + (EZ) * PLANE) / 4, I);                       \
-    int bounced = latticeIndex(ownBlock, O);                                                      \
-    const int nextBlock = groupSize[groupOf[I]];                                                  \
+    int from = LATTICE_INDEX(ownBlock - ((EY) * ROW + (EZ) * PLANE) / 4, EX, EY, EZ);             \
+    int bounced = LATTICE_INDEX(ownBlock, -(EX), -(EY), -(EZ));                                   \
+    const int nextBlock = GROUP_SIZE(ROW_GROUP(EY, EZ));                                          \
     vec4 c = texelFetch(lattice, rowOutside ? bounced : from);                                    \
     if ((EX) == 0) {                                                                              \
       f[I] = c;                                                                                   \
@@ -55,14 +55,6 @@ vec4 f[19];                  // the four cells' distributions after streaming
       f[I] = rowOutside ? c : mix(vec4(c.yzw, right), vec4(right), pastRowEnd);                   \
     }                                                                                             \
   }
-
-#define PULL_ALL                                                                         \
-  PULL(0, 0, 0, 0, 0)                                                                    \
-  PULL(1, 1, 0, 0, 2) PULL(2, -1, 0, 0, 1) PULL(3, 0, 1, 0, 4) PULL(4, 0, -1, 0, 3)      \
-  PULL(5, 0, 0, 1, 6) PULL(6, 0, 0, -1, 5)                                               \
-  PULL(7, 1, 1, 0, 8) PULL(8, -1, -1, 0, 7) PULL(9, 1, -1, 0, 10) PULL(10, -1, 1, 0, 9)  \
-  PULL(11, 1, 0, 1, 12) PULL(12, -1, 0, -1, 11) PULL(13, 1, 0, -1, 14) PULL(14, -1, 0, 1, 13) \
-  PULL(15, 0, 1, 1, 16) PULL(16, 0, -1, -1, 15) PULL(17, 0, 1, -1, 18) PULL(18, 0, -1, 1, 17)
 
 // Sets this invocation's block; false for invocations beyond the grid.
 // Invocations run over the blocks of a z plane, row after row, so workgroups

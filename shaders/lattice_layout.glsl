@@ -5,8 +5,8 @@
 // at a time: block b is cells 4b..4b+3, one vec4. The 19 directions fall into
 // nine groups by the row they pull from, (e_y, e_z). Each group is one
 // contiguous array in which every block keeps its directions side by side:
-//     vec4 index of (block b, direction i) in a lattice copy:
-//         BLOCKS groupStart[g] + b groupSize[g] + slotOf[i],   g = groupOf[i]
+//     vec4 index of (block b, direction e) in a lattice copy:
+//         BLOCKS GROUP_START(g) + b GROUP_SIZE(g) + SLOT(e_x),   g = ROW_GROUP(e_y, e_z)
 // So a step reads nine streams (one per neighbouring row) and writes nine, and
 // uses every cache line it touches whole. (One array per direction, 19 read
 // and 19 write streams, ran at a third of the speed on lavapipe on an AMD EPYC:
@@ -24,25 +24,37 @@ layout(constant_id = 9) const int BLOCKS = 16;  // of the grid, rounded up to a 
 const int PLANE = ROW * NY;
 const int GROUPS = 9;
 
-// The velocities in the order of src/lbm/d3q19.hpp, and the row groups of
-// src/lbm/lattice_memory.hpp: (0,0) {0,1,2}, (1,0) {3,7,10}, (-1,0) {4,8,9},
-// (0,1) {5,11,14}, (0,-1) {6,12,13}, (1,1) {15}, (-1,-1) {16}, (1,-1) {17},
-// (-1,1) {18}.
-const ivec3 velocity[19] = ivec3[](
-    ivec3(0, 0, 0),
-    ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0), ivec3(0, 0, 1), ivec3(0, 0, -1),
-    ivec3(1, 1, 0), ivec3(-1, -1, 0), ivec3(1, -1, 0), ivec3(-1, 1, 0),
-    ivec3(1, 0, 1), ivec3(-1, 0, -1), ivec3(1, 0, -1), ivec3(-1, 0, 1),
-    ivec3(0, 1, 1), ivec3(0, -1, -1), ivec3(0, 1, -1), ivec3(0, -1, 1));
-const int groupOf[19] = int[](0, 0, 0, 1, 2, 3, 4, 1, 2, 2, 1, 3, 4, 4, 3, 5, 6, 7, 8);
-const int slotOf[19] = int[](0, 1, 2, 0, 0, 0, 0, 1, 1, 2, 2, 1, 1, 2, 2, 0, 0, 0, 0);
-const int groupSize[9] = int[](3, 3, 3, 3, 3, 1, 1, 1, 1);
-const int groupStart[9] = int[](0, 3, 6, 9, 12, 15, 16, 17, 18);
+// The 19 velocities (I, EX, EY, EZ) in the order of src/lbm/d3q19.hpp; M is
+// applied to each. Everything below is written as macros of these literals
+// so that glslang folds it to constants: indexing constant arrays instead cost
+// lavapipe ten times longer pipeline creation.
+#define FOR_EACH_DIRECTION(M)                                                           \
+  M(0, 0, 0, 0)                                                                         \
+  M(1, 1, 0, 0) M(2, -1, 0, 0) M(3, 0, 1, 0) M(4, 0, -1, 0) M(5, 0, 0, 1) M(6, 0, 0, -1) \
+  M(7, 1, 1, 0) M(8, -1, -1, 0) M(9, 1, -1, 0) M(10, -1, 1, 0)                          \
+  M(11, 1, 0, 1) M(12, -1, 0, -1) M(13, 1, 0, -1) M(14, -1, 0, 1)                       \
+  M(15, 0, 1, 1) M(16, 0, -1, -1) M(17, 0, 1, -1) M(18, 0, -1, 1)
+
+#define WEIGHT(EX, EY, EZ) \
+  ((EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 0 ? W_REST : (EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 1 ? W_AXIAL : W_DIAGONAL)
+
+// The row groups of src/lbm/lattice_memory.hpp, numbered by the row (e_y, e_z)
+// they pull from: (0,0) 0, (1,0) 1, (-1,0) 2, (0,1) 3, (0,-1) 4, (1,1) 5,
+// (-1,-1) 6, (1,-1) 7, (-1,1) 8. The first five hold three directions (slot
+// 0, 1, 2 for e_x = 0, 1, -1), the diagonal rows one.
+#define ROW_GROUP(EY, EZ)                                          \
+  ((EZ) == 0   ? ((EY) == 0 ? 0 : (EY) == 1 ? 1 : 2)               \
+   : (EY) == 0 ? ((EZ) == 1 ? 3 : 4)                               \
+   : (EY) == (EZ) ? ((EY) == 1 ? 5 : 6)                            \
+                  : ((EY) == 1 ? 7 : 8))
+#define SLOT(EX) ((EX) == 0 ? 0 : (EX) == 1 ? 1 : 2)
+#define GROUP_SIZE(G) ((G) < 5 ? 3 : 1)
+#define GROUP_START(G) ((G) < 5 ? 3 * (G) : 10 + (G))  // directions in the groups before G
+
+// vec4 index of block B's direction (EX, EY, EZ) within its group, and within
+// the whole lattice copy.
+#define INDEX_IN_GROUP(B, EX, EY, EZ) ((B) * GROUP_SIZE(ROW_GROUP(EY, EZ)) + SLOT(EX))
+#define LATTICE_INDEX(B, EX, EY, EZ) (BLOCKS * GROUP_START(ROW_GROUP(EY, EZ)) + INDEX_IN_GROUP(B, EX, EY, EZ))
 
 int linearIndex(ivec3 c) { return c.x + ROW * (c.y + NY * c.z); }
 bool isRealCell(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(NX, NY, NZ))); }
-float weight(int i) { return i == 0 ? W_REST : (i <= 6 ? W_AXIAL : W_DIAGONAL); }
-
-// vec4 index of block b's direction i within its group, and within the copy.
-int indexInGroup(int b, int i) { return b * groupSize[groupOf[i]] + slotOf[i]; }
-int latticeIndex(int b, int i) { return BLOCKS * groupStart[groupOf[i]] + indexInGroup(b, i); }

@@ -9,7 +9,7 @@ layout(set = 0, binding = 4, std430) writeonly buffer Field { vec4 cells[]; } fi
 void main()
 {
   if (!locateBlock()) return;
-  PULL_ALL
+  FOR_EACH_DIRECTION(PULL)
   vec4 S;
   fieldOut.cells[ownBlock] = fieldFromDistributions(S);
 }

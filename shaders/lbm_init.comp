@@ -10,11 +10,11 @@ layout(local_size_x_id = 0) in;
 layout(set = 0, binding = 0, std430) readonly buffer Density { float cells[]; } density;  // same layout
 layout(set = 0, binding = 1, std430) writeonly buffer Distribution { float cells[]; } group[GROUPS];
 
-#define INIT(J)                                                                                   \
-  {                                                                                               \
-    ivec3 target = q + velocity[J];                                                               \
-    group[groupOf[J]].cells[4 * indexInGroup(own / 4, J) + own % 4] =                             \
-        weight(J) * density.cells[isRealCell(target) ? linearIndex(target) : own];                \
+#define INIT(J, EX, EY, EZ)                                                                      \
+  {                                                                                              \
+    ivec3 target = q + ivec3(EX, EY, EZ);                                                        \
+    group[ROW_GROUP(EY, EZ)].cells[4 * INDEX_IN_GROUP(own / 4, EX, EY, EZ) + own % 4] =          \
+        WEIGHT(EX, EY, EZ) * density.cells[isRealCell(target) ? linearIndex(target) : own];      \
   }
 
 void main()
@@ -22,6 +22,5 @@ void main()
   ivec3 q = ivec3(gl_GlobalInvocationID);
   if (!isRealCell(q)) return;
   int own = linearIndex(q);
-  INIT(0) INIT(1) INIT(2) INIT(3) INIT(4) INIT(5) INIT(6) INIT(7) INIT(8) INIT(9)
-  INIT(10) INIT(11) INIT(12) INIT(13) INIT(14) INIT(15) INIT(16) INIT(17) INIT(18)
+  FOR_EACH_DIRECTION(INIT)
 }

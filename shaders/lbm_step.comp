@@ -8,20 +8,17 @@
 // The next lattice copy, one binding per row group.
 layout(set = 0, binding = 3, std430) writeonly buffer Distribution { vec4 cells[]; } nextGroup[GROUPS];
 
-#define COLLIDE(I, W) \
-  nextGroup[groupOf[I]].cells[indexInGroup(ownBlock, I)] = f[I] + omega * ((W) * X - f[I]) + sourceShare * (W) * S;
+#define COLLIDE(I, EX, EY, EZ)                                                                   \
+  nextGroup[ROW_GROUP(EY, EZ)].cells[INDEX_IN_GROUP(ownBlock, EX, EY, EZ)] =                     \
+      f[I] + omega * (WEIGHT(EX, EY, EZ) * X - f[I]) + sourceShare * WEIGHT(EX, EY, EZ) * S;
 
 void main()
 {
   if (!locateBlock()) return;
-  PULL_ALL
+  FOR_EACH_DIRECTION(PULL)
   vec4 S;
   vec4 X = fieldFromDistributions(S);
   vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, ownBlock) : vec4(params.omega);
   vec4 sourceShare = 1.0 - 0.5 * omega;
-  COLLIDE(0, W_REST)
-  COLLIDE(1, W_AXIAL) COLLIDE(2, W_AXIAL) COLLIDE(3, W_AXIAL) COLLIDE(4, W_AXIAL) COLLIDE(5, W_AXIAL) COLLIDE(6, W_AXIAL)
-  COLLIDE(7, W_DIAGONAL) COLLIDE(8, W_DIAGONAL) COLLIDE(9, W_DIAGONAL) COLLIDE(10, W_DIAGONAL)
-  COLLIDE(11, W_DIAGONAL) COLLIDE(12, W_DIAGONAL) COLLIDE(13, W_DIAGONAL) COLLIDE(14, W_DIAGONAL)
-  COLLIDE(15, W_DIAGONAL) COLLIDE(16, W_DIAGONAL) COLLIDE(17, W_DIAGONAL) COLLIDE(18, W_DIAGONAL)
+  FOR_EACH_DIRECTION(COLLIDE)
 }

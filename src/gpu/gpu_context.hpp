@@ -41,6 +41,7 @@ public:
   vk::raii::Queue& queue() { return queue_; }
   const vk::raii::PhysicalDevice& physicalDevice() const { return *physical_; }
   int validationMessages() const { return instance_->validationMessages(); }
+  const std::shared_ptr<VulkanInstance>& instance() const { return instance_; }
   bool validationEnabled() const { return instance_->validationEnabled(); }
 
   // Index of a memory type allowed by `typeBits` that has all `required` flags,

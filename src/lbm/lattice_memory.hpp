@@ -14,33 +14,31 @@
 namespace lbmshape {
 
 // The nine groups of directions that pull from the same neighbouring row
-// (e_y, e_z), in the order of shaders/lattice_layout.glsl: (0,0) {0,1,2},
-// (1,0) {3,7,10}, (-1,0) {4,8,9}, (0,1) {5,11,14}, (0,-1) {6,12,13}, then
-// (1,1) {15}, (-1,-1) {16}, (1,-1) {17}, (-1,1) {18}. Each group is one
-// contiguous array, so a step reads nine streams and writes nine.
+// (e_y, e_z), numbered as ROW_GROUP in shaders/lattice_layout.glsl:
+// (0,0) {0,1,2}, (1,0) {3,7,10}, (-1,0) {4,8,9}, (0,1) {5,11,14},
+// (0,-1) {6,12,13}, then (1,1) {15}, (-1,-1) {16}, (1,-1) {17}, (-1,1) {18}.
+// Each group is one contiguous array, so a step reads nine streams and
+// writes nine.
 namespace row_groups {
 inline constexpr int count = 9;
-inline constexpr std::array<int, d3q19::Q> groupOf = {0, 0, 0, 1, 2, 3, 4, 1, 2, 2, 1, 3, 4, 4, 3, 5, 6, 7, 8};
-inline constexpr std::array<int, count> size = {3, 3, 3, 3, 3, 1, 1, 1, 1};
-inline constexpr std::array<int, count> start = {0, 3, 6, 9, 12, 15, 16, 17, 18};  // directions before the group
 inline constexpr int largest = 3;
 
-// Every direction of a group pulls from the group's row, each group holds
-// `size` directions, and the groups follow each other.
+constexpr int of(int ey, int ez)
+{
+  return ez == 0 ? (ey == 0 ? 0 : ey == 1 ? 1 : 2) : ey == 0 ? (ez == 1 ? 3 : 4) : ey == ez ? (ey == 1 ? 5 : 6) : (ey == 1 ? 7 : 8);
+}
+constexpr int size(int group) { return group < 5 ? 3 : 1; }
+constexpr int start(int group) { return group < 5 ? 3 * group : 10 + group; }  // directions in the groups before
+
+// Every group holds size() of the velocities, and the groups follow each other.
 constexpr bool consistent()
 {
   for (int g = 0; g < count; ++g) {
-    int members = 0, first = -1;
-    for (int i = 0; i < d3q19::Q; ++i) {
-      if (groupOf[i] != g) continue;
-      if (first < 0) first = i;
-      if (d3q19::velocities[i].y != d3q19::velocities[first].y || d3q19::velocities[i].z != d3q19::velocities[first].z)
-        return false;
-      ++members;
-    }
-    if (members != size[g] || members > largest || start[g] != (g == 0 ? 0 : start[g - 1] + size[g - 1])) return false;
+    int members = 0;
+    for (const auto& v : d3q19::velocities) members += of(v.y, v.z) == g;
+    if (members != size(g) || members > largest || start(g) != (g == 0 ? 0 : start(g - 1) + size(g - 1))) return false;
   }
-  return start[count - 1] + size[count - 1] == d3q19::Q;
+  return start(count - 1) + size(count - 1) == d3q19::Q;
 }
 static_assert(consistent(), "row groups must match the D3Q19 velocities");
 }  // namespace row_groups
@@ -60,8 +58,8 @@ struct LatticeLayout {
   uint64_t totalBytes = 0;    // everything the Vulkan solver allocates
 
   uint64_t linearIndex(int x, int y, int z) const { return uint64_t(x) + uint64_t(row) * (uint64_t(y) + uint64_t(extent.ny) * uint64_t(z)); }
-  uint64_t groupOffsetBytes(int group) const { return uint64_t(row_groups::start[group]) * blocks * 16; }
-  uint64_t groupBytes(int group) const { return uint64_t(row_groups::size[group]) * blocks * 16; }
+  uint64_t groupOffsetBytes(int group) const { return uint64_t(row_groups::start(group)) * blocks * 16; }
+  uint64_t groupBytes(int group) const { return uint64_t(row_groups::size(group)) * blocks * 16; }
 
   // Bytes moved per cell update: 19 distributions read and written, fp32.
   static constexpr uint64_t bytesPerUpdate = 19 * 4 * 2;

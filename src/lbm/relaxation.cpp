@@ -19,6 +19,14 @@ void checkGamma(double gamma, const char* what)
             << "); it sets tau = 3*gamma + 1/2, and tau <= 1/2 is unstable";
     throw UsageError(message.str());
   }
+  // The lattice computes in fp32: below about 5e-9, omega = 1/tau rounds to
+  // exactly 2, which is tau = 1/2 again.
+  if (!(float(omegaFromGamma(gamma)) < 2.0f)) {
+    std::ostringstream message;
+    message << what << " = " << gamma << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
+            << " where the scheme is unstable; use at least 1e-7";
+    throw UsageError(message.str());
+  }
 }
 
 }  // namespace lbmshape::relaxation

@@ -56,4 +56,10 @@ void ComputeDevice::requireCleanValidation() const
     throw DeviceError("the Vulkan validation layer reported " + std::to_string(messages) + " problem(s), printed above");
 }
 
+void ComputeDevice::close()
+{
+  gpu_.reset();
+  requireCleanValidation();
+}
+
 }  // namespace lbmshape

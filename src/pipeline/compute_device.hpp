@@ -42,6 +42,9 @@ public:
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;
+  // Destroys the Vulkan device (the instance stays, so that what the layer
+  // reports while the device goes is still counted), then checks as above.
+  void close();
 
 private:
   const gpu::DeviceDescription& description() const;  // creates the instance, chooses the device

@@ -1,9 +1,13 @@
 // The --json results that scripts rely on: one object on stdout, with the
 // keys the documentation promises, and values that make sense together.
+#include <cstdlib>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.hpp"
+#include "support/scratch_folder.hpp"
 
 namespace lbmshape {
 namespace {
@@ -28,9 +32,18 @@ TEST(JsonResults, InfoListsDevicesAndTheSelectedOne)
   EXPECT_TRUE(j["validation"].get<bool>()) << "tests run with the validation layer";
 }
 
+std::string selectedDeviceName()
+{
+  auto info = parseStdout(testing::runLbmshape({"info", "--json"}));
+  for (const auto& d : info["devices"])
+    if (d["selected"].get<bool>()) return d["name"].get<std::string>();
+  return "";
+}
+
 TEST(JsonResults, BenchReportsConsistentFigures)
 {
   auto j = parseStdout(testing::runLbmshape({"bench", "--json", "--size", "24,20,16", "--steps", "5", "--runs", "2"}));
+  EXPECT_EQ(j["device"], selectedDeviceName());
   EXPECT_EQ(j["size"], (nlohmann::json{24, 20, 16}));
   EXPECT_EQ(j["steps"], 5);
   EXPECT_EQ(j["bytes_per_update"], 152);
@@ -46,6 +59,45 @@ TEST(JsonResults, BenchReportsConsistentFigures)
               j["vulkan"]["mlups"].get<double>() / j["reference"]["mlups"].get<double>(), 1e-9);
   EXPECT_GT(j["roofline_fraction"].get<double>(), 0.0);
   EXPECT_GT(j["memory_bandwidth"]["gbps"].get<double>(), 0.1);
+}
+
+TEST(JsonResults, BenchPaperTimesTheLatticesOfTableOne)
+{
+  auto j = parseStdout(testing::runLbmshape({"bench", "--paper", "--json", "--steps", "1", "--runs", "1"}));
+  EXPECT_EQ(j["device"], selectedDeviceName());
+  const auto& rows = j["table1"];
+  ASSERT_EQ(rows.size(), 5u);
+  const nlohmann::json sizes = {{70, 123, 66}, {107, 128, 97}, {58, 128, 106}, {128, 128, 128}, {80, 80, 80}};
+  const double paperGpuMs[] = {3.1, 6.2, 3.7, 14.5, 4.5};  // Table 1 of the paper
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["size"], sizes[i]) << i;
+    EXPECT_EQ(rows[i]["paper"]["gpu_ms_per_step"].get<double>(), paperGpuMs[i]) << i;
+    EXPECT_GT(rows[i]["vulkan"]["ms_per_step"].get<double>(), 0.0) << i;
+    EXPECT_GT(rows[i]["reference"]["ms_per_step"].get<double>(), 0.0) << i;
+  }
+  EXPECT_EQ(rows[3]["figure"], "Figure 8");
+  EXPECT_EQ(rows[3]["application"], "morphing");
+}
+
+// The second run of a process finds the pipeline cache the first one saved in
+// $XDG_CACHE_HOME/lbmshape.
+TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
+{
+  testing::ScratchFolder cache;
+  const std::string previous = std::getenv("XDG_CACHE_HOME") ? std::getenv("XDG_CACHE_HOME") : "";
+  setenv("XDG_CACHE_HOME", cache.path().c_str(), 1);
+  const std::vector<std::string> bench = {"bench", "--json", "--size", "16,16,16", "--steps", "1", "--runs", "1"};
+  auto first = parseStdout(testing::runLbmshape(bench));
+  auto second = parseStdout(testing::runLbmshape(bench));
+  setenv("XDG_CACHE_HOME", previous.c_str(), 1);
+
+  EXPECT_EQ(first["startup"]["pipeline_cache_loaded_bytes"].get<size_t>(), 0u) << "a fresh cache folder";
+  EXPECT_GT(second["startup"]["pipeline_cache_loaded_bytes"].get<size_t>(), 0u);
+  ASSERT_TRUE(std::filesystem::is_directory(cache / "lbmshape"));
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(cache / "lbmshape"))
+    files += entry.path().extension() == ".bin";
+  EXPECT_EQ(files, 1u);
 }
 
 TEST(JsonResults, ReferenceDeviceRunsWithoutVulkan)

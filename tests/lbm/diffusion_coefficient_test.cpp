@@ -77,8 +77,10 @@ INSTANTIATE_TEST_SUITE_P(Gammas, DiffusionCoefficient,
                                            DiffusionCase{testing::Backend::Reference, 0.2},
                                            DiffusionCase{testing::Backend::Reference, 0.5}),
                          [](const auto& info) {
+                           // gamma_0_05, gamma_0_20, gamma_0_50
+                           const long hundredths = std::lround(info.param.gamma * 100);
                            return std::string(info.param.backend == testing::Backend::Vulkan ? "vulkan" : "reference") +
-                                  "_gamma_0_" + std::to_string(int(std::lround(info.param.gamma * 100)));
+                                  "_gamma_0_" + (hundredths < 10 ? "0" : "") + std::to_string(hundredths);
                          });
 
 }  // namespace

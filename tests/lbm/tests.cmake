@@ -3,5 +3,6 @@ lbmshape_test(lbm_tests
   ${CMAKE_CURRENT_LIST_DIR}/curvature_motion_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/diffusion_coefficient_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gpu_matches_reference_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/lattice_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/source_term_test.cpp
 )

@@ -4,14 +4,42 @@
 
 namespace lbmshape::testing {
 
+namespace {
+
+std::unique_ptr<gpu::GpuContext>& sharedSlot()
+{
+  static std::unique_ptr<gpu::GpuContext> context;
+  return context;
+}
+
+// After the last test, destroys the shared context while its instance still
+// counts what the validation layer says: a leaked object is reported only
+// when the device goes, after every test's own check.
+class SharedGpuTeardown : public ::testing::Environment {
+public:
+  void TearDown() override
+  {
+    if (!sharedSlot()) return;
+    std::shared_ptr<gpu::VulkanInstance> instance = sharedSlot()->instance();
+    const int before = instance->validationMessages();
+    sharedSlot().reset();
+    EXPECT_EQ(instance->validationMessages(), before)
+        << "the Vulkan validation layer reported problems while the device was destroyed (see stderr)";
+  }
+};
+
+const ::testing::Environment* const teardown = ::testing::AddGlobalTestEnvironment(new SharedGpuTeardown);
+
+}  // namespace
+
 gpu::GpuContext& sharedGpu()
 {
-  static std::unique_ptr<gpu::GpuContext> context = [] {
+  if (!sharedSlot()) {
     gpu::GpuOptions options;
     options.validation = true;
-    return gpu::GpuContext::open(options);
-  }();
-  return *context;
+    sharedSlot() = gpu::GpuContext::open(options);
+  }
+  return *sharedSlot();
 }
 
 void GpuTest::SetUp()

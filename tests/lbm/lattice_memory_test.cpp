@@ -1,0 +1,91 @@
+// The layout's sizes, and the checks that a lattice fits a device: each limit
+// of the device, alone, turns an impossible grid into a usage error that names
+// that limit (before anything is allocated).
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "lbm/lattice_memory.hpp"
+
+namespace lbmshape {
+namespace {
+
+// A device with room for anything, whose limits each test lowers one at a time.
+gpu::DeviceDescription roomyDevice()
+{
+  gpu::DeviceDescription d;
+  d.name = "test device";
+  d.type = "discrete";
+  d.deviceLocalBytes = uint64_t(1) << 40;
+  d.maxStorageBufferRange = uint64_t(1) << 40;
+  d.maxTexelBufferElements = uint64_t(1) << 40;
+  d.maxAllocationBytes = uint64_t(1) << 40;
+  d.maxWorkgroupCount[0] = d.maxWorkgroupCount[1] = d.maxWorkgroupCount[2] = 1u << 30;
+  return d;
+}
+
+std::string fitError(const Extent3& extent, const gpu::DeviceDescription& device)
+{
+  try {
+    checkFitsDevice(latticeLayout(extent), device);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LatticeLayout, SizesFollowTheRowGroups)
+{
+  const LatticeLayout l = latticeLayout({33, 40, 27});
+  EXPECT_EQ(l.row, 36);                                   // padded to whole blocks of four cells
+  EXPECT_EQ(l.blocks, (36u * 40 * 27 / 4 + 15) / 16 * 16);  // and to a multiple of 16 blocks
+  EXPECT_EQ(l.copyBytes, l.blocks * 19 * 16);
+  uint64_t next = 0;
+  for (int g = 0; g < row_groups::count; ++g) {
+    EXPECT_EQ(l.groupOffsetBytes(g), next) << "group " << g;
+    EXPECT_EQ(l.groupOffsetBytes(g) % 256, 0u) << "every device accepts 256-byte binding offsets";
+    next += l.groupBytes(g);
+  }
+  EXPECT_EQ(next, l.copyBytes);
+}
+
+TEST(LatticeFit, AGridThatFitsPasses) { EXPECT_EQ(fitError({128, 128, 128}, roomyDevice()), ""); }
+
+TEST(LatticeFit, EachDeviceLimitIsNamed)
+{
+  const Extent3 grid{128, 128, 128};  // 2^21 cells: 152 MiB per lattice copy
+  struct Limit {
+    const char* what;
+    void (*lower)(gpu::DeviceDescription&);
+    const char* mentions;
+  };
+  const Limit limits[] = {
+      {"memory", [](gpu::DeviceDescription& d) { d.deviceLocalBytes = 256u << 20; }, "the device has 256.0 MiB"},
+      {"storage buffer range", [](gpu::DeviceDescription& d) { d.maxStorageBufferRange = 16u << 20; },
+       "a storage buffer may span at most 16.0 MiB"},
+      {"texel buffer", [](gpu::DeviceDescription& d) { d.maxTexelBufferElements = 1u << 20; },
+       "a texel buffer may hold at most 1048576"},
+      {"allocation", [](gpu::DeviceDescription& d) { d.maxAllocationBytes = 64u << 20; }, "in one allocation"},
+      {"workgroups", [](gpu::DeviceDescription& d) { d.maxWorkgroupCount[2] = 64; }, "more workgroups"},
+  };
+  for (const Limit& limit : limits) {
+    gpu::DeviceDescription device = roomyDevice();
+    limit.lower(device);
+    const std::string message = fitError(grid, device);
+    EXPECT_NE(message.find(limit.mentions), std::string::npos) << limit.what << ": " << message;
+    EXPECT_NE(message.find("128x128x128"), std::string::npos) << message;
+  }
+}
+
+TEST(LatticeFit, MoreCellsThanThirtyTwoBitIndicesIsNamed)
+{
+  EXPECT_NE(fitError({2000, 2000, 2000}, roomyDevice()).find("cells"), std::string::npos);
+}
+
+TEST(LatticeFit, BadExtentIsAUsageError)
+{
+  EXPECT_THROW(latticeLayout({0, 8, 8}), UsageError);
+  EXPECT_THROW(latticeLayout({8, -1, 8}), UsageError);
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -14,4 +14,9 @@ void info(const std::string& message);     // shown unless quiet
 void verbose(const std::string& message);  // shown with --verbose
 void warning(const std::string& message);  // always shown
 
+// A progress line (see core/progress.hpp): rewritten in place on a terminal
+// until endProgress() or the next message, one line each in a file.
+void progress(const std::string& line);
+void endProgress();
+
 }  // namespace lbmshape::log

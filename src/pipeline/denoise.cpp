@@ -5,6 +5,7 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/log.hpp"
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
@@ -50,14 +51,31 @@ nlohmann::json meshSummary(const TriangleMesh& mesh, const MeshTopology& t)
           {"volume", t.signedVolume}};
 }
 
+// Runs `count` steps in batches, so that a long run shows how far it is.
+// A batch is one submission: bigger batches save a little of lavapipe's
+// per-submission cost, and the field is the same whatever the batch size.
+void stepShowingProgress(LatticeSolver& solver, int count, Progress& progress, const char* part = "steps",
+                         double share = 1.0)
+{
+  constexpr int batch = 8;
+  progress.beginPart(part, count, share);
+  for (int done = 0; done < count;) {
+    const int now = std::min(batch, count - done);
+    interrupt::check("stopped after " + std::to_string(done) + " steps; nothing written");
+    solver.step(now);
+    progress.advance(now);
+    done += now;
+  }
+}
+
 // Runs the smoothing steps on `solver`, starting from `field`.
-Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& o)
+Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& o, Progress& progress)
 {
   switch (o.smoothing) {
   case Smoothing::Isotropic:
     solver.setUniformGamma(o.gamma);
     solver.initialize(field);
-    solver.step(o.steps);
+    stepShowingProgress(solver, o.steps, progress);
     return solver.field();
   case Smoothing::Anisotropic: {
     // Eq. 20 needs the change of X over each step, so the field comes back
@@ -65,22 +83,27 @@ Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& 
     solver.setUniformGamma(o.gamma);
     solver.initialize(field);
     Volume before = field, gamma(field.extent(), float(o.gamma));
+    progress.beginPart("steps", o.steps);
     for (int s = 0; s < o.steps; ++s) {
+      interrupt::check("stopped after " + std::to_string(s) + " steps; nothing written");
       solver.step(1);
       Volume after = solver.field();
       gamma = adaptive_gamma::paperRule(before, after, gamma, o.gamma);
       solver.setGammaPerCell(gamma);
       before = std::move(after);
+      progress.advance();
     }
     return before;
   }
   case Smoothing::PreserveFeatures: {
+    const int probeSteps = featureProbeSteps(o.gamma);
+    const double probeShare = double(probeSteps) / (probeSteps + o.steps);
     solver.setUniformGamma(o.gamma);
     solver.initialize(field);
-    solver.step(featureProbeSteps(o.gamma));
+    stepShowingProgress(solver, probeSteps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
     solver.initialize(field);
-    solver.step(o.steps);
+    stepShowingProgress(solver, o.steps, progress, "steps", 1.0 - probeShare);
     return solver.field();
   }
   }
@@ -123,10 +146,14 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  Volume field = clock.time("sdf", [&] { return signedDistance(mesh, frame); });
+  Volume field = clock.time("sdf", [&](Progress& progress) {
+    SignedDistanceOptions sdf;
+    sdf.progress = &progress;
+    return signedDistance(mesh, frame, sdf);
+  });
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
-  Volume smoothed = clock.time("lbm", [&] { return smooth(*solver, field, o); });
+  Volume smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, progress); });
   TriangleMesh result = clock.time("extract", [&] { return extractSurface(smoothed, frame); });
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(o.steps) +

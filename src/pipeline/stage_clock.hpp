@@ -2,11 +2,14 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/interrupt.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 
 namespace lbmshape {
@@ -15,9 +18,13 @@ class StageClock {
 public:
   // Runs `work`, records its time under `name`, and logs it (always when it
   // took over a second, so slow stages are never silent; else with --verbose).
+  // A stage running longer than a second shows a progress line meanwhile;
+  // `work` that takes a Progress& reports how far it is through it.
+  // Ctrl-C (see core/interrupt.hpp) is honoured before each stage starts.
   template <class Work>
   decltype(auto) time(const std::string& name, Work&& work)
   {
+    interrupt::check("stopped before the " + name + " stage");
     Stopwatch watch;
     struct Record {
       StageClock& clock;
@@ -25,7 +32,9 @@ public:
       Stopwatch& watch;
       ~Record() { clock.record(name, watch.ms()), clock.report(name, watch.ms()); }
     } record{*this, name, watch};
-    return std::forward<Work>(work)();
+    Progress progress(name);
+    if constexpr (std::is_invocable_v<Work, Progress&>) return std::forward<Work>(work)(progress);
+    else return std::forward<Work>(work)();
   }
 
   // Adds `ms` to the stage's total (stages repeated per frame accumulate).

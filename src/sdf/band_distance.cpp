@@ -7,15 +7,17 @@
 namespace lbmshape {
 
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
-                          std::vector<uint32_t>& nearest)
+                          std::vector<uint32_t>& nearest, Progress* progress, double progressWeight)
 {
   const Extent3 extent = frame.extent;
   const GridBlocks blocks(extent, 8);
+  if (progress) progress->beginPart("exact band", double(blocks.count()), progressWeight);
   const double band = bandVoxels * frame.voxel;
   size_t written = 0;
 #pragma omp parallel for schedule(dynamic, 4) reduction(+ : written)
   for (size_t b = 0; b < blocks.count(); ++b) {
     const CellRange r = blocks.range(b);
+    if (progress) progress->advance();
     // Every cell of the block is within halfDiagonal of its centre, so when
     // no triangle is within band + halfDiagonal of the centre, no cell of the
     // block is within band of the surface. Most blocks end here.

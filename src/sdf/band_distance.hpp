@@ -6,6 +6,7 @@
 
 #include "core/volume.hpp"
 #include "sdf/grid_frame.hpp"
+#include "core/progress.hpp"
 #include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
@@ -13,9 +14,10 @@ namespace lbmshape {
 // For every cell whose centre is within bandVoxels of the surface, writes
 // its exact distance (in voxels) to `distance` and its nearest triangle to
 // `nearest`; other cells are left untouched. Returns how many cells it wrote.
-// Cells it leaves are certainly farther than bandVoxels.
+// Cells it leaves are certainly farther than bandVoxels. Reports its blocks
+// to `progress` (if any) as a part of weight `progressWeight`.
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
-                          std::vector<uint32_t>& nearest);
+                          std::vector<uint32_t>& nearest, Progress* progress = nullptr, double progressWeight = 1.0);
 
 // Exact distances (and nearest triangles) for the cells on the grid's six
 // faces that have none yet. The far field only spreads triangles that some

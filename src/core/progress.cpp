@@ -1,0 +1,85 @@
+#include "core/progress.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+
+#include "core/log.hpp"
+
+namespace lbmshape {
+
+ProgressTiming ProgressTiming::current()
+{
+  if (const char* ms = std::getenv("LBMSHAPE_PROGRESS_MS")) {
+    const double value = std::max(0.0, std::atof(ms));
+    return {value, std::max(value, 1.0)};
+  }
+  // A terminal line is rewritten in place, so it can change often; a log
+  // file keeps every line, so it gets fewer.
+  if (isatty(STDERR_FILENO)) return {1000.0, 1000.0};
+  return {1000.0, 5000.0};
+}
+
+Progress::Progress(std::string stage) : stage_(std::move(stage))
+{
+  if (log::level() < log::Level::Normal) return;
+  const ProgressTiming timing = ProgressTiming::current();
+  reporter_ = std::thread([this, timing] {
+    std::unique_lock lock(mutex_);
+    double wait = timing.firstMs;
+    while (!wake_.wait_for(lock, std::chrono::duration<double, std::milli>(wait), [this] { return stopping_; })) {
+      const std::string text = line();
+      shown_ = true;
+      log::progress(text);
+      wait = timing.everyMs;
+    }
+  });
+}
+
+Progress::~Progress()
+{
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  if (reporter_.joinable()) reporter_.join();
+  if (shown_) log::endProgress();
+}
+
+void Progress::beginPart(const std::string& part, double units, double weight)
+{
+  std::lock_guard lock(mutex_);
+  if (partUnits_ > 0.0 || !part_.empty()) finishedWeight_ += partWeight_;
+  part_ = part;
+  partUnits_ = units;
+  partWeight_ = weight;
+  partDone_ = 0.0;
+}
+
+void Progress::advance(double units) { partDone_.fetch_add(units, std::memory_order_relaxed); }
+
+double Progress::fraction() const
+{
+  std::lock_guard lock(mutex_);
+  const double inPart = partUnits_ > 0.0 ? std::min(1.0, partDone_.load(std::memory_order_relaxed) / partUnits_) : 0.0;
+  return std::clamp(finishedWeight_ + partWeight_ * inPart, 0.0, 1.0);
+}
+
+// Called with mutex_ held.
+std::string Progress::line() const
+{
+  char text[160];
+  const double seconds = running_.ms() * 1e-3;
+  if (part_.empty()) {
+    std::snprintf(text, sizeof text, "%s... %.1f s", stage_.c_str(), seconds);
+  } else {
+    const double inPart = partUnits_ > 0.0 ? std::min(1.0, partDone_.load(std::memory_order_relaxed) / partUnits_) : 0.0;
+    const double done = std::clamp(finishedWeight_ + partWeight_ * inPart, 0.0, 1.0);
+    std::snprintf(text, sizeof text, "%s %3.0f%% (%s), %.1f s", stage_.c_str(), 100.0 * done, part_.c_str(), seconds);
+  }
+  return text;
+}
+
+}  // namespace lbmshape

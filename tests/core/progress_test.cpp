@@ -1,0 +1,106 @@
+// The progress line of long stages: silent for short ones and with --quiet,
+// a line saying how far the stage is once it has run past the delay.
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "core/log.hpp"
+#include "core/progress.hpp"
+
+namespace lbmshape {
+namespace {
+
+// Captures what the logger writes to std::cerr while it lives.
+class CapturedStderr {
+public:
+  CapturedStderr() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
+  ~CapturedStderr() { std::cerr.rdbuf(previous_); }
+  std::string text() const { return text_.str(); }
+
+private:
+  std::ostringstream text_;
+  std::streambuf* previous_;
+};
+
+class ProgressLine : public ::testing::Test {
+protected:
+  void SetUp() override { log::setLevel(log::Level::Normal); }
+  void TearDown() override
+  {
+    unsetenv("LBMSHAPE_PROGRESS_MS");
+    log::setLevel(log::Level::Normal);
+  }
+  static void sleepMs(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+};
+
+TEST_F(ProgressLine, WeightedPartsAddUpToTheWholeStage)
+{
+  Progress p("sdf");
+  EXPECT_DOUBLE_EQ(p.fraction(), 0.0);
+  p.beginPart("band", 10, 0.25);
+  p.advance(5);
+  EXPECT_DOUBLE_EQ(p.fraction(), 0.125);
+  p.beginPart("sign", 4, 0.75);
+  EXPECT_DOUBLE_EQ(p.fraction(), 0.25) << "the finished part counts whole";
+  p.advance(2);
+  EXPECT_DOUBLE_EQ(p.fraction(), 0.625);
+  p.advance(100);
+  EXPECT_DOUBLE_EQ(p.fraction(), 1.0) << "never past the end";
+}
+
+TEST_F(ProgressLine, AdvancesFromManyThreadsAddUp)
+{
+  Progress p("lbm");
+  p.beginPart("steps", 4000);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&] {
+      for (int i = 0; i < 1000; ++i) p.advance();
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_DOUBLE_EQ(p.fraction(), 1.0);
+}
+
+TEST_F(ProgressLine, ShortStageSaysNothing)
+{
+  CapturedStderr err;
+  {
+    Progress p("sdf");
+    p.beginPart("band", 1);
+    p.advance();
+  }
+  EXPECT_EQ(err.text(), "") << "the default delay is a second";
+}
+
+TEST_F(ProgressLine, LongStageSaysHowFarItIs)
+{
+  setenv("LBMSHAPE_PROGRESS_MS", "20", 1);
+  CapturedStderr err;
+  {
+    Progress p("lbm");
+    p.beginPart("steps", 4);
+    p.advance(1);
+    sleepMs(200);
+  }
+  const std::string text = err.text();
+  EXPECT_NE(text.find("lbmshape: lbm  25% (steps)"), std::string::npos) << text;
+}
+
+TEST_F(ProgressLine, QuietMeansNoLine)
+{
+  setenv("LBMSHAPE_PROGRESS_MS", "1", 1);
+  log::setLevel(log::Level::Quiet);
+  CapturedStderr err;
+  {
+    Progress p("lbm");
+    sleepMs(50);
+  }
+  EXPECT_EQ(err.text(), "");
+}
+
+}  // namespace
+}  // namespace lbmshape

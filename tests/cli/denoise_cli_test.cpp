@@ -107,13 +107,16 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
   testing::ScratchFolder folder;
   const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
   for (std::vector<std::string> extra : {std::vector<std::string>{"--gamma", "0"}, {"--gamma", "-1"}, {"--steps", "-2"},
-                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--noise", "-0.5"},
+                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--voxel", "0"}, {"--voxel", "nan"},
+                                         {"--voxel", "inf"}, {"--noise", "-0.5"},
                                          {"--anisotropic", "--preserve-features"}, {"--res", "64", "--voxel", "0.1"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());
     testing::CliResult r = testing::runLbmshape(args);
     EXPECT_EQ(r.exitCode, 2) << extra[0] << " " << r.err;
-    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    auto lines = testing::nonEmptyLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_NE(lines[0].find(extra[0]), std::string::npos) << "the message names the option: " << lines[0];
     EXPECT_FALSE(fs::exists(output));
   }
 }

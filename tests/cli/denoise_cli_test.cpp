@@ -169,7 +169,21 @@ TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
   };
   EXPECT_EQ(bytes(folder / "a.obj"), bytes(folder / "b.obj")) << "the same seed gives the same mesh";
   EXPECT_GT(compare(input, (folder / "a.obj").string())["mean"].get<double>(), 0.0);
-  EXPECT_EQ(testing::runLbmshape({"noise", input, (folder / "c.obj").string(), "--sigma", "-1"}).exitCode, 2);
+}
+
+TEST(NoiseCli, SigmaThatIsNotAFiniteSizeIsAUsageError)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const fs::path output = folder / "noisy.obj";
+  for (const char* sigma : {"-1", "nan", "inf", "-inf"}) {
+    testing::CliResult r = testing::runLbmshape({"noise", input, output.string(), "--sigma", sigma, "--seed", "1"});
+    EXPECT_EQ(r.exitCode, 2) << sigma << ": " << r.err;
+    auto lines = testing::nonEmptyLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0].rfind("lbmshape: error: --sigma must be a finite", 0), 0u) << lines[0];
+    EXPECT_FALSE(fs::exists(output)) << sigma;
+  }
 }
 
 }  // namespace

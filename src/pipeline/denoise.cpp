@@ -11,6 +11,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/stage_clock.hpp"
+#include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
 #include "surface/marching_cubes.hpp"
 
@@ -124,6 +125,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
   Volume field = clock.time("sdf", [&] { return signedDistance(mesh, frame); });
+  requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
   Volume smoothed = clock.time("lbm", [&] { return smooth(*solver, field, o); });

@@ -11,12 +11,15 @@ struct DenoiseArguments {
   std::string input, output;
   DenoiseOptions options;
   double voxel = 0.0;
+  const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
   bool anisotropic = false, preserveFeatures = false;
 };
 
 void runDenoise(const CommonOptions& common, DenoiseArguments& a)
 {
-  if (a.voxel > 0.0 || a.voxel < 0.0) a.options.grid.voxel = a.voxel;
+  // Whether --voxel was given, not its value, decides: a sentinel value
+  // would let --voxel 0 (or nan) fall back to --res instead of failing.
+  if (a.voxelOption->count() > 0) a.options.grid.voxel = a.voxel;
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   checkDenoiseOptions(a.options);  // before the device is opened
@@ -39,7 +42,7 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("input", a->input, "Mesh to smooth (.obj .ply .off .stl .gltf .glb)")->required();
   cmd->add_option("output", a->output, "Result, format by extension (.glb .gltf .obj .ply .off .stl)")->required();
   auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
-  cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
+  a->voxelOption = cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
   cmd->add_option("--steps", a->options.steps, "Lattice Boltzmann steps")->capture_default_str();
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "mesh/mesh_geometry.hpp"
@@ -17,7 +19,9 @@ struct NoiseArguments {
 
 void runNoise(const CommonOptions& common, const NoiseArguments& args)
 {
-  if (!(args.sigma >= 0.0)) throw UsageError("--sigma must be zero or positive");
+  // inf would pass a sign check and only fail at the writer, as an output error.
+  if (!(args.sigma >= 0.0) || !std::isfinite(args.sigma))
+    throw UsageError("--sigma must be a finite number, zero or positive");
   checkMeshDestination(args.output);
   const TriangleMesh mesh = readMesh(args.input);
   const double edge = meanEdgeLength(mesh);

@@ -12,6 +12,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/stage_clock.hpp"
+#include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
 #include "surface/marching_cubes.hpp"
 
@@ -151,6 +152,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
     sdf.progress = &progress;
     return signedDistance(mesh, frame, sdf);
   });
+  requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
   Volume smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, progress); });

@@ -1,8 +1,12 @@
 // lbmshape denoise, compare and noise as a user runs them: every bad input
 // has its exit code, a one-line message and leaves no output file; good runs
 // write meshes that the Khronos glTF-Validator accepts.
+#include <cmath>
 #include <fstream>
+#include <numbers>
+#include <sstream>
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -24,6 +28,7 @@ struct BadInput {
   int exitCode;
   // Prepares the folder; returns the input and output arguments.
   std::function<std::pair<std::string, std::string>(const fs::path&)> prepare;
+  const char* mentions = "";  // the message must contain this, if given
 };
 
 void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
@@ -32,6 +37,24 @@ std::string sphereObj(const fs::path& folder)
 {
   writeMesh(testing::icosphere(3), folder / "sphere.obj");
   return (folder / "sphere.obj").string();
+}
+
+// A grid of quads, (u, v) in [0, 1]^2, as triangles; `place` puts each grid
+// point in space. Corners a b / c d: triangles (a, b, d) and (a, d, c).
+std::string sheetObj(int n, const std::function<glm::dvec3(double u, double v)>& place)
+{
+  std::ostringstream obj;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const glm::dvec3 p = place(double(i) / n, double(j) / n);
+      obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
+      obj << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  return obj.str();
 }
 
 class DenoiseBadInput : public ::testing::TestWithParam<BadInput> {};
@@ -46,6 +69,7 @@ TEST_P(DenoiseBadInput, ExitCodeOneLineNoOutput)
   auto lines = testing::nonEmptyLines(r.err);
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_EQ(lines[0].rfind("lbmshape: error: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find(GetParam().mentions), std::string::npos) << lines[0];
   EXPECT_EQ(folder.entries(), before) << "no output, no temporary file left behind";
   EXPECT_TRUE(r.out.empty());
 }
@@ -86,6 +110,27 @@ INSTANTIATE_TEST_SUITE_P(
                    writeText(f / "flat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
                    return std::pair{(f / "flat.obj").string(), (f / "out.glb").string()};
                  }},
+        // Open sheets that are not flat: the winding number stays below 1/2
+        // everywhere, so nothing is inside. Before any smoothing, and the
+        // input is to blame, not the smoothing (exit 3, not 5).
+        BadInput{"open_sheet_bent_into_a_half_cylinder", 3,
+                 [](const fs::path& f) {
+                   // Triangles facing the axis: the concave side is outside.
+                   writeText(f / "gutter.obj", sheetObj(16, [](double u, double v) {
+                               const double a = std::numbers::pi * (1.0 - u);
+                               return glm::dvec3(std::cos(a), std::sin(a), 4.0 * v);
+                             }));
+                   return std::pair{(f / "gutter.obj").string(), (f / "out.glb").string()};
+                 },
+                 "gutter.obj: it encloses no volume"},
+        BadInput{"open_wavy_square", 3,
+                 [](const fs::path& f) {
+                   writeText(f / "square.obj", sheetObj(16, [](double u, double v) {
+                               return glm::dvec3(u, v, 0.01 * std::sin(7.0 * u) * std::cos(5.0 * v));
+                             }));
+                   return std::pair{(f / "square.obj").string(), (f / "out.glb").string()};
+                 },
+                 "square.obj: it encloses no volume"},
         BadInput{"missing_output_folder", 4,
                  [](const fs::path& f) { return std::pair{sphereObj(f), (f / "no" / "such" / "out.glb").string()}; }},
         BadInput{"output_folder_is_a_file", 4,
@@ -107,13 +152,16 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
   testing::ScratchFolder folder;
   const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
   for (std::vector<std::string> extra : {std::vector<std::string>{"--gamma", "0"}, {"--gamma", "-1"}, {"--steps", "-2"},
-                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--noise", "-0.5"},
+                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--voxel", "0"}, {"--voxel", "nan"},
+                                         {"--voxel", "inf"}, {"--noise", "-0.5"},
                                          {"--anisotropic", "--preserve-features"}, {"--res", "64", "--voxel", "0.1"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());
     testing::CliResult r = testing::runLbmshape(args);
     EXPECT_EQ(r.exitCode, 2) << extra[0] << " " << r.err;
-    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    auto lines = testing::nonEmptyLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_NE(lines[0].find(extra[0]), std::string::npos) << "the message names the option: " << lines[0];
     EXPECT_FALSE(fs::exists(output));
   }
 }
@@ -166,7 +214,21 @@ TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
   };
   EXPECT_EQ(bytes(folder / "a.obj"), bytes(folder / "b.obj")) << "the same seed gives the same mesh";
   EXPECT_GT(compare(input, (folder / "a.obj").string())["mean"].get<double>(), 0.0);
-  EXPECT_EQ(testing::runLbmshape({"noise", input, (folder / "c.obj").string(), "--sigma", "-1"}).exitCode, 2);
+}
+
+TEST(NoiseCli, SigmaThatIsNotAFiniteSizeIsAUsageError)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const fs::path output = folder / "noisy.obj";
+  for (const char* sigma : {"-1", "nan", "inf", "-inf"}) {
+    testing::CliResult r = testing::runLbmshape({"noise", input, output.string(), "--sigma", sigma, "--seed", "1"});
+    EXPECT_EQ(r.exitCode, 2) << sigma << ": " << r.err;
+    auto lines = testing::nonEmptyLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0].rfind("lbmshape: error: --sigma must be a finite", 0), 0u) << lines[0];
+    EXPECT_FALSE(fs::exists(output)) << sigma;
+  }
 }
 
 }  // namespace

@@ -45,6 +45,28 @@ TEST_F(Denoise, SphereStaysAClosedSphereWhereItWas)
   EXPECT_EQ(r.report["steps"], 7);
 }
 
+// The output is in the input's own coordinates and units: a small sphere far
+// from the origin comes back where it was, the same size.
+TEST_F(Denoise, ResultStaysInTheInputsCoordinates)
+{
+  const glm::dvec3 centre(1000.0, -50.0, 3.0);
+  const double radius = 7.0;
+  DenoiseOptions options;
+  options.grid.resolution = 48;
+  const DenoiseResult r = run(testing::icosphere(4, radius, centre), options);
+  ASSERT_FALSE(r.mesh.positions.empty());
+  const Bounds box = bounds(r.mesh);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(box.centre()[axis], centre[axis], 0.5 * voxel(r)) << "axis " << axis;
+    EXPECT_NEAR(0.5 * box.size()[axis], radius, voxel(r)) << "axis " << axis;
+  }
+  double meanRadius = 0.0;
+  for (const glm::dvec3& p : r.mesh.positions) meanRadius += glm::length(p - centre);
+  meanRadius /= double(r.mesh.positions.size());
+  EXPECT_NEAR(meanRadius, radius, 0.5 * voxel(r));
+  EXPECT_NEAR(voxel(r), 2.0 * radius / (48 - 1 - 2 * 4.0), 1e-9) << "the voxel is in the input's units";
+}
+
 TEST_F(Denoise, TorusKeepsItsHoleInEveryMode)
 {
   const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 64, 32);

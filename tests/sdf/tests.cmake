@@ -1,4 +1,5 @@
 lbmshape_test(sdf_tests
+  ${CMAKE_CURRENT_LIST_DIR}/grid_frame_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sdf_fixtures.cpp

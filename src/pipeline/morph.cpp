@@ -97,6 +97,20 @@ double bandError(const Volume& X, const Volume& target)
   return worst;
 }
 
+// "5 to 9, 12": frame numbers in ascending order, runs shortened.
+std::string frameRanges(const std::vector<int>& frames)
+{
+  std::string text;
+  for (size_t i = 0; i < frames.size();) {
+    size_t end = i;
+    while (end + 1 < frames.size() && frames[end + 1] == frames[end] + 1) ++end;
+    text += (text.empty() ? "" : ", ") + std::to_string(frames[i]);
+    if (end > i) text += " to " + std::to_string(frames[end]);
+    i = end + 1;
+  }
+  return text;
+}
+
 }  // namespace
 
 void checkMorphOptions(const MorphOptions& o)
@@ -105,8 +119,11 @@ void checkMorphOptions(const MorphOptions& o)
   if (!(o.cs > 0.0) || !std::isfinite(o.cs)) throw UsageError("--cs must be a positive morphing speed (the paper uses 0.1 to 0.3)");
   if (o.frames < 2) throw UsageError("--frames must be at least 2 (the source and the result)");
   if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
-  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1");
-  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1");
+  // A morph of no steps would only repeat the source; denoise --steps 0 is
+  // the way to see a mesh on the grid unchanged.
+  const char* noSteps = " (with 0 steps every frame would be the source; lbmshape denoise --steps 0 shows a mesh on the grid)";
+  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1" + std::string(noSteps));
+  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1" + std::string(noSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
   if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
   if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
@@ -185,6 +202,11 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
     }
   }
   std::vector<TriangleMesh> meshes = writer.finish();
+  const std::vector<int> emptyFrames = writer.emptyFrames();
+  if (!emptyFrames.empty())
+    log::warning((emptyFrames.size() == 1 ? "frame " : "frames ") + frameRanges(emptyFrames) +
+                 (emptyFrames.size() == 1 ? " has" : " have") + " no surface: the shape vanished on its way (source and target barely overlap) and came back; "
+                 "their files hold no triangles");
   clock.record("lbm", lbmMs);
   clock.record("download", downloadMs);
   clock.record("extract", writer.extractMs());
@@ -211,6 +233,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
           {"steps", steps},
           {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
           {"max_band_error_voxels", lastError},
+          {"empty_frames", emptyFrames},
           {"gamma", o.gamma},
           {"cs", o.cs},
           {"noise", o.noise.amplitude},

@@ -14,6 +14,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
+#include "support/glb_json.hpp"
 #include "support/gltf_validator.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
@@ -24,16 +25,6 @@ namespace lbmshape {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The JSON chunk of a .glb file.
-nlohmann::json glbJson(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), {});
-  uint32_t length = 0;
-  std::memcpy(&length, bytes.data() + 12, 4);
-  return nlohmann::json::parse(bytes.substr(20, length));
-}
 
 class MorphCli : public ::testing::Test {
 protected:
@@ -59,7 +50,7 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
   }
   const auto v = testing::validateGltf(out / "morph.glb");
   EXPECT_TRUE(v.passed()) << v;
-  const nlohmann::json gltf = glbJson(out / "morph.glb");
+  const nlohmann::json gltf = testing::glbJson(out / "morph.glb");
   EXPECT_EQ(gltf["nodes"].size(), 5u);
   ASSERT_EQ(gltf["animations"].size(), 1u);
   double end = 0.0;
@@ -150,7 +141,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
                       BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
                       BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
-                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}}),
+                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}},
+                      // 0 is a value to refuse, not "the default": a morph of no steps only repeats the source.
+                      BadMorph{"zero_steps", 2, {"SPHERE", "TORUS", "OUT", "--steps", "0"}},
+                      BadMorph{"zero_steps_per_frame", 2, {"SPHERE", "TORUS", "OUT", "--steps-per-frame", "0"}},
+                      BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)

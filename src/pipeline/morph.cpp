@@ -15,6 +15,7 @@
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "pipeline/frame_writer.hpp"
+#include "pipeline/interruptible_steps.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "sdf/signed_distance.hpp"
 
@@ -171,16 +172,20 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   });
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames);
+  InterruptibleSteps stepper(*solver, o.stepsPerBatch);
+  const auto whatWasDone = [&] {
+    return std::to_string(writer.framesWritten()) + " complete frames in " + folder.string();
+  };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
   double lastError = 0.0;
   Stopwatch sinceProgress, running;
   std::shared_ptr<const Volume> current;
   for (int k = 0; k < o.frames; ++k) {
-    interrupt::check(std::to_string(writer.framesWritten()) + " complete frames in " + folder.string());
+    interrupt::check(whatWasDone());
     if (!convergedAt) {
       Stopwatch lbm;
-      solver->step(schedule[size_t(k)] - solver->stepsTaken());
+      stepper.advanceTo(schedule[size_t(k)], whatWasDone);
       lbmMs += lbm.ms();
       Stopwatch download;
       current = std::make_shared<const Volume>(solver->field());

@@ -148,34 +148,91 @@ INSTANTIATE_TEST_SUITE_P(
                       BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
-TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
+// lbmshape started in the background, to be interrupted.
+pid_t spawnLbmshape(std::vector<std::string> args)
 {
-  const fs::path out = folder / "frames";
-  std::vector<std::string> args = {testing::lbmshapeBinary(), "-q", "morph", sphere, torus, out.string(), "--res", "64",
-                                   "--frames", "400", "--format", "obj", "--no-animation"};
+  args.insert(args.begin(), testing::lbmshapeBinary());
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
-  // Wait for a few frames, then press Ctrl-C.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "frame_0003.obj") && std::chrono::steady_clock::now() < deadline)
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  return pid;
+}
+
+bool waitForFile(const fs::path& file, std::chrono::seconds limit)
+{
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!fs::exists(file) && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  kill(pid, SIGINT);
+  return fs::exists(file);
+}
+
+// The wait status of `pid`, killing it if it is still running after `limit`
+// (a test that fails must not hang).
+int waitForExit(pid_t pid, std::chrono::seconds limit)
+{
+  const auto deadline = std::chrono::steady_clock::now() + limit;
   int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ADD_FAILURE() << "still running after " << limit.count() << " s";
+      return status;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return status;
+}
+
+// Only complete frame files, each readable; returns how many.
+int expectOnlyCompleteFrames(const fs::path& folder)
+{
   int frames = 0;
-  for (const auto& entry : fs::directory_iterator(out)) {
+  for (const auto& entry : fs::directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
     EXPECT_EQ(name.rfind("frame_", 0), 0u) << "only frame files, no temporary ones: " << name;
     EXPECT_NO_THROW(readMesh(entry.path())) << name;
     ++frames;
   }
+  return frames;
+}
+
+TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
+{
+  const fs::path out = folder / "frames";
+  const pid_t pid = spawnLbmshape(
+      {"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "400", "--format", "obj", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  waitForFile(out / "frame_0003.obj", std::chrono::seconds(60));  // a few frames, then Ctrl-C
+  kill(pid, SIGINT);
+  const int status = waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const int frames = expectOnlyCompleteFrames(out);
   EXPECT_GE(frames, 4);
   EXPECT_LT(frames, 400) << "it stopped";
+}
+
+// Two frames thousands of steps apart: Ctrl-C is checked between batches of
+// steps inside a frame, not only between frames, so it stops at once.
+TEST_F(MorphCli, CtrlCStopsALongFrameAtOnce)
+{
+  const fs::path out = folder / "frames";
+  const pid_t pid = spawnLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "2",
+                                   "--steps", "50000", "--format", "obj", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForFile(out / "frame_0000.obj", std::chrono::seconds(60)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // well inside the long frame
+  kill(pid, SIGINT);
+  const auto pressed = std::chrono::steady_clock::now();
+  const int status = waitForExit(pid, std::chrono::seconds(20));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pressed).count();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_LT(seconds, 5.0) << "50000 steps take minutes; a batch a fraction of a second";
+  EXPECT_EQ(expectOnlyCompleteFrames(out), 1);
 }
 
 class JobsFile : public MorphCli {

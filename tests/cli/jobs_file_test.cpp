@@ -83,6 +83,32 @@ TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
   EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
 }
 
+// The jobs of one run share one device, opened once (-v logs "device:" when
+// it opens). A morph creates its output folder, parents and all; a
+// denoise's folder must exist.
+TEST_F(JobsFile, JobsShareOneDeviceAndMorphCreatesItsFolder)
+{
+  auto jobs = nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "smooth.obj"}, {"res", 16}},
+       {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "new/nested/frames"},
+        {"res", 16}, {"frames", 2}},
+       {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "no_such_folder/smooth.obj"}, {"res", 16}}});
+  testing::CliResult r = testing::runLbmshape({"-v", "run", write(jobs).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  const auto lines = testing::nonEmptyLines(r.err);
+  EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                          [](const std::string& l) { return l.rfind("lbmshape: device: ", 0) == 0; }),
+            1)
+      << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(report["results"][0]["ok"].get<bool>());
+  EXPECT_TRUE(report["results"][1]["ok"].get<bool>());
+  EXPECT_TRUE(fs::exists(folder / "new" / "nested" / "frames" / "frame_0001.glb"));
+  EXPECT_EQ(report["results"][2]["exit_code"], 4);
+  EXPECT_NE(report["results"][2]["error"].get<std::string>().find("does not exist"), std::string::npos)
+      << report["results"][2]["error"];
+}
+
 // Options of the wrong JSON type, unknown keys and missing paths: each is a
 // usage error of its own job, naming the key, and the other jobs still run.
 struct JobCase {

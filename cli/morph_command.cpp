@@ -10,14 +10,17 @@ struct MorphArguments {
   MorphOptions options;
   double voxel = 0.0;
   int stepsPerFrame = 0, steps = 0;
+  // Whether each option was given at all: "--steps 0" is a value to check
+  // (and refuse), not the same as no --steps.
+  CLI::Option *voxelGiven = nullptr, *stepsPerFrameGiven = nullptr, *stepsGiven = nullptr;
   bool noAnimation = false;
 };
 
 void runMorph(const CommonOptions& common, MorphArguments& a)
 {
-  if (a.voxel != 0.0) a.options.grid.voxel = a.voxel;
-  if (a.stepsPerFrame != 0) a.options.stepsPerFrame = a.stepsPerFrame;
-  if (a.steps != 0) a.options.steps = a.steps;
+  if (a.voxelGiven->count()) a.options.grid.voxel = a.voxel;
+  if (a.stepsPerFrameGiven->count()) a.options.stepsPerFrame = a.stepsPerFrame;
+  if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
   checkMorphOptions(a.options);  // before the device is opened
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
@@ -39,7 +42,7 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("target", a->target, "Mesh to end at")->required();
   cmd->add_option("output", a->folder, "Folder for frame_0000.glb ... and morph.glb")->required();
   auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
-  cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
+  a->voxelGiven = cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around both meshes")->capture_default_str();
   cmd->add_option("--align", a->options.align, "Place the target: none, center (on the source), fit (center and scale)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, Alignment>{{"none", Alignment::None},
@@ -50,8 +53,9 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--cs", a->options.cs, "Morphing speed Cs of the force Cs (X_target - X)")->capture_default_str();
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
   cmd->add_option("--frames", a->options.frames, "Frames, the source and the result included")->capture_default_str();
-  auto* perFrame = cmd->add_option("--steps-per-frame", a->stepsPerFrame, "Lattice steps between frames (default 1)");
-  cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames")->excludes(perFrame);
+  a->stepsPerFrameGiven = cmd->add_option("--steps-per-frame", a->stepsPerFrame, "Lattice steps between frames (default 1)");
+  a->stepsGiven = cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames (at least 1)")
+                      ->excludes(a->stepsPerFrameGiven);
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/log.hpp"
+#include "job_arguments.hpp"
 #include "mesh_commands.hpp"
 
 namespace lbmshape::cli {
@@ -17,13 +18,6 @@ namespace fs = std::filesystem;
 struct RunArguments {
   std::string jobsFile;
   bool failFast = false;
-};
-
-// The positional arguments of each command, in order; they are paths,
-// relative to the jobs file.
-const std::map<std::string, std::vector<std::string>> positionals = {
-    {"denoise", {"input", "output"}},
-    {"morph", {"source", "target", "output"}},
 };
 
 nlohmann::json readJobs(const fs::path& file)
@@ -40,36 +34,7 @@ nlohmann::json readJobs(const fs::path& file)
   return jobs;
 }
 
-// The command line a job stands for: the command, its positional paths
-// (relative to the jobs file's folder), then every other key as --key.
-std::vector<std::string> commandLine(const nlohmann::json& job, const fs::path& base)
-{
-  if (!job.is_object()) throw UsageError("a job must be a JSON object");
-  if (!job.contains("command") || !job["command"].is_string()) throw UsageError("a job needs a \"command\"");
-  const std::string command = job["command"];
-  auto known = positionals.find(command);
-  if (known == positionals.end()) throw UsageError("unknown command \"" + command + "\" (use denoise or morph)");
-  std::vector<std::string> args = {command};
-  for (const auto& name : known->second) {
-    if (!job.contains(name) || !job[name].is_string())
-      throw UsageError(command + " job needs \"" + name + "\" (a path)");
-    fs::path p = job[name].get<std::string>();
-    args.push_back((p.is_absolute() ? p : base / p).string());
-  }
-  for (const auto& [key, value] : job.items()) {
-    if (key == "command" || std::find(known->second.begin(), known->second.end(), key) != known->second.end()) continue;
-    if (value.is_boolean()) {
-      if (value.get<bool>()) args.push_back("--" + key);
-    } else if (value.is_number() || value.is_string()) {
-      args.push_back("--" + key);
-      args.push_back(value.is_string() ? value.get<std::string>() : value.dump());
-    } else if (!value.is_null()) {
-      throw UsageError("option \"" + key + "\" must be a number, a string or true/false");
-    }
-  }
-  return args;
-}
-
+// The command and the first paths, to name a job in the log.
 std::string describe(const std::vector<std::string>& args)
 {
   std::string s;
@@ -77,8 +42,9 @@ std::string describe(const std::vector<std::string>& args)
   return s;
 }
 
-// Runs one job through the same command definitions as the command line.
-nlohmann::json runJob(const std::vector<std::string>& args, const CommonOptions& common)
+// Runs one job through the same command definitions as the command line;
+// `what` gets the job's command and paths, for the log.
+nlohmann::json runJob(const nlohmann::json& job, const fs::path& base, const CommonOptions& common, std::string& what)
 {
   CommonOptions jobOptions = common;  // shares the opened device
   nlohmann::json report;
@@ -88,6 +54,9 @@ nlohmann::json runJob(const std::vector<std::string>& args, const CommonOptions&
   app.require_subcommand(1);
   addDenoiseCommand(app, jobOptions);
   addMorphCommand(app, jobOptions);
+  const std::vector<std::string> args = jobCommandLine(job, base, app);
+  what += " (" + describe(args) + ")";
+  log::info(what + "...");
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
   app.parse(reversed);
   return report;
@@ -107,11 +76,8 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     std::string what = "job " + std::to_string(i + 1);
     try {
       interrupt::check(std::to_string(i) + " of " + std::to_string(jobs.size()) + " jobs done");
-      auto args = commandLine(jobs[i], base);
-      what += " (" + describe(args) + ")";
-      result["command"] = args[0];
-      log::info(what + "...");
-      result["report"] = runJob(args, common);
+      if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string()) result["command"] = jobs[i]["command"];
+      result["report"] = runJob(jobs[i], base, common, what);
       result["ok"] = true;
     } catch (const Interrupted&) {
       throw;

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/error.hpp"
+#include "core/temporary_files.hpp"
 
 namespace lbmshape {
 namespace {
@@ -56,6 +57,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
     if (fd >= 0) {
       ::close(fd);
       temporary_ = std::move(candidate);
+      ticket_ = temporary_files::remember(temporary_);  // a second Ctrl-C ends the process without unwinding
       return;
     }
     if (errno != EEXIST) throw OutputError(failure(target_, std::strerror(errno)));
@@ -68,6 +70,7 @@ AtomicFile::~AtomicFile()
   if (committed_ || temporary_.empty()) return;
   std::error_code ec;
   std::filesystem::remove(temporary_, ec);  // nothing more to do if it is already gone
+  temporary_files::forget(ticket_);
 }
 
 void AtomicFile::commit()
@@ -78,6 +81,7 @@ void AtomicFile::commit()
   std::filesystem::rename(temporary_, target_, ec);
   if (ec) throw OutputError(failure(target_, ec.message()));
   committed_ = true;
+  temporary_files::forget(ticket_);
   // The rename itself reaches the disk with the folder's own metadata; if
   // that cannot be forced the file is still complete, only perhaps not yet
   // durable, so this is not an error.

@@ -2,7 +2,9 @@
 // beside the target, and commit() renames it over the target, which is atomic
 // on one file system: a crash, a full disk or an exception half way through a
 // write never leaves a truncated file under the target's name, and readers of
-// the target see either the old content or the new.
+// the target see either the old content or the new. A second Ctrl-C, which
+// ends the process without unwinding, removes the temporary file too
+// (temporary_files.hpp).
 #pragma once
 
 #include <filesystem>
@@ -33,6 +35,7 @@ private:
   std::filesystem::path target_;
   std::filesystem::path temporary_;
   bool committed_ = false;
+  int ticket_ = -1;  // in temporary_files, until committed or removed
 };
 
 }  // namespace lbmshape

@@ -1,6 +1,8 @@
 // Ctrl-C as a request: the first SIGINT sets a flag that long jobs check
-// between frames and stages, so they stop with only complete files written;
-// a second SIGINT ends the process at once, as usual.
+// between frames, stages and batches of lattice steps, so they stop within a
+// fraction of a second with only complete files written; a second SIGINT
+// ends the process at once, as usual, after removing the temporary files of
+// writes under way (temporary_files.hpp).
 #pragma once
 
 #include <string>

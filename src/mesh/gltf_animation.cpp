@@ -50,7 +50,9 @@ void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, con
   if (float(double(frames.size()) / fps) <= float(double(frames.size() - 1) / fps))
     throw UsageError(prefix + std::to_string(frames.size()) + " frames at " + std::to_string(fps) +
                      " per second are too many to time in single precision");
-  for (size_t i = 0; i < frames.size(); ++i) requireWritable(frames[i], path, "frame " + std::to_string(i));
+  // A frame may be empty (a morph through nothing): its node has no mesh.
+  for (size_t i = 0; i < frames.size(); ++i)
+    requireWritable(frames[i], path, "frame " + std::to_string(i), EmptyMesh::Allowed);
 
   AtomicFile file(path);
   GltfBuilder builder;

@@ -14,7 +14,8 @@ namespace lbmshape {
 // Writes `frames` to a .gltf or .glb file. Node i (named "frame i") has a
 // `scale` channel with STEP interpolation: 1 from i/fps until (i+1)/fps, 0
 // before and after, the last frame staying until the end at frames/fps
-// seconds. Without the animation playing (a still viewer), frame 0 shows.
+// seconds. Without the animation playing (a still viewer), frame 0 shows. A
+// frame without triangles is a node without a mesh: nothing shows in its turn.
 // Written atomically, like writeMesh(). Throws UsageError for an unknown
 // extension, no frames or a frame rate that is not positive, and OutputError
 // as writeMesh() does (naming the frame that cannot be written).

@@ -86,6 +86,7 @@ int GltfBuilder::addFloatAccessor(const std::vector<float>& values, int type, bo
 
 int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
 {
+  if (mesh.triangles.empty()) return -1;
   std::vector<float> positions;
   positions.reserve(3 * mesh.positions.size());
   for (const auto& p : mesh.positions) positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
@@ -131,7 +132,14 @@ void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile&
   const bool binary = format == MeshFormat::Glb;
   std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
   tinygltf::TinyGLTF writer;
-  const bool ok = out && writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, binary);
+  const tinygltf::Model* toWrite = &model;
+  tinygltf::Model withoutBuffer;  // a file of no surface has no data
+  if (model.buffers.size() == 1 && model.buffers[0].data.empty()) {
+    withoutBuffer = model;
+    withoutBuffer.buffers.clear();
+    toWrite = &withoutBuffer;
+  }
+  const bool ok = out && writer.WriteGltfSceneToStream(toWrite, out, /*prettyPrint=*/!binary, binary);
   out.close();
   if (!ok || !out)
     throw OutputError("cannot write " + file.target().string() + ": writing the file failed (is the disk full?)");

@@ -20,9 +20,12 @@ public:
 
   // A mesh of one TRIANGLES primitive: POSITION (float, with min/max),
   // NORMAL (float, unit length: the mesh's own normals where they are
-  // usable, else area-weighted ones), uint32 indices. Returns its index.
+  // usable, else area-weighted ones), uint32 indices. Returns its index, or
+  // -1 for a mesh without triangles: glTF has no empty meshes (nor empty
+  // accessors), so nothing is added and the node stays without a mesh.
   int addMesh(const TriangleMesh& mesh, const std::string& name);
-  // A node showing `mesh`, made a root of the (single) scene; returns its index.
+  // A node showing `mesh` (none if -1), made a root of the (single) scene;
+  // returns its index.
   int addNode(int mesh, const std::string& name, std::vector<double> scale = {});
   // A float accessor over `values` (count x components of `type`), in its
   // own buffer view; min/max are filled in when `withBounds`.
@@ -37,7 +40,8 @@ private:
 };
 
 // Writes the model to file.temporaryPath() as a .glb, or as a .gltf with its
-// buffer embedded (a data URI) so the file stands alone. Throws OutputError
+// buffer embedded (a data URI) so the file stands alone; a model that holds no
+// data at all is written without a buffer (glTF forbids empty ones). Throws OutputError
 // naming file.target().
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file);
 

@@ -28,10 +28,10 @@ void checkMeshDestination(const std::filesystem::path& path)
   AtomicFile probe(path);  // created and, uncommitted, removed again
 }
 
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path)
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty)
 {
   const auto format = outputFormat(path);
-  requireWritable(mesh, path);
+  requireWritable(mesh, path, "the mesh", empty);
   AtomicFile file(path);
   switch (format) {
     case MeshFormat::Obj: writeObj(mesh, file); break;

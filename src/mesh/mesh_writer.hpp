@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "mesh/triangle_mesh.hpp"
+#include "mesh/writable_mesh.hpp"
 
 namespace lbmshape {
 
@@ -18,8 +19,12 @@ namespace lbmshape {
 // of that name is replaced only once the new one is fully written.
 // Throws UsageError for an unknown extension, before anything is written,
 // and OutputError naming the path when the folder is missing or unwritable,
-// the disk is full, or the mesh cannot be written (no triangles, NaN).
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
+// the disk is full, or the mesh cannot be written (NaN; no triangles unless
+// `empty` allows it).
+// A mesh without triangles, where allowed, is a valid file of no surface in
+// every format: glTF has no empty meshes, so there it is one node without a
+// mesh.
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused);
 
 // The checks writeMesh makes before writing, for commands to make before
 // their work: UsageError for an unknown extension, OutputError for a missing

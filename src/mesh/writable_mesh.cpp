@@ -5,10 +5,11 @@
 
 namespace lbmshape {
 
-void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what)
+void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what,
+                     EmptyMesh empty)
 {
   const std::string prefix = "cannot write " + path.string() + ": " + what;
-  if (mesh.triangles.empty()) throw OutputError(prefix + " has no triangles");
+  if (mesh.triangles.empty() && empty == EmptyMesh::Refused) throw OutputError(prefix + " has no triangles");
   for (const auto& t : mesh.triangles)
     if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size())
       throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");

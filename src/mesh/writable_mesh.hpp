@@ -8,9 +8,16 @@
 
 namespace lbmshape {
 
-// Throws OutputError ("cannot write <path>: <what> has no triangles", a bad
-// index, or a NaN/infinite coordinate): such a mesh would make an invalid file.
-// `what` names the mesh in the message, e.g. "the mesh" or "frame 3".
-void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what = "the mesh");
+// Whether a mesh without triangles may be written. Usually it is a mistake
+// (a denoised mesh that vanished); a morph's frame may be empty while the
+// shape passes through nothing, and is written as a file with no triangles.
+enum class EmptyMesh { Refused, Allowed };
+
+// Throws OutputError ("cannot write <path>: <what> has no triangles" unless
+// `empty` allows it, a bad index, or a NaN/infinite coordinate): such a mesh
+// would make an invalid file. `what` names the mesh in the message, e.g.
+// "the mesh" or "frame 3".
+void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what = "the mesh",
+                     EmptyMesh empty = EmptyMesh::Refused);
 
 }  // namespace lbmshape

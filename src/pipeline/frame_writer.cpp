@@ -13,7 +13,7 @@ constexpr size_t queueCapacity = 2;
 }
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount)
-    : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)),
+    : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
       digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size())))
 {
   thread_ = std::thread([this] { run(); });
@@ -57,6 +57,12 @@ std::vector<TriangleMesh> FrameWriter::finish()
   return std::move(meshes_);
 }
 
+std::vector<int> FrameWriter::emptyFrames() const
+{
+  std::lock_guard lock(mutex_);
+  return emptyFrames_;
+}
+
 int FrameWriter::framesWritten() const
 {
   std::lock_guard lock(mutex_);
@@ -94,17 +100,20 @@ void FrameWriter::run()
         mesh = meshes_.back();
       } else {
         mesh = extractSurface(*job.second, grid_);
-        if (mesh.triangles.empty())
-          throw NumericalError("frame " + std::to_string(job.first) +
-                               " has no surface: the shape vanished (where source and target barely overlap, their "
-                               "blend has no inside); place them to overlap (--align) or use a larger --cs");
       }
+      const bool empty = mesh.triangles.empty();
+      if (empty && job.first == frameCount_ - 1)
+        throw NumericalError("frame " + std::to_string(job.first) +
+                             ", the last, has no surface: the morph ended with no inside at all, on its way from "
+                             "the source to a target it does not overlap; give it more --steps or a larger --cs, "
+                             "or place the shapes to overlap with --align");
       const double extractMs = extract.ms();
       Stopwatch write;
-      writeMesh(mesh, framePath(job.first));
+      writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed);
       const double writeMs = write.ms();
       previousField = job.second;
       std::lock_guard lock(mutex_);
+      if (empty) emptyFrames_.push_back(job.first);
       meshes_.push_back(std::move(mesh));
       extractMs_ += extractMs;
       writeMs_ += writeMs;

@@ -39,6 +39,13 @@ public:
   // order. Rethrows an error of the writer thread.
   std::vector<TriangleMesh> finish();
 
+  // A frame may have no surface where the shape passes through nothing on
+  // its way (source and target apart); it is written as a file with no
+  // triangles. Only the last frame must have a surface: without one the
+  // morph has failed, and the writer stops with a NumericalError instead of
+  // writing it.
+  std::vector<int> emptyFrames() const;
+
   int framesWritten() const;
   double extractMs() const;
   double writeMs() const;
@@ -50,6 +57,7 @@ private:
   GridFrame grid_;
   std::filesystem::path folder_;
   std::string extension_;
+  int frameCount_;
   int digits_;
 
   mutable std::mutex mutex_;
@@ -59,6 +67,7 @@ private:
   bool busy_ = false;
   std::exception_ptr error_;
   std::vector<TriangleMesh> meshes_;
+  std::vector<int> emptyFrames_;
   double extractMs_ = 0.0, writeMs_ = 0.0;
   std::thread thread_;
 };

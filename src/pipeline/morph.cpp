@@ -15,7 +15,9 @@
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "pipeline/frame_writer.hpp"
+#include "pipeline/interruptible_steps.hpp"
 #include "pipeline/stage_clock.hpp"
+#include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
 
 namespace lbmshape {
@@ -97,6 +99,20 @@ double bandError(const Volume& X, const Volume& target)
   return worst;
 }
 
+// "5 to 9, 12": frame numbers in ascending order, runs shortened.
+std::string frameRanges(const std::vector<int>& frames)
+{
+  std::string text;
+  for (size_t i = 0; i < frames.size();) {
+    size_t end = i;
+    while (end + 1 < frames.size() && frames[end + 1] == frames[end] + 1) ++end;
+    text += (text.empty() ? "" : ", ") + std::to_string(frames[i]);
+    if (end > i) text += " to " + std::to_string(frames[end]);
+    i = end + 1;
+  }
+  return text;
+}
+
 }  // namespace
 
 void checkMorphOptions(const MorphOptions& o)
@@ -105,8 +121,11 @@ void checkMorphOptions(const MorphOptions& o)
   if (!(o.cs > 0.0) || !std::isfinite(o.cs)) throw UsageError("--cs must be a positive morphing speed (the paper uses 0.1 to 0.3)");
   if (o.frames < 2) throw UsageError("--frames must be at least 2 (the source and the result)");
   if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
-  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1");
-  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1");
+  // A morph of no steps would only repeat the source; denoise --steps 0 is
+  // the way to see a mesh on the grid unchanged.
+  const char* noSteps = " (with 0 steps every frame would be the source; lbmshape denoise --steps 0 shows a mesh on the grid)";
+  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1" + std::string(noSteps));
+  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1" + std::string(noSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
   if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
   if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
@@ -132,15 +151,19 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
   TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
-  prepareFolder(folder);
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
   device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  Volume field = clock.time("sdf", [&] { return signedDistance(source, frame); });
-  const Volume targetField = clock.time("sdf", [&] { return signedDistance(target, frame); });
+  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(source, frame, {.progress = &progress}); });
+  const Volume targetField =
+      clock.time("sdf", [&](Progress& progress) { return signedDistance(target, frame, {.progress = &progress}); });
+  // A shape that encloses nothing is the input's fault, not the morph's.
+  requireEnclosedVolume(field, sourcePath);
+  requireEnclosedVolume(targetField, targetPath);
+  prepareFolder(folder);  // only now: a bad input leaves no folder behind
   addFieldNoise(field, o.noise);
 
   auto solver = clock.time("setup", [&] {
@@ -154,16 +177,20 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   });
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames);
+  InterruptibleSteps stepper(*solver, o.stepsPerBatch);
+  const auto whatWasDone = [&] {
+    return std::to_string(writer.framesWritten()) + " complete frames in " + folder.string();
+  };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
   double lastError = 0.0;
   Stopwatch sinceProgress, running;
   std::shared_ptr<const Volume> current;
   for (int k = 0; k < o.frames; ++k) {
-    interrupt::check(std::to_string(writer.framesWritten()) + " complete frames in " + folder.string());
+    interrupt::check(whatWasDone());
     if (!convergedAt) {
       Stopwatch lbm;
-      solver->step(schedule[size_t(k)] - solver->stepsTaken());
+      stepper.advanceTo(schedule[size_t(k)], whatWasDone);
       lbmMs += lbm.ms();
       Stopwatch download;
       current = std::make_shared<const Volume>(solver->field());
@@ -185,6 +212,11 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
     }
   }
   std::vector<TriangleMesh> meshes = writer.finish();
+  const std::vector<int> emptyFrames = writer.emptyFrames();
+  if (!emptyFrames.empty())
+    log::warning((emptyFrames.size() == 1 ? "frame " : "frames ") + frameRanges(emptyFrames) +
+                 (emptyFrames.size() == 1 ? " has" : " have") + " no surface: the shape vanished on its way (source and target barely overlap) and came back; "
+                 "their files hold no triangles");
   clock.record("lbm", lbmMs);
   clock.record("download", downloadMs);
   clock.record("extract", writer.extractMs());
@@ -211,6 +243,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
           {"steps", steps},
           {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
           {"max_band_error_voxels", lastError},
+          {"empty_frames", emptyFrames},
           {"gamma", o.gamma},
           {"cs", o.cs},
           {"noise", o.noise.amplitude},

@@ -34,6 +34,9 @@ struct MorphOptions {
   bool force = false;              // write into a non-empty folder
   double tolerance = 0.1;          // converged: max |X - X_target| near the target below this (voxels)
   FieldNoise noise;                // on the source's field (the paper's noisy sphere)
+  // Lattice steps between two Ctrl-C checks; by default batches of about a
+  // quarter of a second. The frames do not depend on it (for tests).
+  std::optional<int> stepsPerBatch;
 };
 
 void checkMorphOptions(const MorphOptions& options);
@@ -41,8 +44,8 @@ void checkMorphOptions(const MorphOptions& options);
 // The frames' step numbers: frame k shows the state after steps[k] steps.
 std::vector<int> frameSchedule(const MorphOptions& options);
 
-// Returns the JSON report. Throws Interrupted (Ctrl-C) after writing only
-// complete frames.
+// Returns the JSON report. Throws Interrupted (Ctrl-C, checked between
+// batches of lattice steps) after writing only complete frames.
 nlohmann::json morphFiles(const std::filesystem::path& source, const std::filesystem::path& target,
                           const std::filesystem::path& folder, const MorphOptions& options, const ComputeDevice& device);
 

@@ -39,24 +39,6 @@ std::string sphereObj(const fs::path& folder)
   return (folder / "sphere.obj").string();
 }
 
-// A grid of quads, (u, v) in [0, 1]^2, as triangles; `place` puts each grid
-// point in space. Corners a b / c d: triangles (a, b, d) and (a, d, c).
-std::string sheetObj(int n, const std::function<glm::dvec3(double u, double v)>& place)
-{
-  std::ostringstream obj;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const glm::dvec3 p = place(double(i) / n, double(j) / n);
-      obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
-      obj << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
-    }
-  return obj.str();
-}
-
 class DenoiseBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(DenoiseBadInput, ExitCodeOneLineNoOutput)
@@ -116,18 +98,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"open_sheet_bent_into_a_half_cylinder", 3,
                  [](const fs::path& f) {
                    // Triangles facing the axis: the concave side is outside.
-                   writeText(f / "gutter.obj", sheetObj(16, [](double u, double v) {
+                   writeMesh(testing::sheet(16, [](double u, double v) {
                                const double a = std::numbers::pi * (1.0 - u);
                                return glm::dvec3(std::cos(a), std::sin(a), 4.0 * v);
-                             }));
+                             }), f / "gutter.obj");
                    return std::pair{(f / "gutter.obj").string(), (f / "out.glb").string()};
                  },
                  "gutter.obj: it encloses no volume"},
         BadInput{"open_wavy_square", 3,
                  [](const fs::path& f) {
-                   writeText(f / "square.obj", sheetObj(16, [](double u, double v) {
+                   writeMesh(testing::sheet(16, [](double u, double v) {
                                return glm::dvec3(u, v, 0.01 * std::sin(7.0 * u) * std::cos(5.0 * v));
-                             }));
+                             }), f / "square.obj");
                    return std::pair{(f / "square.obj").string(), (f / "out.glb").string()};
                  },
                  "square.obj: it encloses no volume"},

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <fstream>
 #include <thread>
 
@@ -14,6 +16,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
+#include "support/glb_json.hpp"
 #include "support/gltf_validator.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
@@ -24,16 +27,6 @@ namespace lbmshape {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The JSON chunk of a .glb file.
-nlohmann::json glbJson(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), {});
-  uint32_t length = 0;
-  std::memcpy(&length, bytes.data() + 12, 4);
-  return nlohmann::json::parse(bytes.substr(20, length));
-}
 
 class MorphCli : public ::testing::Test {
 protected:
@@ -59,7 +52,7 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
   }
   const auto v = testing::validateGltf(out / "morph.glb");
   EXPECT_TRUE(v.passed()) << v;
-  const nlohmann::json gltf = glbJson(out / "morph.glb");
+  const nlohmann::json gltf = testing::glbJson(out / "morph.glb");
   EXPECT_EQ(gltf["nodes"].size(), 5u);
   ASSERT_EQ(gltf["animations"].size(), 1u);
   double end = 0.0;
@@ -112,7 +105,7 @@ TEST_F(MorphCli, OtherFrameFormats)
 struct BadMorph {
   const char* name;
   int exitCode;
-  std::vector<std::string> extra;  // after "morph"; SPHERE, TORUS, OUT, FILE are replaced
+  std::vector<std::string> extra;  // after "morph"; SPHERE, TORUS, OUT, FILE, MISSING, SHEET are replaced
 };
 
 void PrintTo(const BadMorph& c, std::ostream* os) { *os << c.name; }
@@ -129,6 +122,15 @@ TEST_P(MorphBadInput, ExitCodeAndOneLine)
     if (a == "OUT") a = (folder / "out").string();
     if (a == "FILE") a = (folder / "afile" / "out").string();
     if (a == "MISSING") a = (folder / "missing.obj").string();
+    if (a == "SHEET") {  // half a cylinder, triangles facing its axis: it encloses nothing
+      a = (folder / "sheet.obj").string();
+      writeMesh(testing::sheet(16,
+                               [](double u, double v) {
+                                 const double angle = std::numbers::pi * (1.0 - u);
+                                 return glm::dvec3(std::cos(angle), std::sin(angle), 2.0 * v - 1.0);
+                               }),
+                a);
+    }
     args.push_back(a);
   }
   testing::CliResult r = testing::runLbmshape(args);
@@ -143,6 +145,8 @@ INSTANTIATE_TEST_SUITE_P(
     Table, MorphBadInput,
     ::testing::Values(BadMorph{"missing_target", 3, {"SPHERE", "MISSING", "OUT", "--res", "16"}},
                       BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
+                      BadMorph{"target_encloses_nothing", 3, {"SPHERE", "SHEET", "OUT", "--res", "16"}},
+                      BadMorph{"source_encloses_nothing", 3, {"SHEET", "SPHERE", "OUT", "--res", "16"}},
                       BadMorph{"same_file_twice_is_fine", 0, {"SPHERE", "SPHERE", "OUT", "--res", "16", "--frames", "2", "-q"}},
                       BadMorph{"unwritable_folder", 4, {"SPHERE", "TORUS", "FILE", "--res", "16"}},
                       BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},
@@ -150,97 +154,98 @@ INSTANTIATE_TEST_SUITE_P(
                       BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
                       BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
                       BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
-                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}}),
+                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}},
+                      // 0 is a value to refuse, not "the default": a morph of no steps only repeats the source.
+                      BadMorph{"zero_steps", 2, {"SPHERE", "TORUS", "OUT", "--steps", "0"}},
+                      BadMorph{"zero_steps_per_frame", 2, {"SPHERE", "TORUS", "OUT", "--steps-per-frame", "0"}},
+                      BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
-TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
+// lbmshape started in the background, to be interrupted.
+pid_t spawnLbmshape(std::vector<std::string> args)
 {
-  const fs::path out = folder / "frames";
-  std::vector<std::string> args = {testing::lbmshapeBinary(), "-q", "morph", sphere, torus, out.string(), "--res", "64",
-                                   "--frames", "400", "--format", "obj", "--no-animation"};
+  args.insert(args.begin(), testing::lbmshapeBinary());
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
-  // Wait for a few frames, then press Ctrl-C.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "frame_0003.obj") && std::chrono::steady_clock::now() < deadline)
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  return pid;
+}
+
+bool waitForFile(const fs::path& file, std::chrono::seconds limit)
+{
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!fs::exists(file) && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  kill(pid, SIGINT);
+  return fs::exists(file);
+}
+
+// The wait status of `pid`, killing it if it is still running after `limit`
+// (a test that fails must not hang).
+int waitForExit(pid_t pid, std::chrono::seconds limit)
+{
+  const auto deadline = std::chrono::steady_clock::now() + limit;
   int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ADD_FAILURE() << "still running after " << limit.count() << " s";
+      return status;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return status;
+}
+
+// Only complete frame files, each readable; returns how many.
+int expectOnlyCompleteFrames(const fs::path& folder)
+{
   int frames = 0;
-  for (const auto& entry : fs::directory_iterator(out)) {
+  for (const auto& entry : fs::directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
     EXPECT_EQ(name.rfind("frame_", 0), 0u) << "only frame files, no temporary ones: " << name;
     EXPECT_NO_THROW(readMesh(entry.path())) << name;
     ++frames;
   }
+  return frames;
+}
+
+TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
+{
+  const fs::path out = folder / "frames";
+  const pid_t pid = spawnLbmshape(
+      {"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "400", "--format", "obj", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  waitForFile(out / "frame_0003.obj", std::chrono::seconds(60));  // a few frames, then Ctrl-C
+  kill(pid, SIGINT);
+  const int status = waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const int frames = expectOnlyCompleteFrames(out);
   EXPECT_GE(frames, 4);
   EXPECT_LT(frames, 400) << "it stopped";
 }
 
-class JobsFile : public MorphCli {
-protected:
-  fs::path write(const nlohmann::json& jobs)
-  {
-    const fs::path file = folder / "jobs.json";
-    std::ofstream(file) << jobs.dump(2);
-    return file;
-  }
-  nlohmann::json threeJobs()
-  {
-    return nlohmann::json::array({
-        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "sphere_smooth.glb"}, {"res", 24}, {"preserve-features", true}},
-        {{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 24}},
-        {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "frames"}, {"res", 24},
-         {"frames", 3}, {"gamma", 0.1}},
-    });
-  }
-};
-
-TEST_F(JobsFile, OneMissingFileFailsOnlyItsJob)
+// Two frames thousands of steps apart: Ctrl-C is checked between batches of
+// steps inside a frame, not only between frames, so it stops at once.
+TEST_F(MorphCli, CtrlCStopsALongFrameAtOnce)
 {
-  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--json"});
-  EXPECT_EQ(r.exitCode, 3) << r.err;
-  const auto report = nlohmann::json::parse(r.out);
-  ASSERT_EQ(report["results"].size(), 3u);
-  EXPECT_TRUE(report["results"][0]["ok"].get<bool>());
-  EXPECT_FALSE(report["results"][1]["ok"].get<bool>());
-  EXPECT_EQ(report["results"][1]["exit_code"], 3);
-  EXPECT_NE(report["results"][1]["error"].get<std::string>().find("no_such_mesh.obj"), std::string::npos);
-  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
-  EXPECT_TRUE(fs::exists(folder / "sphere_smooth.glb")) << "relative to the jobs file";
-  EXPECT_TRUE(fs::exists(folder / "frames" / "frame_0002.glb"));
-  EXPECT_EQ(report["results"][0]["report"]["smoothing"], "preserve-features");
-  EXPECT_EQ(report["results"][2]["report"]["gamma"], 0.1);
-  EXPECT_NE(r.err.find("no_such_mesh.obj"), std::string::npos) << "the failure is reported";
-}
-
-TEST_F(JobsFile, FailFastStopsAtTheFailure)
-{
-  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--fail-fast", "--json"});
-  EXPECT_EQ(r.exitCode, 3);
-  EXPECT_EQ(nlohmann::json::parse(r.out)["results"].size(), 2u);
-  EXPECT_FALSE(fs::exists(folder / "frames"));
-}
-
-TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
-{
-  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"frobnicate", 1}},
-                                     {{"command", "explode"}},
-                                     {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"res", 20}}});
-  testing::CliResult r = testing::runLbmshape({"run", write(jobs).string(), "--json"});
-  EXPECT_EQ(r.exitCode, 2);
-  const auto report = nlohmann::json::parse(r.out);
-  EXPECT_EQ(report["failed"], 2);
-  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
-  testing::CliResult notJson = testing::runLbmshape({"run", sphere});
-  EXPECT_EQ(notJson.exitCode, 3);
-  EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
+  const fs::path out = folder / "frames";
+  const pid_t pid = spawnLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "2",
+                                   "--steps", "50000", "--format", "obj", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForFile(out / "frame_0000.obj", std::chrono::seconds(60)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // well inside the long frame
+  kill(pid, SIGINT);
+  const auto pressed = std::chrono::steady_clock::now();
+  const int status = waitForExit(pid, std::chrono::seconds(20));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pressed).count();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_LT(seconds, 5.0) << "50000 steps take minutes; a batch a fraction of a second";
+  EXPECT_EQ(expectOnlyCompleteFrames(out), 1);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // AtomicFile: the target appears, or changes, only on commit().
+#include <csignal>
 #include <fstream>
 #include <iterator>
 
@@ -6,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 
@@ -79,6 +81,26 @@ TEST(AtomicFile, TargetThatIsAFolderIsAnOutputError)
   testing::ScratchFolder folder;
   std::filesystem::create_directory(folder / "taken.obj");
   EXPECT_THROW(AtomicFile(folder / "taken.obj"), OutputError);
+}
+
+// The first Ctrl-C is a request, and the job unwinds, removing its temporary
+// files; a second one ends the process at once, without unwinding: the
+// signal handler itself must remove the temporary files of writes under way.
+TEST(AtomicFileDeathTest, ASecondCtrlCEndsTheProcessAndLeavesNoTemporaryFile)
+{
+  testing::ScratchFolder folder;
+  EXPECT_EXIT(
+      {
+        interrupt::installHandler();
+        AtomicFile first(folder / "a.obj");
+        AtomicFile second(folder / "b.glb");
+        std::raise(SIGINT);  // the request: the process goes on
+        if (!interrupt::requested() || !std::filesystem::exists(first.temporaryPath())) std::_Exit(3);
+        std::raise(SIGINT);  // ends it
+        std::_Exit(4);
+      },
+      ::testing::KilledBySignal(SIGINT), "");
+  EXPECT_TRUE(folder.entries().empty()) << ::testing::PrintToString(folder.entries());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // any time.
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "mesh/gltf_animation.hpp"
 #include "mesh/hand_made_gltf.hpp"
 #include "mesh/mesh_noise.hpp"
@@ -58,6 +59,26 @@ TEST_P(GltfOutput, OneFrameAnimationIsValid)
 {
   writeGltfAnimation({testing::icosphere(1)}, 10.0, path("still"));
   const auto validation = testing::validateGltf(path("still"));
+  EXPECT_TRUE(validation.passed()) << validation;
+}
+
+// A morph's frame may have no surface. glTF has no empty meshes, so such a
+// file is one node without a mesh (and no buffer: glTF has no empty ones
+// either); without EmptyMesh::Allowed it is refused.
+TEST_P(GltfOutput, EmptyMeshIsValidOnlyWhereAllowed)
+{
+  EXPECT_THROW(writeMesh(TriangleMesh{}, path("refused")), OutputError);
+  EXPECT_FALSE(std::filesystem::exists(path("refused")));
+  writeMesh(TriangleMesh{}, path("empty"), EmptyMesh::Allowed);
+  const auto validation = testing::validateGltf(path("empty"));
+  EXPECT_TRUE(validation.passed()) << validation;
+  EXPECT_THROW(readMesh(path("empty")), InputError) << "as input, a file of no surface is an error";
+}
+
+TEST_P(GltfOutput, AnimationWithAnEmptyFrameIsValid)
+{
+  writeGltfAnimation({testing::icosphere(1), TriangleMesh{}, testing::icosphere(1, 2.0)}, 10.0, path("gap"));
+  const auto validation = testing::validateGltf(path("gap"));
   EXPECT_TRUE(validation.passed()) << validation;
 }
 

@@ -1,6 +1,9 @@
 // lbmshape morph on shapes made in code: a sphere becomes a torus (genus 0 to
 // 1), frame by frame closer to it; frame 0 is the source; the frame files and
 // the animation are what the options say.
+#include <fstream>
+#include <iterator>
+
 #include <gtest/gtest.h>
 
 #include "analysis/mesh_topology.hpp"
@@ -96,6 +99,32 @@ TEST_F(Morph, ScheduleSpreadsTheSteps)
   o.stepsPerFrame.reset();
   o.steps = 10;
   EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 3, 5, 8, 10}));
+}
+
+// The lattice steps of a frame run in batches with a Ctrl-C check between
+// them; whatever the batches, the frames are the same bytes.
+TEST_F(Morph, FramesDoNotDependOnTheBatchesOfSteps)
+{
+  auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  MorphOptions o = sphereToTorus();
+  o.grid.resolution = 32;
+  o.frames = 4;
+  o.stepsPerFrame = 7;
+  o.animation = false;
+  for (const auto& [batch, out] : {std::pair<std::optional<int>, const char*>{1, "one"}, {3, "three"}, {std::nullopt, "adaptive"}}) {
+    o.stepsPerBatch = batch;
+    morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / out, o, device);
+  }
+  for (int k = 0; k < o.frames; ++k) {
+    const std::string name = "frame_000" + std::to_string(k) + ".obj";
+    const std::string one = bytes(folder / "one" / name);
+    EXPECT_FALSE(one.empty()) << name;
+    EXPECT_EQ(one, bytes(folder / "three" / name)) << name;
+    EXPECT_EQ(one, bytes(folder / "adaptive" / name)) << name;
+  }
 }
 
 TEST_F(Morph, ConvergedMorphRepeatsItsLastShape)

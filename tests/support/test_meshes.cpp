@@ -77,6 +77,21 @@ TriangleMesh torusMesh(double R, double r, int rings, int sides)
   return m;
 }
 
+TriangleMesh sheet(int n, const std::function<glm::dvec3(double u, double v)>& place)
+{
+  TriangleMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.push_back(place(double(i) / n, double(j) / n));
+  // Corners a b / c d: triangles (a, b, d) and (a, d, c).
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n) + 1, d = c + 1;
+      m.triangles.push_back({a, b, d});
+      m.triangles.push_back({a, d, c});
+    }
+  return m;
+}
+
 TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b)
 {
   TriangleMesh m = a;

@@ -1,6 +1,8 @@
 // Small meshes built in code, with known topology and geometry.
 #pragma once
 
+#include <functional>
+
 #include <glm/glm.hpp>
 
 #include "mesh/triangle_mesh.hpp"
@@ -15,6 +17,9 @@ TriangleMesh tetrahedron();
 TriangleMesh icosphere(int subdivisions, double radius = 1.0, glm::dvec3 centre = glm::dvec3(0.0));
 // A torus around z: `rings` steps around the axis, `sides` around the tube; outward.
 TriangleMesh torusMesh(double R, double r, int rings, int sides);
+// An open sheet: an n x n grid of quads over (u, v) in [0, 1]^2, two
+// triangles each, with `place` putting each grid point in space.
+TriangleMesh sheet(int n, const std::function<glm::dvec3(double u, double v)>& place);
 // Both meshes in one, b's indices shifted.
 TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b);
 // Every position p becomes centre + scale * (p - centre).

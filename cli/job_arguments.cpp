@@ -1,0 +1,84 @@
+#include "job_arguments.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+
+namespace lbmshape::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The positional arguments of each command, in order; they are paths.
+const std::map<std::string, std::vector<std::string>> positionals = {
+    {"denoise", {"input", "output"}},
+    {"morph", {"source", "target", "output"}},
+};
+
+// CLI11 names the type an option converts its text to.
+bool takesWholeNumber(const CLI::Option& o) { return o.get_type_name().rfind("INT", 0) == 0 || o.get_type_name().rfind("UINT", 0) == 0; }
+bool takesNumber(const CLI::Option& o) { return takesWholeNumber(o) || o.get_type_name().rfind("FLOAT", 0) == 0; }
+bool isFlag(const CLI::Option& o) { return o.get_expected_min() == 0; }
+
+// The text of `value` for option `key`, or UsageError when its JSON type
+// does not fit the option.
+std::string optionText(const std::string& key, const nlohmann::json& value, const CLI::Option& option)
+{
+  const std::string quoted = "\"" + key + "\"";
+  if (takesWholeNumber(option)) {
+    // JSON writers may print whole numbers as 96.0; the value is what counts.
+    if (value.is_number_integer()) return value.dump();
+    if (value.is_number_float() && value.get<double>() == std::floor(value.get<double>())) {
+      if (std::abs(value.get<double>()) > 4294967295.0)  // beyond any option here (the widest: a uint32 seed)
+        throw UsageError("option " + quoted + " is too large: " + value.dump());
+      return std::to_string(static_cast<long long>(value.get<double>()));
+    }
+    throw UsageError("option " + quoted + " must be a whole number, not " + value.dump());
+  }
+  if (takesNumber(option)) {
+    if (value.is_number()) return value.dump();
+    throw UsageError("option " + quoted + " must be a number, not " + value.dump());
+  }
+  if (value.is_string()) return value.get<std::string>();
+  throw UsageError("option " + quoted + " must be a string, not " + value.dump());
+}
+
+}  // namespace
+
+std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::path& base, const CLI::App& commands)
+{
+  if (!job.is_object()) throw UsageError("a job must be a JSON object, not " + job.dump());
+  if (!job.contains("command") || !job["command"].is_string()) throw UsageError("a job needs a \"command\"");
+  const std::string command = job["command"];
+  auto known = positionals.find(command);
+  if (known == positionals.end()) throw UsageError("unknown command \"" + command + "\" (use denoise or morph)");
+  const CLI::App& definition = *commands.get_subcommand(command);
+
+  std::vector<std::string> args = {command};
+  for (const auto& name : known->second) {
+    if (!job.contains(name) || !job[name].is_string())
+      throw UsageError(command + " job needs \"" + name + "\" (a path)");
+    fs::path p = job[name].get<std::string>();
+    args.push_back((p.is_absolute() ? p : base / p).string());
+  }
+  for (const auto& [key, value] : job.items()) {
+    if (key == "command" || std::find(known->second.begin(), known->second.end(), key) != known->second.end()) continue;
+    const CLI::Option* option = key == "help" ? nullptr : definition.get_option_no_throw("--" + key);
+    if (!option)
+      throw UsageError("unknown option \"" + key + "\" for " + command + " (see lbmshape " + command + " --help)");
+    if (value.is_null()) continue;  // the default
+    if (isFlag(*option)) {
+      if (!value.is_boolean())
+        throw UsageError("option \"" + key + "\" is a flag: true or false, not " + value.dump());
+      if (value.get<bool>()) args.push_back("--" + key);
+    } else {
+      // One argument, so that a value starting with '-' is never taken for an option.
+      args.push_back("--" + key + "=" + optionText(key, value, *option));
+    }
+  }
+  return args;
+}
+
+}  // namespace lbmshape::cli

@@ -1,0 +1,63 @@
+#include "core/temporary_files.hpp"
+
+#include <array>
+#include <atomic>
+#include <climits>
+#include <cstring>
+
+#include <unistd.h>
+
+namespace lbmshape::temporary_files {
+namespace {
+
+// A fixed table, as a signal handler may not allocate. A morph writes at
+// most a few files at once (a frame, morph.glb), jobs one at a time.
+struct Slot {
+  std::atomic<bool> taken{false};
+  // A sequence lock between writers and the handler, which may run on any
+  // thread while others go on: odd while `path` holds a listed file and is
+  // not changing, so the handler unlinks only a path it read whole.
+  std::atomic<unsigned> sequence{0};
+  char path[PATH_MAX];
+};
+std::array<Slot, 32> slots;
+
+}  // namespace
+
+int remember(const std::filesystem::path& path)
+{
+  const std::string& text = path.native();
+  if (text.size() >= PATH_MAX) return -1;
+  for (size_t i = 0; i < slots.size(); ++i) {
+    bool expected = false;
+    if (!slots[i].taken.compare_exchange_strong(expected, true)) continue;
+    std::memcpy(slots[i].path, text.c_str(), text.size() + 1);
+    slots[i].sequence.fetch_add(1, std::memory_order_release);  // odd: listed
+    return int(i);
+  }
+  return -1;
+}
+
+void forget(int ticket)
+{
+  if (ticket < 0) return;
+  Slot& slot = slots[size_t(ticket)];
+  slot.sequence.fetch_add(1, std::memory_order_release);  // even: not listed
+  slot.taken.store(false, std::memory_order_release);
+}
+
+void removeAllFromSignalHandler()
+{
+  for (Slot& slot : slots) {
+    const unsigned before = slot.sequence.load(std::memory_order_acquire);
+    if (before % 2 == 0) continue;
+    char path[PATH_MAX];
+    std::memcpy(path, slot.path, sizeof path);
+    std::atomic_thread_fence(std::memory_order_acquire);
+    if (slot.sequence.load(std::memory_order_relaxed) != before) continue;  // changed while read
+    path[PATH_MAX - 1] = '\0';
+    ::unlink(path);  // already renamed or removed: no matter, temporary names are never reused
+  }
+}
+
+}  // namespace lbmshape::temporary_files

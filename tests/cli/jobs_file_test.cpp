@@ -1,0 +1,181 @@
+// lbmshape run: a jobs file of denoise and morph jobs in one process. A job
+// that fails (a missing file, an option of the wrong kind) is reported with
+// its own exit code and does not stop the others, unless --fail-fast.
+#include <algorithm>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "mesh/mesh_writer.hpp"
+#include "support/cli_runner.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace fs = std::filesystem;
+
+class JobsFile : public ::testing::Test {
+protected:
+  testing::ScratchFolder folder;
+  void SetUp() override
+  {
+    writeMesh(testing::icosphere(3), folder / "sphere.obj");
+    writeMesh(testing::torusMesh(1.0, 0.4, 48, 24), folder / "torus.obj");
+  }
+  fs::path write(const nlohmann::json& jobs)
+  {
+    const fs::path file = folder / "jobs.json";
+    std::ofstream(file) << jobs.dump(2);
+    return file;
+  }
+  nlohmann::json threeJobs()
+  {
+    return nlohmann::json::array({
+        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "sphere_smooth.glb"}, {"res", 24}, {"preserve-features", true}},
+        {{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 24}},
+        {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "frames"}, {"res", 24},
+         {"frames", 3}, {"gamma", 0.1}},
+    });
+  }
+};
+
+TEST_F(JobsFile, OneMissingFileFailsOnlyItsJob)
+{
+  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  ASSERT_EQ(report["results"].size(), 3u);
+  EXPECT_TRUE(report["results"][0]["ok"].get<bool>());
+  EXPECT_FALSE(report["results"][1]["ok"].get<bool>());
+  EXPECT_EQ(report["results"][1]["exit_code"], 3);
+  EXPECT_NE(report["results"][1]["error"].get<std::string>().find("no_such_mesh.obj"), std::string::npos);
+  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
+  EXPECT_TRUE(fs::exists(folder / "sphere_smooth.glb")) << "relative to the jobs file";
+  EXPECT_TRUE(fs::exists(folder / "frames" / "frame_0002.glb"));
+  EXPECT_EQ(report["results"][0]["report"]["smoothing"], "preserve-features");
+  EXPECT_EQ(report["results"][2]["report"]["gamma"], 0.1);
+  EXPECT_NE(r.err.find("no_such_mesh.obj"), std::string::npos) << "the failure is reported";
+}
+
+TEST_F(JobsFile, FailFastStopsAtTheFailure)
+{
+  testing::CliResult r = testing::runLbmshape({"run", write(threeJobs()).string(), "--fail-fast", "--json"});
+  EXPECT_EQ(r.exitCode, 3);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["results"].size(), 2u);
+  EXPECT_FALSE(fs::exists(folder / "frames"));
+}
+
+TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
+{
+  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"frobnicate", 1}},
+                                     {{"command", "explode"}},
+                                     {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"res", 20}}});
+  testing::CliResult r = testing::runLbmshape({"run", write(jobs).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 2);
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["failed"], 2);
+  EXPECT_TRUE(report["results"][2]["ok"].get<bool>());
+  testing::CliResult notJson = testing::runLbmshape({"run", (folder / "sphere.obj").string()});
+  EXPECT_EQ(notJson.exitCode, 3);
+  EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
+}
+
+// The jobs of one run share one device, opened once (-v logs "device:" when
+// it opens). A morph creates its output folder, parents and all; a
+// denoise's folder must exist.
+TEST_F(JobsFile, JobsShareOneDeviceAndMorphCreatesItsFolder)
+{
+  auto jobs = nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "smooth.obj"}, {"res", 16}},
+       {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "new/nested/frames"},
+        {"res", 16}, {"frames", 2}},
+       {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "no_such_folder/smooth.obj"}, {"res", 16}}});
+  testing::CliResult r = testing::runLbmshape({"-v", "run", write(jobs).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  const auto lines = testing::nonEmptyLines(r.err);
+  EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                          [](const std::string& l) { return l.rfind("lbmshape: device: ", 0) == 0; }),
+            1)
+      << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(report["results"][0]["ok"].get<bool>());
+  EXPECT_TRUE(report["results"][1]["ok"].get<bool>());
+  EXPECT_TRUE(fs::exists(folder / "new" / "nested" / "frames" / "frame_0001.glb"));
+  EXPECT_EQ(report["results"][2]["exit_code"], 4);
+  EXPECT_NE(report["results"][2]["error"].get<std::string>().find("does not exist"), std::string::npos)
+      << report["results"][2]["error"];
+}
+
+// Options of the wrong JSON type, unknown keys and missing paths: each is a
+// usage error of its own job, naming the key, and the other jobs still run.
+struct JobCase {
+  const char* name;
+  nlohmann::json options;  // added to a denoise job of sphere.obj at --res 16
+  const char* errorNames;  // in the job's error; empty: the job succeeds
+};
+
+const JobCase jobCases[] = {
+    {"string_for_a_whole_number", {{"res", "big"}}, "\"res\""},
+    {"fraction_for_a_whole_number", {{"res", 96.5}}, "\"res\""},
+    {"whole_float_is_a_whole_number", {{"res", 16.0}}, ""},
+    {"true_for_a_number", {{"res", true}}, "\"res\""},
+    {"array_for_a_number", {{"res", {16}}}, "\"res\""},
+    {"string_for_a_number", {{"gamma", "0.1"}}, "\"gamma\""},
+    {"negative_number_as_value", {{"gamma", -0.1}}, "--gamma"},  // a value, not an option: the command's own check
+    {"string_for_a_flag", {{"anisotropic", "yes"}}, "\"anisotropic\""},
+    {"number_for_a_flag", {{"anisotropic", 1}}, "\"anisotropic\""},
+    {"false_flag", {{"anisotropic", false}}, ""},
+    {"null_is_the_default", {{"gamma", nullptr}}, ""},
+    {"unknown_key", {{"frobnicate", 1}}, "\"frobnicate\""},
+    {"help_is_no_job_option", {{"help", true}}, "\"help\""},
+    {"missing_output", {{"output", nullptr}}, "\"output\""},
+};
+
+TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)
+{
+  // First a job with a missing file (exit code 3), then the table: the run's
+  // exit code is that of the first job that failed.
+  nlohmann::json jobs = nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 16}}});
+  for (const JobCase& c : jobCases) {
+    nlohmann::json job = {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", std::string(c.name) + ".obj"},
+                          {"res", 16}};
+    job.update(c.options);
+    if (job["output"].is_null()) job.erase("output");
+    jobs.push_back(job);
+  }
+  testing::CliResult r = testing::runLbmshape({"run", write(jobs).string(), "--json"});
+  EXPECT_EQ(r.exitCode, 3) << "the first failure's exit code\n" << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  ASSERT_EQ(report["results"].size(), jobs.size());
+  int failures = 1;
+  for (size_t i = 0; i < std::size(jobCases); ++i) {
+    const JobCase& c = jobCases[i];
+    const auto& result = report["results"][i + 1];
+    const std::string job = "job " + std::to_string(i + 2);
+    if (*c.errorNames == '\0') {
+      EXPECT_TRUE(result["ok"].get<bool>()) << c.name << ": " << result.dump();
+      continue;
+    }
+    ++failures;
+    ASSERT_FALSE(result["ok"].get<bool>()) << c.name;
+    EXPECT_EQ(result["exit_code"], 2) << c.name << ": a usage error";
+    EXPECT_NE(result["error"].get<std::string>().find(c.errorNames), std::string::npos) << c.name << ": " << result["error"];
+    const std::string line = "failed: " + result["error"].get<std::string>();
+    const auto lines = testing::nonEmptyLines(r.err);
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
+      return l.rfind("lbmshape: warning: " + job + " ", 0) == 0 && l.size() >= line.size() &&
+             l.compare(l.size() - line.size(), line.size(), line) == 0;
+    })) << c.name << ": the log names the job\n" << r.err;
+    EXPECT_FALSE(fs::exists(folder / (std::string(c.name) + ".obj"))) << c.name;
+  }
+  EXPECT_EQ(report["failed"], failures);
+  // 16.0 was read as 16 cells along the longest side.
+  EXPECT_EQ(report["results"][3]["report"]["grid"]["size"][0], 16);
+}
+
+}  // namespace
+}  // namespace lbmshape

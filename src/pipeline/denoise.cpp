@@ -2,15 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "core/log.hpp"
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "pipeline/interruptible_steps.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
@@ -52,21 +53,19 @@ nlohmann::json meshSummary(const TriangleMesh& mesh, const MeshTopology& t)
           {"volume", t.signedVolume}};
 }
 
-// Runs `count` steps in batches, so that a long run shows how far it is.
-// A batch is one submission: bigger batches save a little of lavapipe's
-// per-submission cost, and the field is the same whatever the batch size.
+// What an interrupted denoise has done: the lattice steps, and nothing written.
+std::function<std::string()> stepsDone(const LatticeSolver& solver)
+{
+  return [&solver] { return "stopped after " + std::to_string(solver.stepsTaken()) + " steps; nothing written"; };
+}
+
+// Runs `count` more steps as a part of the stage's progress, in batches
+// between which Ctrl-C is honoured; the field does not depend on the batches.
 void stepShowingProgress(LatticeSolver& solver, int count, Progress& progress, const char* part = "steps",
                          double share = 1.0)
 {
-  constexpr int batch = 8;
   progress.beginPart(part, count, share);
-  for (int done = 0; done < count;) {
-    const int now = std::min(batch, count - done);
-    interrupt::check("stopped after " + std::to_string(done) + " steps; nothing written");
-    solver.step(now);
-    progress.advance(now);
-    done += now;
-  }
+  InterruptibleSteps(solver).advanceTo(solver.stepsTaken() + count, stepsDone(solver), &progress);
 }
 
 // Runs the smoothing steps on `solver`, starting from `field`.
@@ -85,14 +84,13 @@ Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& 
     solver.initialize(field);
     Volume before = field, gamma(field.extent(), float(o.gamma));
     progress.beginPart("steps", o.steps);
-    for (int s = 0; s < o.steps; ++s) {
-      interrupt::check("stopped after " + std::to_string(s) + " steps; nothing written");
-      solver.step(1);
+    InterruptibleSteps stepper(solver);
+    for (int s = 1; s <= o.steps; ++s) {
+      stepper.advanceTo(s, stepsDone(solver), &progress);
       Volume after = solver.field();
       gamma = adaptive_gamma::paperRule(before, after, gamma, o.gamma);
       solver.setGammaPerCell(gamma);
       before = std::move(after);
-      progress.advance();
     }
     return before;
   }
@@ -147,11 +145,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  Volume field = clock.time("sdf", [&](Progress& progress) {
-    SignedDistanceOptions sdf;
-    sdf.progress = &progress;
-    return signedDistance(mesh, frame, sdf);
-  });
+  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });

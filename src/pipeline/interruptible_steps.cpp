@@ -20,7 +20,7 @@ int InterruptibleSteps::nextBatch(int remaining) const
   return int(std::clamp(std::floor(batchMs_ / msPerStep_), 1.0, double(remaining)));
 }
 
-void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone)
+void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone, Progress* progress)
 {
   while (solver_.stepsTaken() < totalSteps) {
     interrupt::check(whatWasDone());
@@ -28,6 +28,7 @@ void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::stri
     Stopwatch clock;
     solver_.step(batch);
     msPerStep_ = clock.ms() / batch;
+    if (progress) progress->advance(batch);
   }
 }
 

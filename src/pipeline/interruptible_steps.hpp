@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/progress.hpp"
 #include "lbm/lattice_solver.hpp"
 
 namespace lbmshape {
@@ -19,8 +20,9 @@ public:
                               double batchMs = 250.0);
 
   // Steps until the solver has taken `totalSteps` in all. Before each batch,
-  // throws Interrupted with whatWasDone() if Ctrl-C was pressed.
-  void advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone);
+  // throws Interrupted with whatWasDone() if Ctrl-C was pressed; after each,
+  // tells `progress` (if any) how many steps it took.
+  void advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone, Progress* progress = nullptr);
 
 private:
   int nextBatch(int remaining) const;

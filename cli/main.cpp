@@ -1,6 +1,7 @@
 // lbmshape: the command-line front end. It parses the command, runs it, and
 // turns every failure into one line on stderr and its exit code:
 // 0 ok, 2 usage, 3 input, 4 output, 5 device or numerical failure.
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -15,8 +16,19 @@
 #include "mesh_commands.hpp"
 #include "run_command.hpp"
 #include "core/interrupt.hpp"
+#include "core/last_resort.hpp"
+#include "core/worker_threads.hpp"
 
 namespace {
+
+// What to say when memory runs out: a grid is what usually takes it, and
+// the commands that have one can be told to use a coarser one.
+std::string outOfMemory(const CLI::App& app)
+{
+  for (const CLI::App* command : app.get_subcommands())
+    if (command->get_option_no_throw("--res")) return "out of memory; use a coarser grid (--res)";
+  return "out of memory";
+}
 
 int fail(lbmshape::ExitCode code, const std::string& message)
 {
@@ -60,11 +72,20 @@ int main(int argc, char** argv)
   cli::addBenchCommand(app, common);
 
   interrupt::installHandler();
+  installLastResortHandler();
+  // A reader of stdout that went away is an output error (exit 4), not a
+  // silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  prepareParallelRegions();
   try {
     app.parse(argc, argv);
     // Closing the device can draw validation messages too (objects still
     // alive, for one); they fail the run like any other.
     common.closeDevice();
+    // Results on stdout that did not arrive (a full disk, a closed pipe)
+    // are a failed command, like a mesh that could not be written.
+    if (!std::cout.flush())
+      return fail(ExitCode::Output, "cannot write the results to standard output (is the disk full, or the pipe closed?)");
     return 0;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
@@ -81,7 +102,7 @@ int main(int argc, char** argv)
   } catch (const std::filesystem::filesystem_error& e) {
     return fail(ExitCode::Output, e.what());
   } catch (const std::bad_alloc&) {
-    return fail(ExitCode::Device, "out of memory; use a coarser grid (--res)");
+    return fail(ExitCode::Device, outOfMemory(app));
   } catch (const std::exception& e) {
     return fail(ExitCode::Device, std::string("internal error: ") + e.what());
   }

@@ -1,13 +1,13 @@
 #include "run_command.hpp"
 
 #include <algorithm>
-#include <fstream>
 
 #include <vulkan/vulkan.hpp>
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/log.hpp"
+#include "core/mapped_file.hpp"
 #include "job_arguments.hpp"
 #include "mesh_commands.hpp"
 
@@ -20,15 +20,29 @@ struct RunArguments {
   bool failFast = false;
 };
 
+// A jobs file is an array of flat objects: nesting beyond this is no jobs
+// file, and nesting without bound would overflow the stack in nlohmann's
+// recursive destructor and serializer.
+constexpr int maxJobsFileDepth = 16;
+struct TooDeep {};
+
 nlohmann::json readJobs(const fs::path& file)
 {
-  std::ifstream in(file);
-  if (!in) throw InputError("cannot read " + file.string() + ": no such file or not readable");
+  const MappedFile text(file);  // a regular file, or an InputError that says what it is
+  const auto refuseDeep = [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+    if (depth >= maxJobsFileDepth &&
+        (event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start))
+      throw TooDeep{};
+    return true;
+  };
   nlohmann::json jobs;
   try {
-    jobs = nlohmann::json::parse(in);
+    jobs = nlohmann::json::parse(text.bytes(), refuseDeep);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError("cannot read " + file.string() + ": not valid JSON (" + e.what() + ")");
+  } catch (const TooDeep&) {
+    throw InputError("cannot read " + file.string() + ": its JSON nests more than " + std::to_string(maxJobsFileDepth) +
+                     " levels deep (a jobs file is an array of objects of options)");
   }
   if (!jobs.is_array()) throw InputError("cannot read " + file.string() + ": expected a JSON array of jobs");
   return jobs;

@@ -16,6 +16,10 @@ packages=(
 if [[ "${1:-}" == "--with-test-tools" ]] && ! { command -v node && command -v npm; } >/dev/null; then
   packages+=(nodejs npm)
 fi
+# The fuzz targets (scripts/fuzz.sh) need clang with libFuzzer and the sanitizers.
+if [[ "${1:-}" == "--with-fuzz-tools" ]]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -56,7 +56,9 @@ void removeAllFromSignalHandler()
     std::atomic_thread_fence(std::memory_order_acquire);
     if (slot.sequence.load(std::memory_order_relaxed) != before) continue;  // changed while read
     path[PATH_MAX - 1] = '\0';
-    ::unlink(path);  // already renamed or removed: no matter, temporary names are never reused
+    // Already renamed or removed: no matter, temporary names are never
+    // reused. A folder is not a file: rmdir removes it only when empty.
+    if (::unlink(path) != 0) ::rmdir(path);
   }
 }
 

@@ -11,12 +11,15 @@ namespace lbmshape::temporary_files {
 
 // Lists `path`; returns a ticket for forget(), or -1 when the list is full
 // or the path too long (the file is then only removed by its owner).
-// Thread-safe.
+// Thread-safe. A folder may be listed too: it is removed only if empty (a
+// morph's output folder, until its first frame is written).
 int remember(const std::filesystem::path& path);
 // Takes the file off the list (it was renamed or removed). Thread-safe.
 void forget(int ticket);
 
-// Removes every listed file. Async-signal-safe: for a signal handler only.
+// Removes every listed file (and every listed folder that is empty).
+// Async-signal-safe: for a signal handler, or for a process that ends
+// without unwinding (core/last_resort.hpp).
 void removeAllFromSignalHandler();
 
 }  // namespace lbmshape::temporary_files

@@ -1,37 +1,44 @@
 #include "mesh/mesh_reader.hpp"
 
-#include <fstream>
-
-#include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/mapped_file.hpp"
 #include "mesh/gltf_reader.hpp"
-#include "mesh/mesh_format.hpp"
 #include "mesh/mesh_validation.hpp"
-#include "mesh/openmesh_reader.hpp"
+#include "mesh/obj_reader.hpp"
+#include "mesh/off_reader.hpp"
+#include "mesh/ply_reader.hpp"
+#include "mesh/stl_reader.hpp"
 
 namespace lbmshape {
 
-TriangleMesh readMesh(const std::filesystem::path& path)
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format)
 {
-  const std::string prefix = "cannot read " + path.string() + ": ";
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) throw InputError(prefix + "no such file");
-  if (std::filesystem::is_directory(status)) throw InputError(prefix + "it is a folder, not a file");
-  if (!std::ifstream(path, std::ios::binary))
-    throw InputError(prefix + "the file cannot be opened (check its permissions)");
-  const auto format = meshFormatOf(path);
-  if (!format)
-    throw InputError(prefix + "unknown mesh format '" + path.extension().string() + "' (use one of " +
-                     supportedExtensions() + ")");
-  if (std::filesystem::file_size(path, ec) == 0) throw InputError(prefix + "the file is empty");
-
-  TriangleMesh mesh = *format == MeshFormat::Gltf || *format == MeshFormat::Glb ? readGltf(path, *format)
-                                                                                : readWithOpenMesh(path, *format);
-  validateInputMesh(mesh, path);
-  log::verbose("read " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
+  if (source.bytes.empty()) source.refuse("the file is empty");
+  TriangleMesh mesh;
+  switch (format) {
+    case MeshFormat::Obj: mesh = readObj(source); break;
+    case MeshFormat::Ply: mesh = readPly(source); break;
+    case MeshFormat::Off: mesh = readOff(source); break;
+    case MeshFormat::Stl: mesh = readStl(source); break;
+    case MeshFormat::Gltf:
+    case MeshFormat::Glb: mesh = readGltf(source, format); break;
+  }
+  validateInputMesh(mesh, source.name);
+  log::verbose("read " + source.name + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
                std::to_string(mesh.triangleCount()) + " triangles");
   return mesh;
+}
+
+TriangleMesh readMesh(const std::filesystem::path& path)
+{
+  const std::string name = path.string();
+  const auto format = meshFormatOf(path);
+  // The file is opened first: a missing file is reported as missing, whatever its name.
+  const MappedFile file(path);
+  if (!format)
+    throw InputError("cannot read " + name + ": unknown mesh format '" + path.extension().string() + "' (use one of " +
+                     supportedExtensions() + ")");
+  return readMesh(MeshSource{file.bytes(), name, path.parent_path()}, *format);
 }
 
 }  // namespace lbmshape

@@ -1,8 +1,13 @@
-// Reading a surface mesh from a file, in any format lbmshape knows.
+// Reading a surface mesh from a file, or from a file's bytes in memory, in
+// any format lbmshape knows. Every reader treats its input as untrusted:
+// whatever the bytes, the result is a mesh or an InputError, in time and
+// memory bounded by the input's size.
 #pragma once
 
 #include <filesystem>
 
+#include "mesh/mesh_format.hpp"
+#include "mesh/mesh_source.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
@@ -11,10 +16,13 @@ namespace lbmshape {
 // letter case) as a triangle soup: every face is kept, manifold or not, and
 // polygons are fan-triangulated. The result is validated (see
 // validateInputMesh): degenerate triangles are dropped, and anything that
-// makes the file unusable (missing, unreadable, unknown extension, no
-// triangles, NaN, bad indices, no enclosed volume) is an InputError whose
-// one-line message names the file. Normals are not read: lbmshape derives
-// its own from the surface.
+// makes the file unusable (missing, not a regular file, unreadable, unknown
+// extension, malformed, no triangles, a coordinate that is not finite, bad
+// indices, no enclosed volume) is an InputError whose one-line message names
+// the file. Normals are not read: lbmshape derives its own from the surface.
 TriangleMesh readMesh(const std::filesystem::path& path);
+
+// The same for bytes already in memory; `source.name` names them in messages.
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format);
 
 }  // namespace lbmshape

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "mesh/mesh_geometry.hpp"
+#include "mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {
@@ -25,9 +26,9 @@ std::string coordinates(const glm::dvec3& p)
 
 }  // namespace
 
-void validateInputMesh(TriangleMesh& mesh, const std::filesystem::path& path)
+void validateInputMesh(TriangleMesh& mesh, const std::string& name)
 {
-  const std::string prefix = "cannot read " + path.string() + ": ";
+  const std::string prefix = "cannot read " + name + ": ";
   if (mesh.triangles.empty()) throw InputError(prefix + "it contains no triangles");
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
@@ -35,17 +36,21 @@ void validateInputMesh(TriangleMesh& mesh, const std::filesystem::path& path)
         throw InputError(prefix + "triangle " + std::to_string(t + 1) + " refers to vertex number " +
                          std::to_string(uint64_t(mesh.triangles[t][k]) + 1) + ", but there are only " +
                          std::to_string(mesh.positions.size()) + " vertices");
-  for (size_t v = 0; v < mesh.positions.size(); ++v)
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
     if (!isFinite(mesh.positions[v]))
       throw InputError(prefix + "vertex " + std::to_string(v + 1) + " has a coordinate that is not a finite number " +
                        coordinates(mesh.positions[v]));
+    if (glm::any(glm::greaterThan(glm::abs(mesh.positions[v]), glm::dvec3(text::largestCoordinate))))
+      throw InputError(prefix + "vertex " + std::to_string(v + 1) + " has a coordinate beyond single precision " +
+                       coordinates(mesh.positions[v]));
+  }
 
   const size_t before = mesh.triangles.size();
   std::erase_if(mesh.triangles, [&](const glm::uvec3& t) { return isDegenerate(mesh, t); });
   if (mesh.triangles.empty())
     throw InputError(prefix + "all " + std::to_string(before) + " triangles are degenerate (zero area)");
   if (mesh.triangles.size() < before)
-    log::verbose(path.string() + ": dropped " + std::to_string(before - mesh.triangles.size()) +
+    log::verbose(name + ": dropped " + std::to_string(before - mesh.triangles.size()) +
                  " degenerate (zero-area) triangles of " + std::to_string(before));
 
   if (mesh.triangles.size() == 1) throw InputError(prefix + "it is a single triangle, which encloses no volume");

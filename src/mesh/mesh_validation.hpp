@@ -3,18 +3,19 @@
 // untidy is fixed quietly.
 #pragma once
 
-#include <filesystem>
+#include <string>
 
 #include "mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 
-// Throws InputError ("cannot read <path>: <what is wrong>") when the mesh has
-// no triangles, an index out of range, a NaN or infinite coordinate, only
+// Throws InputError ("cannot read <name>: <what is wrong>") when the mesh has
+// no triangles, an index out of range, a coordinate that is NaN, infinite or
+// beyond single precision (every format but OBJ stores float), only
 // degenerate (zero-area) triangles, or encloses no volume because all of it
 // lies in one plane (which includes a single triangle). Otherwise removes the
 // degenerate triangles (saying so in the verbose log) and returns. Vertices no
 // triangle uses are allowed and kept.
-void validateInputMesh(TriangleMesh& mesh, const std::filesystem::path& path);
+void validateInputMesh(TriangleMesh& mesh, const std::string& name);
 
 }  // namespace lbmshape

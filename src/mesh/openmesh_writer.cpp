@@ -6,6 +6,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>  // registers OpenMesh's writer modules
 
 #include "core/error.hpp"
+#include "mesh/mesh_geometry.hpp"
 #include "mesh/openmesh_diagnostics.hpp"
 #include "mesh/soup_exporter.hpp"
 
@@ -16,12 +17,23 @@ void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const Atomic
   const char* extension = format == MeshFormat::Ply ? "ply" : format == MeshFormat::Off ? "off" : "stl";
   OpenMesh::IO::Options options;
   if (format != MeshFormat::Off) options += OpenMesh::IO::Options::Binary;
-  if (format == MeshFormat::Ply) options += OpenMesh::IO::Options::LSB;
+  // Per-vertex normals in PLY: without them viewers shade every triangle
+  // flat, and the smooth surface lbmshape made looks faceted.
+  std::vector<glm::vec3> normals;
+  if (format == MeshFormat::Ply) {
+    options += OpenMesh::IO::Options::LSB;
+    options += OpenMesh::IO::Options::VertexNormal;
+    if (mesh.normals.size() == mesh.positions.size()) {
+      normals = mesh.normals;
+    } else {
+      for (const glm::dvec3& n : areaWeightedNormals(mesh)) normals.emplace_back(n);
+    }
+  }
 
   // Into our own stream rather than by file name: OpenMesh's writers do not
   // check that their output reached the disk, this stream does.
   std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
-  SoupExporter exporter(mesh);
+  SoupExporter exporter(mesh, std::move(normals));
   bool ok = false;
   std::string diagnostic;
   {

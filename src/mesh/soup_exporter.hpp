@@ -15,7 +15,12 @@ namespace lbmshape {
 
 class SoupExporter : public OpenMesh::IO::BaseExporter {
 public:
-  explicit SoupExporter(const TriangleMesh& mesh) : mesh_(mesh) {}
+  // `normals`, per vertex, are written where the writer is asked to
+  // (Options::VertexNormal); empty for none.
+  explicit SoupExporter(const TriangleMesh& mesh, std::vector<glm::vec3> normals = {})
+      : mesh_(mesh), normals_(std::move(normals))
+  {
+  }
 
   OpenMesh::Vec3f point(OpenMesh::VertexHandle v) const override { return OpenMesh::Vec3f(pointd(v)); }
   OpenMesh::Vec3d pointd(OpenMesh::VertexHandle v) const override;
@@ -29,10 +34,12 @@ public:
   // checking that there is a kernel: this one has none.
   const OpenMesh::BaseKernel* kernel() override { return &noProperties_; }
 
-  // Nothing but positions and faces is written.
-  OpenMesh::Vec3f normal(OpenMesh::VertexHandle) const override { return {0.f, 0.f, 0.f}; }
-  OpenMesh::Vec3d normald(OpenMesh::VertexHandle) const override { return {0.0, 0.0, 0.0}; }
+  bool has_vertex_normals() const override { return !normals_.empty(); }
+  OpenMesh::Vec3f normal(OpenMesh::VertexHandle v) const override;
+  OpenMesh::Vec3d normald(OpenMesh::VertexHandle v) const override { return OpenMesh::Vec3d(normal(v)); }
   bool is_normal_double() const override { return false; }
+
+  // Nothing else but positions and faces is written.
   OpenMesh::Vec3uc color(OpenMesh::VertexHandle) const override { return {0, 0, 0}; }
   OpenMesh::Vec4uc colorA(OpenMesh::VertexHandle) const override { return {0, 0, 0, 255}; }
   OpenMesh::Vec3ui colori(OpenMesh::VertexHandle) const override { return {0, 0, 0}; }
@@ -73,6 +80,7 @@ public:
 
 private:
   const TriangleMesh& mesh_;
+  std::vector<glm::vec3> normals_;
   OpenMesh::BaseKernel noProperties_;
 };
 

@@ -1,7 +1,11 @@
-target_sources(lbmshape_lib PRIVATE
+target_sources(lbmshape_mesh PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_builder.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_file_access.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_json_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_scene_walk.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_format.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_geometry.cpp
@@ -9,13 +13,17 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/mesh_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_validation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_writer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/obj_positions.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/obj_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/obj_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/off_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/openmesh_diagnostics.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/openmesh_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/openmesh_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ply_header.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ply_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_exporter.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/soup_importer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/stl_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/text_chunks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/triangle_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vertex_welding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/writable_mesh.cpp
 )

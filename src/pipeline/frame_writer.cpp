@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
+#include "core/worker_threads.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "surface/marching_cubes.hpp"
 
@@ -81,6 +82,9 @@ double FrameWriter::writeMs() const
 
 void FrameWriter::run()
 {
+  // Extraction runs parallel loops on this thread: their OpenMP threads are
+  // made now, before the lattice takes its memory (core/worker_threads.hpp).
+  prepareParallelRegions();
   std::shared_ptr<const Volume> previousField;
   for (;;) {
     std::pair<int, std::shared_ptr<const Volume>> job;

@@ -9,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/temporary_files.hpp"
 #include "core/log.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/gltf_animation.hpp"
@@ -89,6 +90,41 @@ void prepareFolder(const fs::path& folder)
   AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
 }
 
+// The output folder, if this morph created it, goes again when the morph
+// fails while it is still empty (before its first frame): a failed morph
+// leaves no empty folder behind. Frames already written stay, as after
+// Ctrl-C. Listed with the temporary files too, for a process that ends
+// without unwinding.
+class FolderIfLeftEmpty {
+public:
+  explicit FolderIfLeftEmpty(const fs::path& folder) : folder_(folder)
+  {
+    std::error_code ec;
+    existed_ = fs::exists(folder, ec);
+  }
+  ~FolderIfLeftEmpty()
+  {
+    temporary_files::forget(ticket_);
+    std::error_code ec;
+    if (!kept_ && !existed_ && fs::is_empty(folder_, ec)) fs::remove(folder_, ec);
+  }
+  FolderIfLeftEmpty(const FolderIfLeftEmpty&) = delete;
+  FolderIfLeftEmpty& operator=(const FolderIfLeftEmpty&) = delete;
+
+  // Call once the folder exists.
+  void created()
+  {
+    if (!existed_) ticket_ = temporary_files::remember(folder_);
+  }
+  void keep() { kept_ = true; }
+
+private:
+  fs::path folder_;
+  bool existed_ = true;
+  bool kept_ = false;
+  int ticket_ = -1;
+};
+
 // max |X - X_target| over the cells near the target's surface.
 double bandError(const Volume& X, const Volume& target)
 {
@@ -163,7 +199,9 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   // A shape that encloses nothing is the input's fault, not the morph's.
   requireEnclosedVolume(field, sourcePath);
   requireEnclosedVolume(targetField, targetPath);
+  FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
+  newFolder.created();
   addFieldNoise(field, o.noise);
 
   auto solver = clock.time("setup", [&] {
@@ -229,6 +267,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   interrupt::check(std::to_string(meshes.size()) + " complete frames in " + folder.string());
   if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb"); });
   device.requireCleanValidation();
+
+  newFolder.keep();
 
   const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
   const MeshTopology last = analyzeTopology(meshes.back());

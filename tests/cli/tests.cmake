@@ -1,5 +1,6 @@
 lbmshape_test(cli_tests
   ${CMAKE_CURRENT_LIST_DIR}/denoise_cli_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/hostile_input_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/jobs_file_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/json_results_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_align_and_convergence_test.cpp

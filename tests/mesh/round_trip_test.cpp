@@ -1,6 +1,10 @@
 // Every format lbmshape writes reads back as the same mesh: the same vertex
 // and triangle counts and the same corner positions, exactly for OBJ (which
 // keeps doubles) and to single precision for the others.
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
 #include <gtest/gtest.h>
 
 #include "mesh/mesh_reader.hpp"
@@ -89,6 +93,36 @@ TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
     writeMesh(finned, path);
     EXPECT_EQ(readMesh(path).triangleCount(), 13u) << extension;
   }
+}
+
+TEST(RoundTrip, PlyCarriesVertexNormalsForSmoothShading)
+{
+  // Without normals viewers shade a PLY flat, triangle by triangle. On a
+  // sphere about the origin each vertex normal points along the vertex.
+  const TriangleMesh sphere = testing::icosphere(3);
+  testing::ScratchFolder folder;
+  writeMesh(sphere, folder / "sphere.ply");
+  std::ifstream in(folder / "sphere.ply", std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const size_t body = bytes.find("end_header\n") + 11;
+  const std::string header = bytes.substr(0, body);
+  ASSERT_NE(header.find("format binary_little_endian"), std::string::npos) << header;
+  // x y z nx ny nz, all float, in that order.
+  std::vector<std::string> properties;
+  for (size_t at = header.find("element vertex"); (at = header.find("property float ", at)) != std::string::npos;) {
+    at += 15;
+    properties.push_back(header.substr(at, header.find('\n', at) - at));
+    if (properties.size() == 6) break;
+  }
+  ASSERT_EQ(properties, (std::vector<std::string>{"x", "y", "z", "nx", "ny", "nz"})) << header;
+  for (size_t v = 0; v < sphere.vertexCount(); ++v) {
+    float values[6];
+    std::memcpy(values, bytes.data() + body + v * sizeof values, sizeof values);
+    const glm::dvec3 normal(values[3], values[4], values[5]);
+    EXPECT_NEAR(glm::length(normal), 1.0, 1e-5) << "vertex " << v;
+    EXPECT_GT(glm::dot(normal, glm::normalize(sphere.positions[v])), 0.99) << "vertex " << v;
+  }
+  EXPECT_EQ(readMesh(folder / "sphere.ply").triangleCount(), sphere.triangleCount()) << "and it still reads back";
 }
 
 TEST(RoundTrip, WritingReplacesAnExistingFile)

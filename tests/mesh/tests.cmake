@@ -6,6 +6,8 @@ lbmshape_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/hand_made_gltf.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_fixtures.cpp
   ${CMAKE_CURRENT_LIST_DIR}/noise_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/reader_cases_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/reader_file_system_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/round_trip_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_reading_test.cpp
 )

@@ -31,22 +31,34 @@ std::string slurp(const std::filesystem::path& path)
 
 std::string lbmshapeBinary() { return LBMSHAPE_BINARY; }
 
-CliResult runLbmshape(const std::vector<std::string>& arguments)
+namespace {
+
+CliResult run(const std::string& prefix, const std::vector<std::string>& arguments)
 {
   static int counter = 0;
   const auto base = std::filesystem::temp_directory_path() /
                     ("lbmshape-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  std::string command = shellQuote(LBMSHAPE_BINARY);
+  std::string command = prefix + shellQuote(LBMSHAPE_BINARY);
   for (const auto& a : arguments) command.append(" ").append(shellQuote(a));
   command += " >" + shellQuote(base.string() + ".out") + " 2>" + shellQuote(base.string() + ".err") + " </dev/null";
   const int status = std::system(command.c_str());
   CliResult result;
+  // A signal that ends lbmshape reaches us as the shell's exit code 128 + N.
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.out = slurp(base.string() + ".out");
   result.err = slurp(base.string() + ".err");
   std::filesystem::remove(base.string() + ".out");
   std::filesystem::remove(base.string() + ".err");
   return result;
+}
+
+}  // namespace
+
+CliResult runLbmshape(const std::vector<std::string>& arguments) { return run("", arguments); }
+
+CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std::string>& arguments)
+{
+  return run("ulimit -v " + std::to_string(addressSpaceMegabytes * 1024) + " && ", arguments);
 }
 
 std::vector<std::string> nonEmptyLines(const std::string& text)

@@ -8,12 +8,16 @@
 namespace lbmshape::testing {
 
 struct CliResult {
-  int exitCode = -1;
+  int exitCode = -1;  // 128 + N when lbmshape died of signal N
   std::string out;  // stdout
   std::string err;  // stderr
 };
 
 CliResult runLbmshape(const std::vector<std::string>& arguments);
+
+// The same under an address-space limit (ulimit -v), as on a machine with
+// that much memory: for the tests of failing well when memory runs out.
+CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std::string>& arguments);
 
 // Path of the lbmshape binary under test.
 std::string lbmshapeBinary();

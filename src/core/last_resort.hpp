@@ -1,0 +1,14 @@
+// What the process does when an exception escapes where none can be caught:
+// a worker thread of an OpenMP region or of std::thread, where the runtime
+// calls std::terminate. Without this, std::bad_alloc in a parallel loop ends
+// the process with SIGABRT and a C++ runtime message; with it, every such
+// end is one "lbmshape: error:" line and the exit code of the error's kind
+// (out of memory: 5), after the temporary files and folders of work under
+// way are removed, as after a second Ctrl-C.
+#pragma once
+
+namespace lbmshape {
+
+void installLastResortHandler();
+
+}  // namespace lbmshape

@@ -1,0 +1,39 @@
+#include "core/worker_threads.hpp"
+
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include <omp.h>
+
+#include "core/log.hpp"
+
+namespace lbmshape {
+
+int prepareParallelRegions()
+{
+  const int wanted = omp_get_max_threads();
+  int made = 0;
+  {
+    std::vector<std::thread> probes;
+    try {
+      for (int i = 1; i < wanted; ++i, ++made) probes.emplace_back([] {});
+    } catch (const std::system_error&) {
+    }
+    for (auto& t : probes) t.join();
+  }
+  if (made + 1 < wanted) {
+    omp_set_num_threads(made + 1);
+    log::verbose("only " + std::to_string(made + 1) + " of " + std::to_string(wanted) +
+                 " threads could be started; parallel work uses " + std::to_string(made + 1));
+  }
+  int started = 1;
+#pragma omp parallel
+  {
+#pragma omp single
+    started = omp_get_num_threads();
+  }
+  return started;
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,28 @@
+// Which meshes a glTF scene shows, and where: the node trees walked without
+// recursion (a file controls their depth), after checking that they are
+// trees, as glTF requires. Nodes that share a child would otherwise double
+// the work at every level (2^20 paths from a 1 KB file).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+#include "mesh/mesh_source.hpp"
+
+namespace lbmshape {
+
+struct GltfInstance {
+  int mesh;          // an index into model.meshes, checked
+  glm::dmat4 world;  // the node's world transform
+};
+
+// The meshes of the scene to show (the default scene, else scene 0, else
+// every node without a parent), each with its node's world transform, in
+// depth-first order. Throws InputError for an index out of range, a node
+// that is its own ancestor, a node with two parents, or a scene that lists
+// a node that is not a root.
+std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const MeshSource& source);
+
+}  // namespace lbmshape

@@ -1,0 +1,46 @@
+#include "mesh/vertex_welding.hpp"
+
+#include <bit>
+#include <cstdint>
+
+
+namespace lbmshape {
+namespace {
+
+uint64_t hashOf(const glm::dvec3& p)
+{
+  uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (int k = 0; k < 3; ++k) {
+    h ^= std::bit_cast<uint64_t>(p[k] + 0.0);  // + 0.0 turns -0 into +0
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return h;
+}
+
+}  // namespace
+
+TriangleMesh weldEqualPositions(const std::vector<glm::dvec3>& corners)
+{
+  // Open addressing with linear probing over a power-of-two table at most
+  // half full: a hash map of this size made of nodes would cost several
+  // times the memory and time.
+  size_t capacity = 16;
+  while (capacity < 2 * corners.size()) capacity *= 2;
+  std::vector<uint32_t> slots(capacity, UINT32_MAX);  // vertex number, or empty
+  TriangleMesh mesh;
+  mesh.triangles.resize(corners.size() / 3);
+  for (size_t c = 0; c < corners.size() / 3 * 3; ++c) {
+    const glm::dvec3 p = corners[c] + 0.0;
+    size_t slot = hashOf(p) & (capacity - 1);
+    while (slots[slot] != UINT32_MAX && mesh.positions[slots[slot]] != p) slot = (slot + 1) & (capacity - 1);
+    if (slots[slot] == UINT32_MAX) {
+      slots[slot] = uint32_t(mesh.positions.size());
+      mesh.positions.push_back(p);
+    }
+    mesh.triangles[c / 3][int(c % 3)] = slots[slot];
+  }
+  return mesh;
+}
+
+}  // namespace lbmshape

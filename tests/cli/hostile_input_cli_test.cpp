@@ -1,0 +1,145 @@
+// The whole program on hostile input, as a service running it on uploaded
+// files would: every malformed mesh, read by `compare` and by `denoise`
+// under a 4 GB address-space limit, ends with exit 3, one error line and
+// nothing written; and when memory does run out, or stdout cannot be
+// written, the exit code says so (5, 4) instead of a signal.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_writer.hpp"
+#include "support/cli_runner.hpp"
+#include "support/mesh_file_cases.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::MeshFileCase;
+
+void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+constexpr size_t fourGigabytes = 4096;
+
+class HostileFileCli : public ::testing::TestWithParam<MeshFileCase> {
+protected:
+  void SetUp() override
+  {
+    input_ = folder_ / (GetParam().name + GetParam().extension);
+    writeBytes(input_, GetParam().bytes);
+    writeMesh(testing::box({0, 0, 0}, {1, 1, 1}), folder_ / "cube.obj");
+    fs::create_directory(folder_ / "out");
+  }
+
+  void expectRefused(const testing::CliResult& result)
+  {
+    EXPECT_EQ(result.exitCode, 3) << result.err;
+    const auto lines = testing::nonEmptyLines(result.err);
+    ASSERT_EQ(lines.size(), 1u) << result.err;
+    EXPECT_EQ(lines[0].rfind("lbmshape: error: cannot read " + input_.string(), 0), 0u) << lines[0];
+    EXPECT_NE(lines[0].find(GetParam().refusal), std::string::npos) << lines[0];
+    EXPECT_TRUE(fs::is_empty(folder_ / "out")) << "nothing written";
+  }
+
+  testing::ScratchFolder folder_;
+  fs::path input_;
+};
+
+TEST_P(HostileFileCli, CompareRefusesIt)
+{
+  expectRefused(testing::runLbmshapeWithin(fourGigabytes, {"compare", input_.string(), (folder_ / "cube.obj").string(), "-q"}));
+}
+
+TEST_P(HostileFileCli, DenoiseRefusesIt)
+{
+  expectRefused(testing::runLbmshapeWithin(
+      fourGigabytes, {"denoise", input_.string(), (folder_ / "out" / "out.glb").string(), "--res", "24", "-q"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostileFileCli, ::testing::ValuesIn(testing::hostileMeshFiles()),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(MemoryPressure, CompareEndsWithItsResultOrOutOfMemoryNeverASignal)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(6), folder / "a.obj");
+  writeMesh(testing::icosphere(6, 1.01), folder / "b.obj");
+  for (size_t megabytes : {60, 100, 150, 250}) {
+    const auto result =
+        testing::runLbmshapeWithin(megabytes, {"compare", (folder / "a.obj").string(), (folder / "b.obj").string(), "-q"});
+    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n" << result.err;
+    if (result.exitCode == 5) {
+      EXPECT_EQ(testing::nonEmptyLines(result.err).size(), 1u) << result.err;
+      EXPECT_NE(result.err.find("lbmshape: error: out of memory"), std::string::npos) << result.err;
+    }
+  }
+}
+
+TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
+  for (size_t megabytes : {150, 300, 500, 800}) {
+    const fs::path frames = folder / ("frames" + std::to_string(megabytes));
+    const auto result = testing::runLbmshapeWithin(megabytes, {"morph", (folder / "a.obj").string(),
+                                                               (folder / "b.obj").string(), frames.string(),
+                                                               "--res", "48", "--frames", "6", "-q"});
+    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n" << result.err;
+    if (result.exitCode == 5) {
+      // One error line (the tests run with the validation layer on, whose
+      // warnings about the failed allocation may come before it).
+      const auto lines = testing::nonEmptyLines(result.err);
+      EXPECT_EQ(std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("lbmshape: error: ", 0) == 0; }), 1)
+          << result.err;
+    }
+    if (fs::exists(frames)) {
+      EXPECT_FALSE(fs::is_empty(frames)) << megabytes << " MB: an empty folder was left behind";
+      for (const auto& entry : fs::directory_iterator(frames))
+        EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary file was left: " << entry.path();
+    }
+  }
+}
+
+TEST(StandardOutput, ResultsThatCannotBeWrittenAreAnOutputError)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(1), folder / "a.obj");
+  const auto result = testing::runLbmshape({"compare", (folder / "a.obj").string(), (folder / "a.obj").string(), "--json"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  // runLbmshape sends stdout to a file; /dev/full is the disk that is always full.
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
+  const std::string mesh = (folder / "a.obj").string();
+  std::string command(1, '\'');
+  for (const std::string& piece : {testing::lbmshapeBinary(), std::string("' compare '"), mesh, std::string("' '"), mesh,
+                                   std::string("' --json >/dev/full 2>/dev/null")})
+    command += piece;
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+}
+
+TEST(JobsFileInput, NestedWithoutBoundIsAnInputErrorNotAStackOverflow)
+{
+  testing::ScratchFolder folder;
+  writeBytes(folder / "jobs.json", std::string(100000, '[') + std::string(100000, ']'));
+  const auto result = testing::runLbmshape({"run", (folder / "jobs.json").string()});
+  EXPECT_EQ(result.exitCode, 3) << result.err;
+  EXPECT_NE(result.err.find("nests more than"), std::string::npos) << result.err;
+}
+
+TEST(JobsFileInput, AFolderIsAnInputError)
+{
+  testing::ScratchFolder folder;
+  const auto result = testing::runLbmshape({"run", folder.path().string()});
+  EXPECT_EQ(result.exitCode, 3) << result.err;
+  EXPECT_NE(result.err.find("it is a folder"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -20,6 +20,10 @@ void CommonOptions::closeDevice() const
   if (device_) device_->close();
 }
 
-void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+void printJson(const nlohmann::json& document)
+{
+  // Messages may quote bytes of a file that are not UTF-8: replaced, not thrown.
+  std::cout << document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+}
 
 }  // namespace lbmshape::cli

@@ -32,10 +32,14 @@ std::string outOfMemory(const CLI::App& app)
 
 int fail(lbmshape::ExitCode code, const std::string& message)
 {
-  // One line, whatever the message: scripts grep for it.
+  // One line of printable text, whatever the message (it may quote a
+  // file's bytes): scripts grep for it, terminals show it.
   std::string line = message;
   for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r' || c == '\t')
+      c = ' ';
+    else if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+      c = '?';
   std::cerr << "lbmshape: error: " << line << std::endl;
   return int(code);
 }

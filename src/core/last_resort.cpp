@@ -12,13 +12,16 @@
 namespace lbmshape {
 namespace {
 
-// Writes without allocating: memory may be exactly what ran out.
+// Writes one line of printable text without allocating: memory may be
+// exactly what ran out.
 void writeLine(const char* message)
 {
-  const char* prefix = "lbmshape: error: ";
-  [[maybe_unused]] auto a = ::write(STDERR_FILENO, prefix, std::strlen(prefix));
-  [[maybe_unused]] auto b = ::write(STDERR_FILENO, message, std::strlen(message));
-  [[maybe_unused]] auto c = ::write(STDERR_FILENO, "\n", 1);
+  char line[1024] = "lbmshape: error: ";
+  size_t n = std::strlen(line);
+  for (const char* c = message; *c && n + 1 < sizeof line; ++c)
+    line[n++] = static_cast<unsigned char>(*c) >= 0x20 && static_cast<unsigned char>(*c) < 0x7f ? *c : '?';
+  line[n++] = '\n';
+  [[maybe_unused]] auto written = ::write(STDERR_FILENO, line, n);
 }
 
 [[noreturn]] void onTerminate()

@@ -63,6 +63,7 @@ GltfAccessors::Span GltfAccessors::span(int bufferView, uint64_t byteOffset, uin
     fail(name + " reaches past the end of its buffer");
   const uint64_t stride = strided && view.byteStride ? view.byteStride : elementSize;
   if (stride < elementSize) fail(name + "'s byteStride " + std::to_string(stride) + " is less than an element of " + what);
+  if (byteOffset > view.byteLength) fail(what + " begins past the end of " + name);
   if (count > 0) {
     // byteOffset + stride * (count - 1) + elementSize, without wrapping.
     const auto last = checkedMultiply(stride, count - 1);

@@ -72,7 +72,7 @@ GltfFileAccess::GltfFileAccess(const MeshSource& source, const std::vector<GltfB
     if (!source.folder)
       source.refuse(name + " names a file, but the glTF was not read from a folder (use a .glb or data: URIs)");
     const fs::path folder = source.folder->empty() ? fs::path(".") : *source.folder;
-    allowed_[normal((folder / *file).string())] = buffers[b].byteLength;
+    allowed_[normal((folder / *file).string())] = Allowed{buffers[b].byteLength};
   }
 }
 
@@ -89,7 +89,9 @@ tinygltf::FsCallbacks GltfFileAccess::callbacks()
 
 bool GltfFileAccess::fileExists(const std::string& path, void* self)
 {
-  return static_cast<GltfFileAccess*>(self)->allowed_.count(normal(path)) > 0;
+  const auto& allowed = static_cast<GltfFileAccess*>(self)->allowed_;
+  const auto found = allowed.find(normal(path));
+  return found != allowed.end() && !found->second.read;
 }
 
 std::string GltfFileAccess::expandFilePath(const std::string& path, void*) { return path; }  // no ~ or $VAR
@@ -99,27 +101,33 @@ bool GltfFileAccess::readWholeFile(std::vector<unsigned char>* out, std::string*
 {
   auto& access = *static_cast<GltfFileAccess*>(self);
   const auto allowed = access.allowed_.find(normal(path));
-  if (allowed == access.allowed_.end()) {
+  if (allowed == access.allowed_.end() || allowed->second.read) {
     if (error) *error = "not a buffer of this file";
     return false;
   }
+  allowed->second.read = true;
+  auto refuse = [&](const std::string& why) {
+    access.refusal_ = "the buffer file " + text::quoted(path) + (why.starts_with(":") ? "" : " ") + why;
+    if (error) *error = access.refusal_.value();
+    return false;
+  };
   try {
+    // A symbolic link inside the folder must not lead out of it.
+    const std::string folder = fs::weakly_canonical(access.baseDirectory()).string();
+    const std::string target = fs::weakly_canonical(path).string();
+    if (!target.starts_with(folder + "/")) return refuse("leads out of the glTF file's folder (a symbolic link)");
     // Refuses anything but a regular file before reading a byte of it.
     const MappedFile file(path);
-    if (file.bytes().size() != allowed->second) {
-      access.refusal_ = "the buffer file " + text::quoted(path) + " has " + std::to_string(file.bytes().size()) +
-                        " bytes, but its buffer declares " + std::to_string(allowed->second);
-      return false;
-    }
+    if (file.bytes().size() != allowed->second.byteLength)
+      return refuse("does not have the " + std::to_string(allowed->second.byteLength) + " bytes its buffer declares");
     out->assign(file.bytes().begin(), file.bytes().end());
     return true;
   } catch (const InputError& e) {
     // "cannot read PATH: why" -> "the buffer file 'PATH': why"
     const std::string message = e.what(), prefix = "cannot read " + path + ": ";
-    access.refusal_ = "the buffer file " + text::quoted(path) + ": " +
-                      (message.starts_with(prefix) ? message.substr(prefix.size()) : message);
-    if (error) *error = access.refusal_.value();
-    return false;
+    return refuse(message.starts_with(prefix) ? ": " + message.substr(prefix.size()) : ": " + message);
+  } catch (const fs::filesystem_error& e) {
+    return refuse(std::string(": ") + e.code().message());
   }
 }
 

@@ -3,7 +3,8 @@
 // access would follow "../../etc/passwd" or an absolute path, search the
 // current folder too, open a FIFO and wait on it, and read every image a
 // file names; these callbacks allow exactly the buffers checked here, each
-// a regular file of the size its buffer declares.
+// a regular file of the size its buffer declares, inside the folder also
+// after following symbolic links, and each read at most once.
 #pragma once
 
 #include <cstdint>
@@ -45,7 +46,11 @@ private:
   static bool writeWholeFile(std::string* error, const std::string& path, const std::vector<unsigned char>&, void* self);
 
   const MeshSource& source_;
-  std::map<std::string, uint64_t> allowed_;  // lexically normal path -> the byte length its buffer declares
+  struct Allowed {
+    uint64_t byteLength;  // what its buffer declares
+    bool read = false;    // tinygltf may ask again for an image naming the same file: it gets nothing
+  };
+  std::map<std::string, Allowed> allowed_;  // by lexically normal path
   std::optional<std::string> refusal_;
 };
 

@@ -1,9 +1,12 @@
-// A first pass over a glTF file's JSON, before tinygltf parses it: tinygltf
-// (and nlohmann's json, which it uses) recurse once per level of nesting, so
-// a file nested 50,000 deep would overflow the stack inside them. This pass
-// is nlohmann's SAX parser, which does not recurse: it refuses nesting
-// beyond what any real glTF file needs and notes what the reader must know
-// before tinygltf touches the file system: the buffers' URIs and sizes.
+// A first pass over a glTF file's JSON, before tinygltf parses it. tinygltf
+// (and nlohmann's json under it) recurse once per level of nesting, so a
+// file nested 50,000 deep would overflow the stack inside them; they build
+// hundreds of bytes of structures per JSON value, so 100 MB of "[0,0,...]"
+// would take many gigabytes; and tinygltf trusts a few numbers it then reads
+// memory by (an image's buffer view, a GLB's buffers). This pass is
+// nlohmann's SAX parser, which does not recurse and builds nothing: it
+// refuses all of that, and notes what the reader must know before tinygltf
+// touches the file system: the buffers' URIs and sizes.
 #pragma once
 
 #include <cstdint>
@@ -23,9 +26,12 @@ struct GltfBufferEntry {
   uint64_t byteLength = 0;
 };
 
-// Throws InputError naming `source` when `json` is not JSON or nests deeper
-// than maxGltfJsonDepth. The buffers array is read as far as it is well
-// formed; tinygltf checks the rest.
-std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, const MeshSource& source);
+// Throws InputError naming `source` when `json` is not JSON, nests deeper
+// than maxGltfJsonDepth, holds more values than tinygltf could build in
+// memory proportionate to the file, declares a buffer of 0 bytes or two
+// buffers on one file, gives a GLB more than one buffer of its own (or not
+// as buffer 0), or has an image whose buffer view reaches past its buffer.
+// Returns the buffers; tinygltf checks the rest.
+std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, const MeshSource& source);
 
 }  // namespace lbmshape

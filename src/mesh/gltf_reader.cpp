@@ -34,17 +34,34 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-// The JSON of a .gltf file, or of a GLB container's first chunk.
+uint32_t word(std::string_view bytes, size_t at)
+{
+  uint32_t value;
+  std::memcpy(&value, bytes.data() + at, 4);  // little-endian, as GLB is
+  return value;
+}
+
+// The JSON of a .gltf file, or of a GLB container, whose chunks are checked
+// here: tinygltf reads a binary chunk that claims more bytes than follow it.
 std::string_view jsonOf(const MeshSource& source, MeshFormat format)
 {
   if (format == MeshFormat::Gltf) return source.bytes;
-  // GLB: magic, version, length, then a chunk: length, type "JSON", bytes.
-  if (source.bytes.size() < 20 || source.bytes.substr(0, 4) != "glTF") source.refuse("not a GLB file (no 'glTF' magic)");
-  uint32_t length;
-  std::memcpy(&length, source.bytes.data() + 12, 4);
-  if (source.bytes.substr(16, 4) != "JSON" || length > source.bytes.size() - 20)
+  // GLB: magic, version, length; chunk 0: length, "JSON", bytes; then
+  // optionally chunk 1: length, "BIN\0", bytes.
+  const std::string_view bytes = source.bytes;
+  if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") source.refuse("not a GLB file (no 'glTF' magic)");
+  if (word(bytes, 8) > bytes.size()) source.refuse("its GLB header claims more bytes than the file has");
+  const uint64_t jsonLength = word(bytes, 12);
+  if (bytes.substr(16, 4) != "JSON" || jsonLength > bytes.size() - 20)
     source.refuse("its first GLB chunk is not JSON that fits in the file");
-  return source.bytes.substr(20, length);
+  const uint64_t rest = bytes.size() - 20 - jsonLength;
+  if (rest > 0) {
+    if (rest < 8 || uint64_t(word(bytes, 20 + jsonLength)) > rest - 8)
+      source.refuse("its second GLB chunk claims more bytes than follow it");
+    if (bytes.substr(20 + jsonLength + 4, 4) != std::string_view("BIN\0", 4))
+      source.refuse("its second GLB chunk is not a binary chunk");
+  }
+  return bytes.substr(20, jsonLength);
 }
 
 tinygltf::Model load(const MeshSource& source, MeshFormat format, GltfFileAccess& files)
@@ -57,10 +74,18 @@ tinygltf::Model load(const MeshSource& source, MeshFormat format, GltfFileAccess
   std::string error, warning;
   const auto* bytes = reinterpret_cast<const unsigned char*>(source.bytes.data());
   const auto size = static_cast<unsigned int>(source.bytes.size());
-  const bool ok =
-      format == MeshFormat::Glb
-          ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes, size, files.baseDirectory())
-          : loader.LoadASCIIFromString(&model, &error, &warning, source.bytes.data(), size, files.baseDirectory());
+  bool ok = false;
+  try {
+    ok = format == MeshFormat::Glb
+             ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes, size, files.baseDirectory())
+             : loader.LoadASCIIFromString(&model, &error, &warning, source.bytes.data(), size, files.baseDirectory());
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    // What tinygltf throws (std::out_of_range on some malformed buffers) is
+    // the file's fault like any other parse failure.
+    source.refuse("not a readable " + formatName(format) + " file (" + text::printable(e.what()) + ")");
+  }
   if (!warning.empty()) log::verbose("reading " + source.name + ": tinygltf: " + text::printable(warning));
   if (files.refusal()) source.refuse(*files.refusal());
   if (!ok)
@@ -77,27 +102,44 @@ public:
   }
 
   // Counts what the instances would add, and refuses it beyond the budget
-  // before anything is read or reserved.
-  void requireWithinBudget(const std::vector<GltfInstance>& instances, uint64_t budget) const
+  // before anything is read or reserved. Each mesh is counted once: a file
+  // may place a mesh of many primitives many times.
+  void requireWithinBudget(const std::vector<GltfInstance>& instances, uint64_t budget, uint64_t inputBytes) const
   {
-    uint64_t vertices = 0, triangles = 0;
-    for (const GltfInstance& instance : instances)
-      for (size_t p = 0; p < model_.meshes[size_t(instance.mesh)].primitives.size(); ++p) {
-        const auto& primitive = model_.meshes[size_t(instance.mesh)].primitives[p];
-        const std::string name = primitiveName(instance.mesh, p);
-        const int mode = modeOf(primitive);
-        auto position = primitive.attributes.find("POSITION");
-        if (!isTriangles(mode) || position == primitive.attributes.end()) continue;
-        const uint64_t v = accessors_.count(position->second, TINYGLTF_TYPE_VEC3, name + " POSITION");
-        const uint64_t corners =
-            primitive.indices >= 0 ? accessors_.count(primitive.indices, TINYGLTF_TYPE_SCALAR, name + " indices") : v;
-        vertices += v;  // each term is at most the input's size: no overflow
-        triangles += mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 2 ? corners - 2 : 0;
-        if (vertices * sizeof(glm::dvec3) + triangles * sizeof(glm::uvec3) > budget)
-          source_.refuse("its scene places its meshes " + std::to_string(instances.size()) +
-                         " times, more geometry than lbmshape reads from a file of this size (" +
-                         std::to_string(budget >> 20) + " MiB)");
+    struct Totals {
+      uint64_t vertices = 0, triangles = 0;
+      bool counted = false;
+    };
+    std::vector<Totals> perMesh(model_.meshes.size());
+    uint64_t vertices = 0, triangles = 0, placedPrimitives = 0;
+    for (const GltfInstance& instance : instances) {
+      const auto& primitives = model_.meshes[size_t(instance.mesh)].primitives;
+      Totals& t = perMesh[size_t(instance.mesh)];
+      if (!t.counted) {
+        for (size_t p = 0; p < primitives.size(); ++p) {
+          const auto& primitive = primitives[p];
+          const int mode = modeOf(primitive);
+          auto position = primitive.attributes.find("POSITION");
+          if (!isTriangles(mode) || position == primitive.attributes.end()) continue;
+          const std::string name = primitiveName(instance.mesh, p);
+          const uint64_t v = accessors_.count(position->second, TINYGLTF_TYPE_VEC3, name + " POSITION");
+          const uint64_t corners =
+              primitive.indices >= 0 ? accessors_.count(primitive.indices, TINYGLTF_TYPE_SCALAR, name + " indices") : v;
+          t.vertices += v;  // each term is at most the input's size: no overflow
+          t.triangles += mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 2 ? corners - 2 : 0;
+        }
+        t.counted = true;
       }
+      // Every placement of every primitive costs a pass, even one that adds nothing.
+      placedPrimitives += primitives.size();
+      vertices += t.vertices;
+      triangles += t.triangles;
+      if (placedPrimitives > std::max<uint64_t>(uint64_t(1) << 20, inputBytes) ||
+          vertices * sizeof(glm::dvec3) + triangles * sizeof(glm::uvec3) > budget)
+        source_.refuse("its scene places its meshes " + std::to_string(instances.size()) +
+                       " times, more geometry than lbmshape reads from a file of this size (" +
+                       std::to_string(budget >> 20) + " MiB)");
+    }
     if (vertices > UINT32_MAX) source_.refuse("more vertices than lbmshape can index (2^32 - 1)");
   }
 
@@ -172,7 +214,7 @@ TriangleMesh readGltf(const MeshSource& source, MeshFormat format)
 {
   // Before tinygltf sees the file: nesting it could not survive, and the
   // buffer files it would open.
-  const std::vector<GltfBufferEntry> buffers = checkGltfJson(jsonOf(source, format), source);
+  const std::vector<GltfBufferEntry> buffers = checkGltfJson(jsonOf(source, format), format == MeshFormat::Glb, source);
   GltfFileAccess files(source, buffers);
   const tinygltf::Model model = load(source, format, files);
   for (const auto& extension : model.extensionsRequired)
@@ -184,7 +226,7 @@ TriangleMesh readGltf(const MeshSource& source, MeshFormat format)
   const GltfAccessors accessors(model, source, inputBytes);
   const std::vector<GltfInstance> instances = meshInstances(model, source);
   SoupBuilder builder(model, source, accessors);
-  builder.requireWithinBudget(instances, geometryBudget(inputBytes));
+  builder.requireWithinBudget(instances, geometryBudget(inputBytes), inputBytes);
   for (const GltfInstance& instance : instances) builder.add(instance);
   return builder.take();
 }

@@ -17,6 +17,7 @@
 #include <optional>
 
 #include "core/log.hpp"
+#include "mesh/fan_triangulation.hpp"
 #include "mesh/text_chunks.hpp"
 #include "mesh/text_scan.hpp"
 
@@ -25,7 +26,31 @@ namespace {
 
 enum class Statement { Vertex, Face, Other };
 
-// The statement of a line and what follows its keyword.
+// The next statement: a line, joined with the lines after it while it ends
+// with a backslash (OBJ's line continuation), without a trailing comment.
+// `lines` counts the lines it took; `scratch` holds a joined statement.
+std::string_view nextStatement(std::string_view& rest, std::string& scratch, size_t& lines)
+{
+  std::string_view line = text::nextLine(rest);
+  lines = 1;
+  if (line.ends_with('\\')) {
+    scratch.assign(line.substr(0, line.size() - 1));
+    while (!rest.empty()) {
+      const std::string_view more = text::nextLine(rest);
+      ++lines;
+      scratch += ' ';
+      if (!more.ends_with('\\')) {
+        scratch += more;
+        break;
+      }
+      scratch += more.substr(0, more.size() - 1);
+    }
+    line = scratch;
+  }
+  return line.substr(0, line.find('#'));
+}
+
+// The kind of a statement and what follows its keyword.
 Statement classify(std::string_view line, std::string_view& arguments)
 {
   line = text::skipBlanks(line);
@@ -45,10 +70,12 @@ ChunkCounts count(std::string_view chunk)
 {
   ChunkCounts counts;
   std::string_view arguments;
+  std::string scratch;
+  size_t lines = 0;
   while (!chunk.empty()) {
-    const std::string_view line = text::nextLine(chunk);
-    ++counts.lines;
-    if (classify(line, arguments) == Statement::Vertex) ++counts.vertices;
+    const std::string_view statement = nextStatement(chunk, scratch, lines);
+    counts.lines += lines;
+    if (classify(statement, arguments) == Statement::Vertex) ++counts.vertices;
   }
   return counts;
 }
@@ -73,9 +100,11 @@ public:
   {
     std::string_view arguments;
     std::vector<uint32_t> corners;
+    std::string scratch;
+    size_t lines = 0;
     while (!chunk.empty() && !result.fault) {
-      const std::string_view line = text::nextLine(chunk);
-      ++lineNumber_;
+      const std::string_view line = nextStatement(chunk, scratch, lines);
+      lineNumber_ += lines;
       switch (classify(line, arguments)) {
         case Statement::Vertex: vertex(line, arguments, result); break;
         case Statement::Face: face(line, arguments, corners, result); break;
@@ -118,8 +147,7 @@ private:
       ++result.shortFaces;
       return;
     }
-    // Fan triangulation: exact for the convex polygons files normally hold.
-    for (size_t k = 1; k + 1 < corners.size(); ++k) result.triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
+    appendFan(corners, result.triangles);
   }
 
   void fail(ChunkResult& result, const std::string& what)
@@ -127,17 +155,31 @@ private:
     result.fault = "line " + std::to_string(lineNumber_) + ": " + what;
   }
 
-  size_t lineNumber_;  // of the line being parsed, from 1
+  size_t lineNumber_;  // of the (last) line being parsed, from 1
   size_t firstVertex_;
   size_t verticesRead_ = 0;
   std::vector<glm::dvec3>& positions_;
 };
 
+// Chunks of whole statements: a chunk that ends inside a continued line
+// takes the next chunk in too.
+std::vector<std::string_view> statementChunks(std::string_view text)
+{
+  std::vector<std::string_view> chunks;
+  for (std::string_view chunk : splitIntoLineChunks(text)) {
+    if (!chunks.empty() && (chunks.back().ends_with("\\\n") || chunks.back().ends_with("\\\r\n")))
+      chunks.back() = std::string_view(chunks.back().data(), chunks.back().size() + chunk.size());
+    else
+      chunks.push_back(chunk);
+  }
+  return chunks;
+}
+
 }  // namespace
 
 TriangleMesh readObj(const MeshSource& source)
 {
-  const std::vector<std::string_view> chunks = splitIntoLineChunks(source.bytes);
+  const std::vector<std::string_view> chunks = statementChunks(text::withoutByteOrderMark(source.bytes));
   const size_t n = chunks.size();
 
   std::vector<ChunkCounts> counts(n);

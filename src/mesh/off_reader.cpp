@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/log.hpp"
+#include "mesh/fan_triangulation.hpp"
 #include "mesh/text_scan.hpp"
 
 namespace lbmshape {
@@ -22,7 +23,7 @@ struct OffHeader {
 // The lines of an ASCII OFF file that hold something, comments removed.
 class OffLines {
 public:
-  explicit OffLines(const MeshSource& source) : source_(source), rest_(source.bytes) {}
+  explicit OffLines(const MeshSource& source) : source_(source), rest_(text::withoutByteOrderMark(source.bytes)) {}
 
   // The next line with content; empty at the end of the file.
   std::string_view next()
@@ -89,11 +90,6 @@ Counts readCounts(OffLines& lines, std::string_view words)
   return {uint64_t(*vertices), uint64_t(*faces)};
 }
 
-void fan(const std::vector<uint32_t>& corners, TriangleMesh& mesh)
-{
-  for (size_t k = 1; k + 1 < corners.size(); ++k) mesh.triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
-}
-
 size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& counts, TriangleMesh& mesh)
 {
   // A vertex line takes at least 6 bytes ("0 0 0\n"), a face line 2 ("0\n").
@@ -101,8 +97,7 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
   if (counts.vertices > left / 6 || counts.faces > left / 2 || counts.vertices * 6 + counts.faces * 2 > left)
     source.refuse("the counts (" + std::to_string(counts.vertices) + " vertices, " + std::to_string(counts.faces) +
                   " faces) are more than the rest of the file can hold");
-  mesh.positions.reserve(counts.vertices);
-  mesh.triangles.reserve(counts.faces);
+  mesh.positions.reserve(counts.vertices);  // the triangles grow as faces are read: a face may add none
   for (uint64_t v = 0; v < counts.vertices; ++v) {
     std::string_view line = lines.next();
     if (line.empty())
@@ -137,7 +132,7 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
       corners.push_back(uint32_t(*index));
     }
     if (corners.size() < 3) ++shortFaces;
-    fan(corners, mesh);
+    appendFan(corners, mesh.triangles);
   }
   return shortFaces;
 }
@@ -204,7 +199,7 @@ size_t readBinaryBody(const MeshSource& source, std::string_view body, const Off
       source.refuse("binary face " + std::to_string(f) + " has " + std::to_string(colours) + " colour components");
     for (int32_t c = 0; c < colours; ++c) words.number("the last face");
     if (corners.size() < 3) ++shortFaces;
-    fan(corners, mesh);
+    appendFan(corners, mesh.triangles);
   }
   return shortFaces;
 }

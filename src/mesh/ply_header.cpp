@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 #include "mesh/text_scan.hpp"
@@ -56,10 +57,15 @@ size_t PlyElement::leastBytesPerEntry(PlyEncoding encoding) const
   return bytes;
 }
 
+// Far more than any PLY file has, and small enough that the header's own
+// structures stay small whatever the file holds.
+constexpr size_t maxElements = 1000, maxProperties = 1000;
+
 PlyHeader parsePlyHeader(const MeshSource& source)
 {
   PlyHeader header;
-  std::string_view rest = source.bytes;
+  std::unordered_set<std::string> elementNames;
+  std::string_view rest = text::withoutByteOrderMark(source.bytes);
   size_t lineNumber = 0;
   bool sawFormat = false;
   auto fail = [&](const std::string& what) { source.refuse("line " + std::to_string(lineNumber) + ": " + what); };
@@ -76,7 +82,7 @@ PlyHeader parsePlyHeader(const MeshSource& source)
     if (keyword == "comment" || keyword == "obj_info" || keyword.empty()) continue;
     if (keyword == "end_header") {
       if (!sawFormat) fail("the header ends without a 'format' line");
-      header.bodyOffset = source.bytes.size() - rest.size();
+      header.bodyOffset = source.bytes.size() - rest.size();  // counted from the file's start, mark or not
       header.bodyFirstLine = lineNumber + 1;
       return header;
     }
@@ -100,13 +106,15 @@ PlyHeader parsePlyHeader(const MeshSource& source)
       const auto count = text::integer(text::nextToken(words));
       if (element.name.empty() || !count || !text::nextToken(words).empty())
         fail(text::quoted(line) + " is not 'element NAME COUNT'");
-      if (*count < 0) fail("element '" + element.name + "' has a negative count (" + std::to_string(*count) + ")");
-      for (const PlyElement& e : header.elements)
-        if (e.name == element.name) fail("a second element named '" + element.name + "'");
+      if (*count < 0) fail("element " + text::quoted(element.name) + " has a negative count (" + std::to_string(*count) + ")");
+      if (!elementNames.insert(element.name).second) fail("a second element named " + text::quoted(element.name));
+      if (header.elements.size() == maxElements) fail("more than " + std::to_string(maxElements) + " elements");
       element.count = uint64_t(*count);
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) fail("a property before any element");
+      if (header.elements.back().properties.size() == maxProperties)
+        fail("more than " + std::to_string(maxProperties) + " properties in one element");
       PlyProperty property;
       std::string_view type = text::nextToken(words);
       if (type == "list") {

@@ -12,6 +12,7 @@
 
 #include "core/log.hpp"
 #include "mesh/ply_header.hpp"
+#include "mesh/fan_triangulation.hpp"
 #include "mesh/text_scan.hpp"
 
 namespace lbmshape {
@@ -136,7 +137,7 @@ Layout layoutOf(const PlyHeader& header, const MeshSource& source)
   for (size_t p = 0; p < vertexProperties.size(); ++p)
     for (int k = 0; k < 3; ++k)
       if (vertexProperties[p].name == std::string(1, char('x' + k))) {
-        if (vertexProperties[p].isList) source.refuse("vertex property '" + vertexProperties[p].name + "' is a list");
+        if (vertexProperties[p].isList) source.refuse("vertex property " + text::quoted(vertexProperties[p].name) + " is a list");
         layout.coordinate[k] = int(p);
       }
   for (int k = 0; k < 3; ++k)
@@ -148,7 +149,7 @@ Layout layoutOf(const PlyHeader& header, const MeshSource& source)
     if (layout.indices < 0) source.refuse("the face element has no 'vertex_indices' list");
     const PlyProperty& indices = faceProperties[size_t(layout.indices)];
     if (!indices.isList || !isInteger(indices.type))
-      source.refuse("the face element's '" + indices.name + "' is not a list of integers");
+      source.refuse("the face element's " + text::quoted(indices.name) + " is not a list of integers");
   }
   return layout;
 }
@@ -174,7 +175,7 @@ public:
           else
             skipEntry(element);
         } catch (const BodyFault& fault) {
-          source.refuse(where() + element.name + " " + std::to_string(entry + 1) + " of " +
+          source.refuse(where() + text::printable(element.name, 60) + " " + std::to_string(entry + 1) + " of " +
                         std::to_string(element.count) + ": " + fault.what);
         }
       }
@@ -230,7 +231,7 @@ private:
       ++shortFaces_;
       return;
     }
-    for (size_t k = 1; k + 1 < corners_.size(); ++k) mesh.triangles.emplace_back(corners_[0], corners_[k], corners_[k + 1]);
+    appendFan(corners_, mesh.triangles);
   }
 
   void skipEntry(const PlyElement& element)
@@ -271,7 +272,7 @@ void requireCountsFit(const MeshSource& source, const PlyHeader& header, size_t 
     const size_t least = element.leastBytesPerEntry(header.encoding);
     // + 1: the last ASCII value may end the file without a separator.
     if (least > 0 && element.count > (bodyBytes + 1) / least)
-      source.refuse("element '" + element.name + "' claims " + std::to_string(element.count) +
+      source.refuse("element " + text::quoted(element.name) + " claims " + std::to_string(element.count) +
                     " entries, more than the rest of the file can hold");
     needed += element.count * least;  // both terms <= bodyBytes + 1: no overflow
     if (needed > bodyBytes + 1)
@@ -284,9 +285,9 @@ template <typename Values>
 size_t readBody(const MeshSource& source, const PlyHeader& header, const Layout& layout, Values values,
                 TriangleMesh& mesh)
 {
-  // Exact for the vertices; at least one triangle per face.
+  // Exact for the vertices (counts were checked against the body); the
+  // triangles grow as faces are read, since a face may be empty.
   mesh.positions.reserve(size_t(layout.vertex->count));
-  if (layout.face) mesh.triangles.reserve(size_t(layout.face->count));
   BodyReader<Values> reader(header, layout, values);
   reader.read(source, mesh);
   return reader.shortFaces();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 
 #include "mesh/text_scan.hpp"
@@ -25,14 +26,19 @@ bool looksBinary(std::string_view bytes, uint64_t& triangles)
   return bytes.size() == headerBytes + countBytes + triangleBytes * uint64_t(count);
 }
 
-std::vector<glm::dvec3> readBinaryCorners(std::string_view bytes, uint64_t triangles)
+std::vector<glm::dvec3> readBinaryCorners(const MeshSource& source, uint64_t triangles)
 {
   std::vector<glm::dvec3> corners(3 * triangles);
-  const char* p = bytes.data() + headerBytes + countBytes;
+  const char* p = source.bytes.data() + headerBytes + countBytes;
   for (uint64_t t = 0; t < triangles; ++t, p += triangleBytes) {
     float xyz[9];
     std::memcpy(xyz, p + 12, sizeof xyz);  // after the facet normal, which lbmshape does not use
-    for (int k = 0; k < 3; ++k) corners[3 * t + k] = glm::dvec3(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+    for (int k = 0; k < 3; ++k) {
+      corners[3 * t + k] = glm::dvec3(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+      // Refused here, before welding, as the text formats refuse them.
+      if (!std::isfinite(xyz[3 * k]) || !std::isfinite(xyz[3 * k + 1]) || !std::isfinite(xyz[3 * k + 2]))
+        source.refuse("triangle " + std::to_string(t + 1) + " has a corner whose coordinates are not finite numbers");
+    }
   }
   return corners;
 }
@@ -48,7 +54,7 @@ bool keywordIs(std::string_view word, std::string_view keyword)
 // endloop / endfacet / ... / endsolid NAME, possibly several solids.
 class AsciiStl {
 public:
-  explicit AsciiStl(const MeshSource& source) : source_(source), rest_(source.bytes) {}
+  explicit AsciiStl(const MeshSource& source) : source_(source), rest_(text::withoutByteOrderMark(source.bytes)) {}
 
   std::vector<glm::dvec3> corners()
   {
@@ -129,8 +135,8 @@ TriangleMesh readStl(const MeshSource& source)
     return weldEqualPositions(corners);
   };
   uint64_t triangles = 0;
-  if (looksBinary(source.bytes, triangles)) return welded(readBinaryCorners(source.bytes, triangles));
-  std::string_view start = source.bytes.substr(0, std::min<size_t>(source.bytes.size(), 512));
+  if (looksBinary(source.bytes, triangles)) return welded(readBinaryCorners(source, triangles));
+  std::string_view start = text::withoutByteOrderMark(source.bytes.substr(0, std::min<size_t>(source.bytes.size(), 512)));
   if (keywordIs(text::nextToken(start), "solid")) return welded(AsciiStl(source).corners());
   if (source.bytes.size() >= headerBytes + countBytes)
     source.refuse("binary STL whose header counts " + std::to_string(triangles) + " triangles (" +

@@ -16,6 +16,12 @@ namespace lbmshape::text {
 inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 inline bool isSpace(char c) { return isBlank(c) || c == '\n'; }
 
+// Text without the UTF-8 byte order mark some editors put first.
+inline std::string_view withoutByteOrderMark(std::string_view text)
+{
+  return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
 // The next whitespace-separated token of `rest` (empty at the end), which
 // `rest` then no longer holds.
 inline std::string_view nextToken(std::string_view& rest)

@@ -2,19 +2,34 @@
 
 #include <bit>
 #include <cstdint>
+#include <random>
 
 
 namespace lbmshape {
 namespace {
 
-uint64_t hashOf(const glm::dvec3& p)
+// Keyed by a seed drawn once per process: a file cannot be made of
+// positions that all fall into one bucket (which would make the probing
+// quadratic) without knowing it. The result does not depend on the seed.
+uint64_t seed()
 {
-  uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (int k = 0; k < 3; ++k) {
-    h ^= std::bit_cast<uint64_t>(p[k] + 0.0);  // + 0.0 turns -0 into +0
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 32;
-  }
+  static const uint64_t value = (uint64_t(std::random_device()()) << 32) ^ std::random_device()();
+  return value;
+}
+
+uint64_t mix(uint64_t h)  // MurmurHash3's finaliser
+{
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ull;
+  return h ^ (h >> 33);
+}
+
+uint64_t hashOf(const glm::dvec3& p, uint64_t key)
+{
+  uint64_t h = key;
+  for (int k = 0; k < 3; ++k) h = mix(h ^ std::bit_cast<uint64_t>(p[k] + 0.0));  // + 0.0 turns -0 into +0
   return h;
 }
 
@@ -28,11 +43,12 @@ TriangleMesh weldEqualPositions(const std::vector<glm::dvec3>& corners)
   size_t capacity = 16;
   while (capacity < 2 * corners.size()) capacity *= 2;
   std::vector<uint32_t> slots(capacity, UINT32_MAX);  // vertex number, or empty
+  const uint64_t key = seed();
   TriangleMesh mesh;
   mesh.triangles.resize(corners.size() / 3);
   for (size_t c = 0; c < corners.size() / 3 * 3; ++c) {
     const glm::dvec3 p = corners[c] + 0.0;
-    size_t slot = hashOf(p) & (capacity - 1);
+    size_t slot = hashOf(p, key) & (capacity - 1);
     while (slots[slot] != UINT32_MAX && mesh.positions[slots[slot]] != p) slot = (slot + 1) & (capacity - 1);
     if (slots[slot] == UINT32_MAX) {
       slots[slot] = uint32_t(mesh.positions.size());

@@ -97,16 +97,26 @@ void prepareFolder(const fs::path& folder)
 // without unwinding.
 class FolderIfLeftEmpty {
 public:
+  // `folder` and any of its parents that do not exist yet count as this
+  // morph's: the topmost of them is what goes.
   explicit FolderIfLeftEmpty(const fs::path& folder) : folder_(folder)
   {
     std::error_code ec;
-    existed_ = fs::exists(folder, ec);
+    for (fs::path p = fs::absolute(folder, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+         p = p.parent_path()) {
+      topmostNew_ = p;
+      if (p == p.parent_path()) break;
+    }
   }
   ~FolderIfLeftEmpty()
   {
     temporary_files::forget(ticket_);
+    if (kept_ || topmostNew_.empty()) return;
+    // Only empty folders go, from the morph's own folder up to the topmost new one.
     std::error_code ec;
-    if (!kept_ && !existed_ && fs::is_empty(folder_, ec)) fs::remove(folder_, ec);
+    for (fs::path p = fs::absolute(folder_, ec).lexically_normal();; p = p.parent_path()) {
+      if (!fs::is_empty(p, ec) || !fs::remove(p, ec) || p == topmostNew_ || p == p.parent_path()) break;
+    }
   }
   FolderIfLeftEmpty(const FolderIfLeftEmpty&) = delete;
   FolderIfLeftEmpty& operator=(const FolderIfLeftEmpty&) = delete;
@@ -114,13 +124,13 @@ public:
   // Call once the folder exists.
   void created()
   {
-    if (!existed_) ticket_ = temporary_files::remember(folder_);
+    if (!topmostNew_.empty()) ticket_ = temporary_files::remember(folder_);
   }
   void keep() { kept_ = true; }
 
 private:
   fs::path folder_;
-  bool existed_ = true;
+  fs::path topmostNew_;  // empty when the folder existed
   bool kept_ = false;
   int ticket_ = -1;
 };

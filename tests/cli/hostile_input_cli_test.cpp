@@ -86,7 +86,8 @@ TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
   for (size_t megabytes : {150, 300, 500, 800}) {
-    const fs::path frames = folder / ("frames" + std::to_string(megabytes));
+    // Two folders deep, both new: a failed morph removes both.
+    const fs::path frames = folder / ("run" + std::to_string(megabytes)) / "frames";
     const auto result = testing::runLbmshapeWithin(megabytes, {"morph", (folder / "a.obj").string(),
                                                                (folder / "b.obj").string(), frames.string(),
                                                                "--res", "48", "--frames", "6", "-q"});
@@ -98,6 +99,7 @@ TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
       EXPECT_EQ(std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("lbmshape: error: ", 0) == 0; }), 1)
           << result.err;
     }
+    EXPECT_EQ(fs::exists(frames.parent_path()), fs::exists(frames)) << megabytes << " MB: an empty parent was left behind";
     if (fs::exists(frames)) {
       EXPECT_FALSE(fs::is_empty(frames)) << megabytes << " MB: an empty folder was left behind";
       for (const auto& entry : fs::directory_iterator(frames))

@@ -115,6 +115,24 @@ TEST(GltfBuffer, OutsideTheFolderIsNeverOpenedEvenWhenItExists)
   EXPECT_NE(refusalOf([&] { readMesh(gltf); }).find("leaves the glTF file's folder"), std::string::npos);
 }
 
+TEST(GltfBuffer, ASymbolicLinkOutOfTheFolderIsRefused)
+{
+  testing::ScratchFolder folder;
+  fs::create_directory(folder / "inner");
+  gltfWithBuffer(folder.path(), "model.bin");  // the real buffer, one folder up
+  const fs::path gltf = gltfWithBuffer(folder / "inner", "link.bin");
+  fs::create_symlink(folder / "model.bin", folder / "inner" / "link.bin");
+  EXPECT_NE(refusalOf([&] { readMesh(gltf); }).find("leads out of the glTF file's folder"), std::string::npos);
+}
+
+TEST(GltfBuffer, ASymbolicLinkInsideTheFolderIsFollowed)
+{
+  testing::ScratchFolder folder;
+  const fs::path gltf = gltfWithBuffer(folder.path(), "link.bin");
+  fs::create_symlink(folder / "model.bin", folder / "link.bin");
+  EXPECT_EQ(readMesh(gltf).triangleCount(), 4u);
+}
+
 TEST(GltfImage, IsNeverOpened)
 {
   // lbmshape reads no images: an image URI that names a FIFO would block a

@@ -202,10 +202,12 @@ struct Gltf {
         {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
     return out.dump();
   }
-  std::string glb() const
+  // `change` edits the final JSON (buffers included) before it is written.
+  std::string glb(const std::function<void(nlohmann::json&)>& change = {}) const
   {
     nlohmann::json out = json;
     out["buffers"] = {{{"byteLength", buffer.size()}}};
+    if (change) change(out);
     std::string text = out.dump();
     text.resize((text.size() + 3) / 4 * 4, ' ');
     std::string binary = buffer;
@@ -255,6 +257,11 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
       {"obj_windows_line_ends_colours_and_w", ".obj",
        "v 0 0 0 1\r\nv 1 0 0 1 0 0\r\nv 0 1 0 0 1 0\r\nv 0 0 1 0.5 0.5 0.5\r\nf 1 3 2\r\nf 1 2 4\r\nf 1 4 3\r\nf 2 3 4",
        "", false},
+      {"obj_with_byte_order_mark", ".obj", "\xEF\xBB\xBF" + tetraObj, "", false},
+      {"obj_line_continuations_and_comments", ".obj",
+       "# a tetrahedron\nv 0 0 0 # the origin\nv 1 0 \\\n  0\nv 0 1 0\nv 0 0 1\nf 1 3 2 # base\nf 1 2 \\\n4\nf 1 4 3\nf 2 3 4\n",
+       "", false},
+      {"obj_fan_of_one_repeated_vertex", ".obj", tetraObj + "f 1" + repeat(" 1", 200000) + "\n", "", true},
       {"ply_ascii_tetra", ".ply", plyAsciiTetra(tetraPlyFaces), "", false},
       {"ply_binary_little_endian_mixed_types", ".ply", plyBinaryTetra(false), "", false},
       {"ply_binary_big_endian_mixed_types", ".ply", plyBinaryTetra(true), "", false},
@@ -361,6 +368,15 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "not a list of integers"},
       {"ply_word_in_the_body", ".ply", plyAsciiTetra(tetraPlyFaces).replace(plyAsciiTetra("").size() - 6, 1, "abc"),
        "is not a number"},
+      {"ply_a_thousand_and_one_elements", ".ply",
+       [] {
+         std::string text = "ply\nformat ascii 1.0\n";
+         for (int e = 0; e < 1001; ++e) text += "element e" + std::to_string(e) + " 0\n";
+         return text + "end_header\n";
+       }(),
+       "more than 1000 elements"},
+      {"ply_element_named_with_control_bytes", ".ply", "ply\nformat ascii 1.0\nelement \x1b]0;x\x07\xff -1\nend_header\n",
+       "negative count"},
       // OFF
       {"off_keyword_alone", ".off", "OFF\n", "before the vertex and face counts"},
       {"off_negative_vertex_count", ".off", "OFF\n-1 12 0\n0 0 0\n", "negative counts"},
@@ -387,6 +403,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"stl_binary_of_the_wrong_size", ".stl", stlBinaryTetra("binary").substr(0, 84 + 50 * 3 + 10),
        "header counts 4 triangles"},
       {"stl_too_short_for_anything", ".stl", "abc", "not an STL file"},
+      {"stl_binary_with_nan_corners", ".stl", "binary" + std::string(74, ' ') + little(uint32_t(1000)) + std::string(50000, '\xff'),
+       "not finite numbers"},
       {"stl_vertex_outside_a_facet", ".stl", "solid x\nvertex 0 0 0\nendsolid x\n", "expected 'facet' or 'endsolid'"},
       // glTF
       {"gltf_count_whose_size_wraps", ".gltf",
@@ -394,7 +412,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "reads past the end of buffer view"},
       {"gltf_accessor_offset_near_2_to_the_64", ".gltf",
        tetraWith([](Gltf& g) { g.json["accessors"][0]["byteOffset"] = uint64_t(18446744073709551612ull); }).gltf(),
-       "reads past the end of buffer view"},
+       "past the end of buffer view"},
       {"gltf_view_offset_near_2_to_the_64", ".gltf",
        tetraWith([](Gltf& g) { g.json["bufferViews"][0]["byteOffset"] = uint64_t(18446744073709551612ull); }).gltf(),
        "reaches past the end of its buffer"},
@@ -484,6 +502,59 @@ std::vector<MeshFileCase> hostileMeshFiles()
          return g.gltf();
        }(),
        "more geometry than lbmshape reads", true},
+      {"gltf_many_primitives_placed_many_times", ".gltf",
+       [] {
+         Gltf g = Gltf::tetra();
+         nlohmann::json primitives = nlohmann::json::array();
+         for (int p = 0; p < 2000; ++p) primitives.push_back({{"attributes", nlohmann::json::object()}});
+         g.json["meshes"] = {{{"primitives", primitives}}};
+         nlohmann::json nodes = nlohmann::json::array();
+         for (int n = 0; n < 2000; ++n) nodes.push_back({{"mesh", 0}});
+         g.json["nodes"] = nodes;
+         g.json.erase("scenes");
+         g.json.erase("scene");
+         return g.gltf();
+       }(),
+       "places its meshes 2000 times", true},
+      {"gltf_two_buffers_on_one_file", ".gltf",
+       [] {
+         nlohmann::json json = nlohmann::json::parse(Gltf::tetra().gltfWithUri("tetra.bin"));
+         json["buffers"].push_back(json["buffers"][0]);
+         return json.dump();
+       }(),
+       "that another buffer already names"},
+      {"glb_second_buffer_without_uri", ".glb",
+       Gltf::tetra().glb([](nlohmann::json& json) { json["buffers"].push_back(json["buffers"][0]); }),
+       "only buffer 0 may refer to the GLB"},
+      {"glb_buffer_of_zero_bytes", ".glb", Gltf::tetra().glb([](nlohmann::json& json) { json["buffers"][0]["byteLength"] = 0; }),
+       "no byteLength of at least 1"},
+      {"glb_binary_chunk_longer_than_the_file", ".glb",
+       [] {
+         std::string bytes = Gltf::tetra().glb();
+         const size_t jsonLength = size_t(bytes[12] & 0xff) | size_t(bytes[13] & 0xff) << 8;
+         bytes.replace(20 + jsonLength, 4, little(uint32_t(1) << 20));
+         return bytes;
+       }(),
+       "second GLB chunk claims more bytes"},
+      {"gltf_accessor_of_no_elements_past_its_view", ".gltf",
+       tetraWith([](Gltf& g) {
+         g.json["accessors"][0]["count"] = 0;
+         g.json["accessors"][0]["byteOffset"] = uint64_t(18446744073709551615ull);
+       }).gltf(),
+       "begins past the end of buffer view"},
+      {"gltf_image_view_past_its_buffer", ".gltf",
+       tetraWith([](Gltf& g) {
+         g.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 1000000000}, {"byteLength", 16}});
+         g.json["images"] = {{{"bufferView", g.json["bufferViews"].size() - 1}, {"mimeType", "image/png"}}};
+       }).gltf(),
+       "reaches past the end of its buffer"},
+      {"gltf_extras_of_three_million_values", ".gltf",
+       [] {
+         std::string text = Gltf::tetra().gltf();
+         text.insert(1, "\"extras\":[" + repeat("0,", 3000000) + "0],");
+         return text;
+       }(),
+       "more than a glTF file of this size needs", true},
       {"gltf_malformed_json", ".gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [", "JSON is malformed"},
       {"gltf_empty", ".gltf", "", "empty"},
       {"glb_without_magic", ".glb", "glTX" + Gltf::tetra().glb().substr(4), "no 'glTF' magic"},

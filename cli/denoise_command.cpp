@@ -52,6 +52,8 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
                   "Add the paper's uniform noise to the distance field first, as a fraction of its largest value (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
+  cmd->add_flag("--dense", a->options.dense,
+                "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
   cmd->callback([&common, a] { runDenoise(common, *a); });
 }
 

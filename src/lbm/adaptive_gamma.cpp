@@ -6,17 +6,44 @@
 #include "lbm/solver_state.hpp"
 
 namespace lbmshape::adaptive_gamma {
+namespace {
+
+// The rules cell by cell, on the values of either kind of field.
+void paperRuleValues(const std::vector<float>& before, const std::vector<float>& after,
+                     const std::vector<float>& gammaUsed, double gamma0, std::vector<float>& gamma)
+{
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < gamma.size(); ++i) {
+    const double kappa = (double(after[i]) - before[i]) / gammaUsed[i];
+    gamma[i] = float(std::clamp(gamma0 + kappa, lowest, highest));
+  }
+}
+
+void featurePreservingValues(const std::vector<float>& kappa, double gamma0, double kappaEdge, std::vector<float>& gamma)
+{
+  const double lo = std::min(lowest, gamma0);
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < gamma.size(); ++i) {
+    const double r = kappa[i] / kappaEdge;
+    gamma[i] = float(std::clamp(gamma0 / (1.0 + r * r), lo, gamma0));
+  }
+}
+
+}  // namespace
 
 Volume paperRule(const Volume& before, const Volume& after, const Volume& gammaUsed, double gamma0)
 {
   solver_state::checkSameExtent(before.extent(), after.extent(), "field");
   solver_state::checkSameExtent(before.extent(), gammaUsed.extent(), "gamma");
   Volume gamma(before.extent());
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < gamma.size(); ++i) {
-    const double kappa = (double(after[i]) - before[i]) / gammaUsed[i];
-    gamma[i] = float(std::clamp(gamma0 + kappa, lowest, highest));
-  }
+  paperRuleValues(before.values(), after.values(), gammaUsed.values(), gamma0, gamma.values());
+  return gamma;
+}
+
+BandField paperRule(const BandField& before, const BandField& after, const BandField& gammaUsed, double gamma0)
+{
+  BandField gamma(before.sharedBricks(), 0.0f);
+  paperRuleValues(before.values(), after.values(), gammaUsed.values(), gamma0, gamma.values());
   return gamma;
 }
 
@@ -40,14 +67,36 @@ Volume laplacian(const Volume& field)
 
 Volume featurePreservingRule(const Volume& smoothed, double gamma0, double kappaEdge)
 {
-  Volume kappa = laplacian(smoothed);
   Volume gamma(smoothed.extent());
-  const double lo = std::min(lowest, gamma0);
+  featurePreservingValues(laplacian(smoothed).values(), gamma0, kappaEdge, gamma.values());
+  return gamma;
+}
+
+BandField laplacian(const BandField& field)
+{
+  const BrickSet& bricks = field.bricks();
+  const Extent3& e = bricks.cells();
+  BandField out(field.sharedBricks(), 0.0f);
+  auto at = [&](int x, int y, int z) {
+    x = std::clamp(x, 0, e.nx - 1), y = std::clamp(y, 0, e.ny - 1), z = std::clamp(z, 0, e.nz - 1);
+    return double(field.at(x, y, z));
+  };
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < gamma.size(); ++i) {
-    const double r = kappa[i] / kappaEdge;
-    gamma[i] = float(std::clamp(gamma0 / (1.0 + r * r), lo, gamma0));
-  }
+  for (size_t s = 0; s < bricks.activeCount(); ++s)
+    for (int local = 0; local < brickCells; ++local) {
+      const glm::ivec3 c = bricks.cell(int32_t(s), local);
+      if (!e.contains(c.x, c.y, c.z)) continue;
+      out.values()[s * brickCells + size_t(local)] =
+          float(at(c.x - 1, c.y, c.z) + at(c.x + 1, c.y, c.z) + at(c.x, c.y - 1, c.z) + at(c.x, c.y + 1, c.z) +
+                at(c.x, c.y, c.z - 1) + at(c.x, c.y, c.z + 1) - 6.0 * at(c.x, c.y, c.z));
+    }
+  return out;
+}
+
+BandField featurePreservingRule(const BandField& smoothed, double gamma0, double kappaEdge)
+{
+  BandField gamma(smoothed.sharedBricks(), 0.0f);
+  featurePreservingValues(laplacian(smoothed).values(), gamma0, kappaEdge, gamma.values());
   return gamma;
 }
 

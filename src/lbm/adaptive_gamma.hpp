@@ -1,6 +1,7 @@
 // Per-cell diffusion coefficients for the anisotropic smoothing of section 5.1.
 #pragma once
 
+#include "band/band_field.hpp"
 #include "core/volume.hpp"
 
 namespace lbmshape::adaptive_gamma {
@@ -31,5 +32,11 @@ Volume featurePreservingRule(const Volume& smoothed, double gamma0, double kappa
 // The mean curvature of a distance field by the 7-point Laplacian (zero-flux
 // at the grid's faces, like the lattice's walls).
 Volume laplacian(const Volume& field);
+
+// The same three on the narrow band (the Laplacian reads the far value
+// beyond the band's bricks, which no streaming cell is near).
+BandField paperRule(const BandField& before, const BandField& after, const BandField& gammaUsed, double gamma0);
+BandField featurePreservingRule(const BandField& smoothed, double gamma0, double kappaEdge);
+BandField laplacian(const BandField& field);
 
 }  // namespace lbmshape::adaptive_gamma

@@ -17,6 +17,7 @@
 
 #include "core/extent.hpp"
 #include "core/volume.hpp"
+#include "lbm/stepping_solver.hpp"
 
 namespace lbmshape {
 
@@ -26,11 +27,8 @@ struct LinearSource {
   float decay = 0.0f;
 };
 
-class LatticeSolver {
+class LatticeSolver : public SteppingSolver {
 public:
-  virtual ~LatticeSolver() = default;
-
-  virtual std::string backendName() const = 0;
   virtual Extent3 extent() const = 0;
 
   // Relaxation: one diffusion coefficient everywhere (voxels^2 per step), or
@@ -44,9 +42,6 @@ public:
   // Restart from field X, with every distribution at its equilibrium w_i X.
   // Call after setSource: the initial distributions account for S/2.
   virtual void initialize(const Volume& field) = 0;
-
-  virtual void step(int count) = 0;
-  virtual int stepsTaken() const = 0;
 
   // The field X after the steps taken so far.
   virtual Volume field() = 0;

@@ -3,6 +3,8 @@
 #include "core/error.hpp"
 #include "gpu/gpu_context.hpp"
 #include "gpu/vulkan_instance.hpp"
+#include "lbm/band_reference_solver.hpp"
+#include "lbm/band_vulkan_solver.hpp"
 #include "lbm/lattice_memory.hpp"
 #include "lbm/reference_solver.hpp"
 #include "lbm/vulkan_solver.hpp"
@@ -47,6 +49,12 @@ std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) 
   checkFits(extent);
   if (!isReference()) return std::make_unique<VulkanSolver>(*gpu(), extent);
   return std::make_unique<ReferenceSolver>(extent);
+}
+
+std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const BrickSet> bricks) const
+{
+  if (!isReference()) return std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks));
+  return std::make_unique<BandReferenceSolver>(std::move(bricks));
 }
 
 void ComputeDevice::requireCleanValidation() const

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/extent.hpp"
+#include "lbm/band_solver.hpp"
 #include "lbm/lattice_solver.hpp"
 
 namespace lbmshape {
@@ -39,6 +40,9 @@ public:
   std::unique_ptr<LatticeSolver> makeSolver(const Extent3& extent) const;
   // The same check alone, for validating a job before its expensive stages.
   void checkFits(const Extent3& extent) const;
+
+  // A solver for the narrow band on these bricks.
+  std::unique_ptr<BandSolver> makeBandSolver(std::shared_ptr<const BrickSet> bricks) const;
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;

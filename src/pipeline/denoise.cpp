@@ -13,8 +13,11 @@
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/stage_clock.hpp"
+#include "lbm/band_width.hpp"
+#include "sdf/band_signed_distance.hpp"
 #include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
+#include "surface/band_marching_cubes.hpp"
 #include "surface/marching_cubes.hpp"
 
 namespace lbmshape {
@@ -54,40 +57,54 @@ nlohmann::json meshSummary(const TriangleMesh& mesh, const MeshTopology& t)
 }
 
 // What an interrupted denoise has done: the lattice steps, and nothing written.
-std::function<std::string()> stepsDone(const LatticeSolver& solver)
+std::function<std::string()> stepsDone(const SteppingSolver& solver)
 {
   return [&solver] { return "stopped after " + std::to_string(solver.stepsTaken()) + " steps; nothing written"; };
 }
 
 // Runs `count` more steps as a part of the stage's progress, in batches
 // between which Ctrl-C is honoured; the field does not depend on the batches.
-void stepShowingProgress(LatticeSolver& solver, int count, Progress& progress, const char* part = "steps",
+void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, const char* part = "steps",
                          double share = 1.0)
 {
   progress.beginPart(part, count, share);
   InterruptibleSteps(solver).advanceTo(solver.stepsTaken() + count, stepsDone(solver), &progress);
 }
 
-// Runs the smoothing steps on `solver`, starting from `field`.
-Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& o, Progress& progress)
+// The two kinds of lattice differ in how they start and what a uniform
+// field of gamma is; the smoothing is written once for both.
+void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
+void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
+Volume uniformLike(const Volume& field, double value) { return Volume(field.extent(), float(value)); }
+BandField uniformLike(const BandField& field, double value)
+{
+  BandField uniform(field.sharedBricks(), field.farValue());
+  std::fill(uniform.values().begin(), uniform.values().end(), float(value));
+  return uniform;
+}
+
+// Runs the smoothing steps on `solver`, starting from `field`; a band
+// solver streams the cells within `halfWidth` of the surface.
+template <class Solver, class Field>
+Field smooth(Solver& solver, const Field& field, const DenoiseOptions& o, double halfWidth, Progress& progress)
 {
   switch (o.smoothing) {
   case Smoothing::Isotropic:
     solver.setUniformGamma(o.gamma);
-    solver.initialize(field);
+    start(solver, field, halfWidth);
     stepShowingProgress(solver, o.steps, progress);
     return solver.field();
   case Smoothing::Anisotropic: {
     // Eq. 20 needs the change of X over each step, so the field comes back
     // after every step and gamma goes out for the next.
     solver.setUniformGamma(o.gamma);
-    solver.initialize(field);
-    Volume before = field, gamma(field.extent(), float(o.gamma));
+    start(solver, field, halfWidth);
+    Field before = field, gamma = uniformLike(field, o.gamma);
     progress.beginPart("steps", o.steps);
     InterruptibleSteps stepper(solver);
     for (int s = 1; s <= o.steps; ++s) {
       stepper.advanceTo(s, stepsDone(solver), &progress);
-      Volume after = solver.field();
+      Field after = solver.field();
       gamma = adaptive_gamma::paperRule(before, after, gamma, o.gamma);
       solver.setGammaPerCell(gamma);
       before = std::move(after);
@@ -98,15 +115,62 @@ Volume smooth(LatticeSolver& solver, const Volume& field, const DenoiseOptions& 
     const int probeSteps = featureProbeSteps(o.gamma);
     const double probeShare = double(probeSteps) / (probeSteps + o.steps);
     solver.setUniformGamma(o.gamma);
-    solver.initialize(field);
+    start(solver, field, halfWidth);
     stepShowingProgress(solver, probeSteps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
-    solver.initialize(field);
+    start(solver, field, halfWidth);
     stepShowingProgress(solver, o.steps, progress, "steps", 1.0 - probeShare);
     return solver.field();
   }
   }
   throw std::logic_error("unknown smoothing");
+}
+
+// The longest run of steps a denoise makes from one start.
+int longestRun(const DenoiseOptions& o)
+{
+  return o.smoothing == Smoothing::PreserveFeatures ? std::max(o.steps, featureProbeSteps(o.gamma)) : o.steps;
+}
+
+// The lattice stages of a denoise: signed distance, smoothing, surface.
+struct Smoothed {
+  TriangleMesh mesh;
+  nlohmann::json lattice;  // what the lattice held: cells, bytes
+  size_t cells = 0;        // cells updated per step
+};
+
+Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
+                         const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
+{
+  device.checkFits(frame.extent);
+  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
+  requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
+  addFieldNoise(field, o.noise);
+  auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
+  Volume smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, 0.0, progress); });
+  return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
+          {{"kind", "grid"}, {"cells", frame.extent.cells()}},
+          frame.extent.cells()};
+}
+
+Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
+                         const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
+{
+  const double halfWidth = streamingHalfWidth(o.gamma, longestRun(o));
+  BandField field = clock.time("sdf", [&](Progress& progress) {
+    return signedDistanceBand(mesh, frame, {.halfWidth = halfWidth, .progress = &progress});
+  });
+  requireEnclosedVolume(field, input);
+  auto solver = clock.time("setup", [&] { return device.makeBandSolver(field.sharedBricks()); });
+  BandField smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, halfWidth, progress); });
+  const BrickSet& bricks = field.bricks();
+  return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
+          {{"kind", "band"},
+           {"half_width", halfWidth},
+           {"bricks", bricks.activeCount()},
+           {"cells", bricks.storedCells()},
+           {"fraction_of_grid", double(bricks.storedCells()) / double(frame.extent.cells())}},
+          bricks.storedCells()};
 }
 
 }  // namespace
@@ -142,15 +206,12 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
   const MeshTopology inputTopology = analyzeTopology(mesh);
   const GridFrame frame = placeGrid(bounds(mesh), o.grid);
-  device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
-  requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
-  addFieldNoise(field, o.noise);
-  auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
-  Volume smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, progress); });
-  TriangleMesh result = clock.time("extract", [&] { return extractSurface(smoothed, frame); });
+  const bool dense = o.dense || o.noise.amplitude > 0.0;
+  Smoothed smoothed = dense ? smoothOnTheGrid(mesh, frame, input, o, device, clock)
+                            : smoothOnTheBand(mesh, frame, input, o, device, clock);
+  TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(o.steps) +
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
@@ -159,7 +220,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
 
   const MeshTopology outputTopology = analyzeTopology(result);
   const double lbmMs = clock.ms("lbm");
-  const double updates = double(frame.extent.cells()) * o.steps;
+  const double updates = double(smoothed.cells) * o.steps;
   nlohmann::json report = {
       {"command", "denoise"},
       {"input", meshSummary(mesh, inputTopology)},
@@ -172,6 +233,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
       {"steps", o.steps},
       {"smoothing", smoothingName(o.smoothing)},
       {"noise", o.noise.amplitude},
+      {"lattice", smoothed.lattice},
       {"ms", clock.toJson()},
       {"mlups", lbmMs > 0 && o.steps > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
       {"volume_change", inputTopology.closedManifold && inputTopology.signedVolume != 0

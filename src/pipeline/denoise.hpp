@@ -34,6 +34,11 @@ struct DenoiseOptions {
   double gamma = 0.2;   // voxels^2 per step
   Smoothing smoothing = Smoothing::Isotropic;
   FieldNoise noise;     // the paper's noise on the distance field, off by default
+  // The lattice on the narrow band around the surface (band/), or on every
+  // cell of the grid (the paper's, and the reference the band is tested
+  // against). The paper's field noise is defined over the whole grid, so
+  // --noise runs on the grid.
+  bool dense = false;
 };
 
 struct DenoiseResult {

@@ -8,7 +8,7 @@
 
 namespace lbmshape {
 
-InterruptibleSteps::InterruptibleSteps(LatticeSolver& solver, std::optional<int> fixedBatch, double batchMs)
+InterruptibleSteps::InterruptibleSteps(SteppingSolver& solver, std::optional<int> fixedBatch, double batchMs)
     : solver_(solver), fixedBatch_(fixedBatch), batchMs_(batchMs)
 {
 }
@@ -17,7 +17,10 @@ int InterruptibleSteps::nextBatch(int remaining) const
 {
   if (fixedBatch_) return std::clamp(*fixedBatch_, 1, remaining);
   if (msPerStep_ <= 0.0) return 1;  // the first batch measures the speed
-  return int(std::clamp(std::floor(batchMs_ / msPerStep_), 1.0, double(remaining)));
+  // At most four times the last batch: one fast measurement (a first step
+  // that costs nothing, a cached pipeline) must not commit to hours of steps.
+  const double byTime = std::floor(batchMs_ / msPerStep_);
+  return int(std::clamp(std::min(byTime, 4.0 * lastBatch_), 1.0, double(remaining)));
 }
 
 void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone, Progress* progress)
@@ -28,6 +31,7 @@ void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::stri
     Stopwatch clock;
     solver_.step(batch);
     msPerStep_ = clock.ms() / batch;
+    lastBatch_ = batch;
     if (progress) progress->advance(batch);
   }
 }

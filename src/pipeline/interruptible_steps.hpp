@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/progress.hpp"
-#include "lbm/lattice_solver.hpp"
+#include "lbm/stepping_solver.hpp"
 
 namespace lbmshape {
 
@@ -16,7 +16,7 @@ class InterruptibleSteps {
 public:
   // Batches last about `batchMs` each, sized by the speed measured so far,
   // unless `fixedBatch` sets their size (for tests).
-  explicit InterruptibleSteps(LatticeSolver& solver, std::optional<int> fixedBatch = std::nullopt,
+  explicit InterruptibleSteps(SteppingSolver& solver, std::optional<int> fixedBatch = std::nullopt,
                               double batchMs = 250.0);
 
   // Steps until the solver has taken `totalSteps` in all. Before each batch,
@@ -27,10 +27,11 @@ public:
 private:
   int nextBatch(int remaining) const;
 
-  LatticeSolver& solver_;
+  SteppingSolver& solver_;
   std::optional<int> fixedBatch_;
   double batchMs_;
   double msPerStep_ = 0.0;  // measured; 0 until the first batch
+  int lastBatch_ = 1;
 };
 
 }  // namespace lbmshape

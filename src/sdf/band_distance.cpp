@@ -2,48 +2,63 @@
 
 #include <algorithm>
 
-#include "sdf/grid_blocks.hpp"
+#include "sdf/cell_space.hpp"
 
 namespace lbmshape {
 
-size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
-                          std::vector<uint32_t>& nearest, Progress* progress, double progressWeight)
+namespace {
+
+template <class Cells>
+size_t exactBandDistancesIn(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels,
+                            float* distance, uint32_t* nearest, Progress* progress, double progressWeight)
 {
-  const Extent3 extent = frame.extent;
-  const GridBlocks blocks(extent, 8);
-  if (progress) progress->beginPart("exact band", double(blocks.count()), progressWeight);
+  if (progress) progress->beginPart("exact band", double(cells.blockCount()), progressWeight);
   const double band = bandVoxels * frame.voxel;
   size_t written = 0;
 #pragma omp parallel for schedule(dynamic, 4) reduction(+ : written)
-  for (size_t b = 0; b < blocks.count(); ++b) {
-    const CellRange r = blocks.range(b);
+  for (size_t b = 0; b < cells.blockCount(); ++b) {
+    glm::ivec3 lo, hi;
+    cells.blockRange(b, lo, hi);
     if (progress) progress->advance();
     // Every cell of the block is within halfDiagonal of its centre, so when
     // no triangle is within band + halfDiagonal of the centre, no cell of the
     // block is within band of the surface. Most blocks end here.
-    const glm::dvec3 first(r.x0, r.y0, r.z0), last(r.x1 - 1, r.y1 - 1, r.z1 - 1);
+    const glm::dvec3 first(lo), last(hi - 1);
     const glm::dvec3 centre = frame.toWorld(0.5 * (first + last));
     const double halfDiagonal = 0.5 * frame.voxel * glm::length(last - first);
     uint32_t hint = bvh.closest(centre, band + halfDiagonal).triangle;
     if (hint == TriangleBvh::kNoTriangle) continue;
-    for (int z = r.z0; z < r.z1; ++z)
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-          // The previous cell's triangle is usually this cell's too, or
-          // nearly as close: its distance is a tight bound that lets the
-          // search prune almost everything else.
-          const glm::dvec3 p = frame.cellCentre(x, y, z);
-          const double bound = std::min(band, bvh.closestOnTriangle(p, hint).distance);
-          const TriangleBvh::Closest c = bvh.closest(p, bound);
-          if (c.triangle == TriangleBvh::kNoTriangle || c.distance > band) continue;
-          const size_t i = extent.index(x, y, z);
-          distance[i] = float(c.distance / frame.voxel);
-          nearest[i] = c.triangle;
-          hint = c.triangle;
-          ++written;
-        }
+    cells.forEachCellOf(b, [&](size_t i, const glm::ivec3& c) {
+      // The previous cell's triangle is usually this cell's too, or
+      // nearly as close: its distance is a tight bound that lets the
+      // search prune almost everything else.
+      const glm::dvec3 p = frame.toWorld(glm::dvec3(c));
+      const double bound = std::min(band, bvh.closestOnTriangle(p, hint).distance);
+      const TriangleBvh::Closest found = bvh.closest(p, bound);
+      if (found.triangle == TriangleBvh::kNoTriangle || found.distance > band) return;
+      distance[i] = float(found.distance / frame.voxel);
+      nearest[i] = found.triangle;
+      hint = found.triangle;
+      ++written;
+    });
   }
   return written;
+}
+
+}  // namespace
+
+size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
+                          std::vector<uint32_t>& nearest, Progress* progress, double progressWeight)
+{
+  return exactBandDistancesIn(GridCells(frame.extent, 8), bvh, frame, bandVoxels, distance.data(), nearest.data(),
+                              progress, progressWeight);
+}
+
+size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
+                          std::vector<float>& distance, std::vector<uint32_t>& nearest, Progress* progress,
+                          double progressWeight)
+{
+  return exactBandDistancesIn(cells, bvh, frame, bandVoxels, distance.data(), nearest.data(), progress, progressWeight);
 }
 
 size_t exactFaceDistances(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,

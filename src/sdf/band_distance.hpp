@@ -19,6 +19,12 @@ namespace lbmshape {
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
                           std::vector<uint32_t>& nearest, Progress* progress = nullptr, double progressWeight = 1.0);
 
+// The same for the cells of the narrow band's bricks (BandCells numbering).
+class BandCells;
+size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
+                          std::vector<float>& distance, std::vector<uint32_t>& nearest, Progress* progress = nullptr,
+                          double progressWeight = 1.0);
+
 // Exact distances (and nearest triangles) for the cells on the grid's six
 // faces that have none yet. The far field only spreads triangles that some
 // cell already holds, so when part of the mesh lies outside the grid, the

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <filesystem>
 
+#include "band/band_field.hpp"
 #include "core/volume.hpp"
 
 namespace lbmshape {
@@ -18,5 +19,7 @@ size_t insideCellCount(const Volume& field);
 
 // Throws InputError naming `meshPath` when no cell of `field` is inside.
 void requireEnclosedVolume(const Volume& field, const std::filesystem::path& meshPath);
+// The same on the narrow band: no stored cell inside and no brick beyond it inside.
+void requireEnclosedVolume(const BandField& field, const std::filesystem::path& meshPath);
 
 }  // namespace lbmshape

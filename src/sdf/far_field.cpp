@@ -6,47 +6,14 @@
 #include <cmath>
 #include <limits>
 
+#include "sdf/cell_space.hpp"
+
 namespace lbmshape {
 namespace {
 
 constexpr uint8_t kPending = 0, kSettled = 1;
 constexpr float kBucketWidth = 1.0f;  // voxels
 constexpr uint64_t kNoOffer = std::numeric_limits<uint64_t>::max();
-
-// The 26 neighbours of a cell, with a bounds check only for cells on the
-// grid's faces.
-class Neighbourhood {
-public:
-  explicit Neighbourhood(Extent3 e) : e_(e)
-  {
-    int k = 0;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-          if (dx || dy || dz) {
-            step_[k] = {dx, dy, dz};
-            offset_[k++] = (ptrdiff_t(dz) * e_.ny + dy) * e_.nx + dx;
-          }
-  }
-
-  glm::ivec3 cell(size_t i) const { return {int(i % e_.nx), int(i / e_.nx % e_.ny), int(i / e_.nx / e_.ny)}; }
-
-  // f(index, cell) for each neighbour of cell c (index i).
-  template <class F>
-  void forEach(size_t i, const glm::ivec3& c, F&& f) const
-  {
-    const bool inside = c.x > 0 && c.y > 0 && c.z > 0 && c.x < e_.nx - 1 && c.y < e_.ny - 1 && c.z < e_.nz - 1;
-    for (int k = 0; k < 26; ++k) {
-      const glm::ivec3 n = c + step_[k];
-      if (inside || e_.contains(n.x, n.y, n.z)) f(size_t(ptrdiff_t(i) + offset_[k]), n);
-    }
-  }
-
-private:
-  Extent3 e_;
-  glm::ivec3 step_[26];
-  ptrdiff_t offset_[26];
-};
 
 template <class T>
 void gather(std::vector<T>& out, const std::vector<T>& local)
@@ -79,14 +46,11 @@ struct Push {
   uint32_t bucket;
 };
 
-}  // namespace
-
-size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
-                         std::vector<uint32_t>& nearest, bool exact)
+template <class Cells>
+size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& frame, float* distance,
+                   uint32_t* nearest, bool exact)
 {
-  const Extent3 e = frame.extent;
-  const size_t cells = e.cells();
-  const Neighbourhood neighbours(e);
+  const size_t cells = space.count();
   const double inverseVoxel = 1.0 / frame.voxel;
   std::vector<uint8_t> state(cells, kPending);
   std::vector<uint64_t> offer(cells, kNoOffer);
@@ -113,7 +77,7 @@ size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume&
   // the neighbour's distance to t, and close to it.
   auto offerAround = [&](size_t i, const glm::ivec3& c, const glm::dvec3& q, uint32_t t, size_t floor,
                          std::vector<Push>& out) {
-    neighbours.forEach(i, c, [&](size_t j, const glm::ivec3& n) {
+    space.forEachNeighbour(i, c, [&](size_t j, const glm::ivec3& n) {
       if (state[j] != kPending) return;
       const glm::dvec3 gap = (frame.toWorld(glm::dvec3(n)) - q) * inverseVoxel;
       const float d2 = float(glm::dot(gap, gap));
@@ -128,9 +92,9 @@ size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume&
 #pragma omp for schedule(dynamic, 1024) nowait
     for (size_t i = 0; i < cells; ++i) {
       if (state[i] != kSettled) continue;
-      const glm::ivec3 c = neighbours.cell(i);
+      const glm::ivec3 c = space.coords(i);
       bool open = false;
-      neighbours.forEach(i, c, [&](size_t j, const glm::ivec3&) { open = open || state[j] == kPending; });
+      space.forEachNeighbour(i, c, [&](size_t j, const glm::ivec3&) { open = open || state[j] == kPending; });
       if (!open) continue;
       const glm::dvec3 q = bvh.closestOnTriangle(frame.toWorld(glm::dvec3(c)), nearest[i]).point;
       offerAround(i, c, q, nearest[i], 0, local);
@@ -168,7 +132,7 @@ size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume&
 #pragma omp for schedule(dynamic, 64) nowait
         for (size_t k = 0; k < batch.size(); ++k) {
           const size_t i = batch[k];
-          const glm::ivec3 c = neighbours.cell(i);
+          const glm::ivec3 c = space.coords(i);
           const uint32_t t = offeredTriangle(offer[i]);
           const TriangleBvh::Closest best = bvh.closestOnTriangle(frame.toWorld(glm::dvec3(c)), t);
           distance[i] = float(best.distance * inverseVoxel);
@@ -187,13 +151,27 @@ size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume&
 #pragma omp parallel for schedule(dynamic, 256)
     for (size_t i = 0; i < cells; ++i) {
       if (offer[i] == kNoOffer) continue;
-      const glm::dvec3 p = frame.toWorld(glm::dvec3(neighbours.cell(i)));
+      const glm::dvec3 p = frame.toWorld(glm::dvec3(space.coords(i)));
       const TriangleBvh::Closest c = bvh.closest(p, bvh.closestOnTriangle(p, nearest[i]).distance);
       distance[i] = float(c.distance * inverseVoxel);
       nearest[i] = c.triangle;
     }
   }
   return filled;
+}
+
+}  // namespace
+
+size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
+                         std::vector<uint32_t>& nearest, bool exact)
+{
+  return propagateIn(GridCells(frame.extent), bvh, frame, distance.data(), nearest.data(), exact);
+}
+
+size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
+                         std::vector<float>& distance, std::vector<uint32_t>& nearest)
+{
+  return propagateIn(cells, bvh, frame, distance.data(), nearest.data(), false);
 }
 
 }  // namespace lbmshape

@@ -43,4 +43,10 @@ namespace lbmshape {
 size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
                          std::vector<uint32_t>& nearest, bool exact);
 
+// The same over the cells of the narrow band's bricks (BandCells numbering;
+// cells beyond the grid are never reached and stay as they are).
+class BandCells;
+size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
+                         std::vector<float>& distance, std::vector<uint32_t>& nearest);
+
 }  // namespace lbmshape

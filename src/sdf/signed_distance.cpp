@@ -13,9 +13,8 @@
 #include "sdf/winding_sign.hpp"
 
 namespace lbmshape {
-namespace {
 
-void checkArguments(const TriangleMesh& mesh, const GridFrame& frame, const SignedDistanceOptions& options)
+void checkSignedDistanceArguments(const TriangleMesh& mesh, const GridFrame& frame, double bandVoxels)
 {
   if (mesh.triangles.empty()) throw InputError("the mesh has no triangles: there is no surface to measure from");
   if (frame.extent.nx <= 0 || frame.extent.ny <= 0 || frame.extent.nz <= 0)
@@ -26,19 +25,17 @@ void checkArguments(const TriangleMesh& mesh, const GridFrame& frame, const Sign
   if (!(frame.voxel > 0.0) || !std::isfinite(frame.voxel)) throw UsageError("the grid's voxel size must be positive");
   // Below one voxel the sign stage could not tell, from the band alone,
   // which neighbouring cells have no surface between them.
-  if (!(options.bandVoxels >= 1.0) || !std::isfinite(options.bandVoxels)) {
+  if (!(bandVoxels >= 1.0) || !std::isfinite(bandVoxels)) {
     std::ostringstream m;
-    m << "the exact band must be at least 1 voxel wide (got " << options.bandVoxels << ")";
+    m << "the exact band must be at least 1 voxel wide (got " << bandVoxels << ")";
     throw UsageError(m.str());
   }
 }
 
-}  // namespace
-
 Volume signedDistance(const TriangleMesh& mesh, const GridFrame& frame, const SignedDistanceOptions& options,
                       SignedDistanceStats* stats)
 {
-  checkArguments(mesh, frame, options);
+  checkSignedDistanceArguments(mesh, frame, options.bandVoxels);
   SignedDistanceStats local;
   SignedDistanceStats& s = stats ? *stats : local;
   s = SignedDistanceStats{};

@@ -40,6 +40,11 @@ struct SignedDistanceStats {
   size_t openEdges = 0;           // uncancelled directed edges (hole rims), where w may vary off the surface
 };
 
+// The checks both signed distances make first: InputError for a mesh
+// without triangles, UsageError for an empty or too large frame or an exact
+// band under one voxel.
+void checkSignedDistanceArguments(const TriangleMesh& mesh, const GridFrame& frame, double bandVoxels);
+
 // Throws InputError for a mesh without triangles or with bad indices or
 // positions, and UsageError for an empty frame or a band under one voxel.
 Volume signedDistance(const TriangleMesh& mesh, const GridFrame& frame, const SignedDistanceOptions& options = {},

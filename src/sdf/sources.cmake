@@ -1,5 +1,6 @@
 target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/band_distance.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/band_signed_distance.cpp
   ${CMAKE_CURRENT_LIST_DIR}/enclosed_volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/far_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame.cpp

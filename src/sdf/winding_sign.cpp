@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sdf/grid_blocks.hpp"
+#include "sdf/cell_space.hpp"
 
 namespace lbmshape {
 namespace {
@@ -18,74 +18,67 @@ constexpr double kUsefulGrowth = 0.25;
 // One voxel, with room for the float rounding of the stored distances.
 constexpr float kOneVoxel = 1.0f + 1e-4f;
 
-}  // namespace
-
-std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const WindingGradientBound& gradient,
-                                           const GridFrame& frame, const Volume& distance, size_t& evaluations)
+template <class Cells>
+std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, const WindingGradientBound& gradient,
+                                 const GridFrame& frame, const float* distance, size_t& evaluations)
 {
-  const Extent3 e = frame.extent;
-  const size_t cells = e.cells();
-  const GridBlocks blocks(e, kBlock);
+  const size_t count = cells.count();
   constexpr float kHopeless = std::numeric_limits<float>::infinity();
 
   // How much w may change over one step from a cell of each block: the
   // gradient bound over the block grown by one voxel (every step from the
   // block stays in there), times the step.
-  std::vector<float> growth(blocks.count(), 0.0f);
+  std::vector<float> growth(cells.blockCount(), 0.0f);
   if (gradient.openEdgeCount() > 0) {
 #pragma omp parallel for schedule(dynamic, 16)
-    for (size_t b = 0; b < blocks.count(); ++b) {
-      const CellRange r = blocks.range(b);
-      const glm::dvec3 lo = frame.toWorld(glm::dvec3(r.x0 - 1, r.y0 - 1, r.z0 - 1));
-      const glm::dvec3 hi = frame.toWorld(glm::dvec3(r.x1, r.y1, r.z1));
-      const double g = gradient.over(lo, hi, kUsefulGrowth / frame.voxel) * frame.voxel;
+    for (size_t b = 0; b < cells.blockCount(); ++b) {
+      glm::ivec3 lo, hi;
+      cells.blockRange(b, lo, hi);
+      const double g = gradient.over(frame.toWorld(glm::dvec3(lo - 1)), frame.toWorld(glm::dvec3(hi)),
+                                     kUsefulGrowth / frame.voxel) *
+                       frame.voxel;
       growth[b] = g > kUsefulGrowth ? kHopeless : float(g);
     }
   }
 
-  std::vector<float> value(cells), radius(cells, -1.0f);  // radius < 0: not known yet
+  std::vector<float> value(count), radius(count, -1.0f);  // radius < 0: not known yet
   size_t upFront = 0;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : upFront)
-  for (size_t b = 0; b < blocks.count(); ++b) {
+  for (size_t b = 0; b < cells.blockCount(); ++b) {
     if (growth[b] != kHopeless) continue;
-    const CellRange r = blocks.range(b);
-    for (int z = r.z0; z < r.z1; ++z)
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-          const size_t i = e.index(x, y, z);
-          value[i] = float(bvh.windingNumber(frame.cellCentre(x, y, z)));
-          radius[i] = kEvaluationError;
-          ++upFront;
-        }
+    cells.forEachCellOf(b, [&](size_t i, const glm::ivec3& c) {
+      value[i] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(c))));
+      radius[i] = kEvaluationError;
+      ++upFront;
+    });
   }
   evaluations = upFront;
 
   auto evaluate = [&](size_t i) {
-    value[i] = float(bvh.windingNumber(frame.cellCentre(int(i % e.nx), int(i / e.nx % e.ny), int(i / e.nx / e.ny))));
+    value[i] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(i)))));
     radius[i] = kEvaluationError;
     ++evaluations;
   };
   // Breadth-first, so intervals widen with the path length from the
   // evaluated cell; every cell enters the queue once.
   std::vector<size_t> queue;
-  queue.reserve(cells);
+  queue.reserve(count);
   size_t head = 0;
-  const size_t stride[3] = {1, size_t(e.nx), size_t(e.nx) * e.ny};
-  const int size[3] = {e.nx, e.ny, e.nz};
   auto flood = [&](size_t seed) {
     queue.push_back(seed);
     while (head < queue.size()) {
       const size_t i = queue[head++];
-      const int c[3] = {int(i % e.nx), int(i / e.nx % e.ny), int(i / e.nx / e.ny)};
-      const float widened = radius[i] + growth[blocks.blockOf(c[0], c[1], c[2])];
+      const glm::ivec3 c = cells.coords(i);
+      const float widened = radius[i] + growth[cells.blockOf(i)];
       const bool decided = std::abs(value[i] - 0.5f) > widened;
       for (int axis = 0; axis < 3; ++axis)
         for (int s = -1; s <= 1; s += 2) {
-          if (c[axis] + s < 0 || c[axis] + s >= size[axis]) continue;
-          const size_t j = s < 0 ? i - stride[axis] : i + stride[axis];
+          glm::ivec3 d(0);
+          d[axis] = s;
+          const size_t j = cells.neighbour(i, c, d);
           // A surface point z on the segment would give d(i) + d(j) <=
           // |i - z| + |z - j| = one voxel.
-          if (radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) continue;
+          if (j == noCell || radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) continue;
           if (decided)
             value[j] = value[i], radius[j] = widened;
           else
@@ -98,15 +91,14 @@ std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const Winding
   // did not reach: a cell hugging a surface that runs diagonally to the
   // grid has no face neighbour clear of it, but usually a diagonal one.
   auto inherit = [&](size_t i) {
-    const int x = int(i % e.nx), y = int(i / e.nx % e.ny), z = int(i / e.nx / e.ny);
+    const glm::ivec3 c = cells.coords(i);
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-          if (!e.contains(x + dx, y + dy, z + dz)) continue;
-          const size_t j = e.index(x + dx, y + dy, z + dz);
-          if (radius[j] < 0.0f) continue;
+          const size_t j = cells.neighbour(i, c, glm::ivec3(dx, dy, dz));
+          if (j == noCell || radius[j] < 0.0f) continue;
           const float length = std::sqrt(float(dx * dx + dy * dy + dz * dz));
-          const float widened = radius[j] + length * growth[blocks.blockOf(x + dx, y + dy, z + dz)];
+          const float widened = radius[j] + length * growth[cells.blockOf(j)];
           if (distance[i] + distance[j] > kOneVoxel * length && std::abs(value[j] - 0.5f) > widened) {
             value[i] = value[j], radius[i] = widened;
             return true;
@@ -116,21 +108,36 @@ std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const Winding
   };
   // Cells clear of the surface first: they flood the big regions, so that
   // the cells left over find decided neighbours.
-  for (size_t seed = 0; seed < cells; ++seed)
-    if (radius[seed] < 0.0f && distance[seed] > kOneVoxel) {
+  for (size_t seed = 0; seed < count; ++seed)
+    if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
       evaluate(seed);
       flood(seed);
     }
-  for (size_t seed = 0; seed < cells; ++seed)
-    if (radius[seed] < 0.0f) {
+  for (size_t seed = 0; seed < count; ++seed)
+    if (radius[seed] < 0.0f && cells.real(seed)) {
       if (!inherit(seed)) evaluate(seed);
       flood(seed);
     }
 
-  std::vector<uint8_t> inside(cells);
+  std::vector<uint8_t> inside(count);
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < cells; ++i) inside[i] = value[i] > 0.5f;
+  for (size_t i = 0; i < count; ++i) inside[i] = value[i] > 0.5f;
   return inside;
+}
+
+}  // namespace
+
+std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const WindingGradientBound& gradient,
+                                           const GridFrame& frame, const Volume& distance, size_t& evaluations)
+{
+  return insideFlood(GridCells(frame.extent, kBlock), bvh, gradient, frame, distance.data(), evaluations);
+}
+
+std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const WindingGradientBound& gradient,
+                                           const GridFrame& frame, const BandCells& cells,
+                                           const std::vector<float>& distance, size_t& evaluations)
+{
+  return insideFlood(cells, bvh, gradient, frame, distance.data(), evaluations);
 }
 
 }  // namespace lbmshape

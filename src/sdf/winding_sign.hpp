@@ -37,4 +37,12 @@ namespace lbmshape {
 std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const WindingGradientBound& gradient,
                                            const GridFrame& frame, const Volume& distance, size_t& evaluations);
 
+// The same for the cells of the narrow band's bricks: `distance` holds one
+// value per stored cell (BandCells numbering); cells beyond the grid are
+// skipped (their flag is 0).
+class BandCells;
+std::vector<uint8_t> insideByWindingNumber(const TriangleBvh& bvh, const WindingGradientBound& gradient,
+                                           const GridFrame& frame, const BandCells& cells,
+                                           const std::vector<float>& distance, size_t& evaluations);
+
 }  // namespace lbmshape

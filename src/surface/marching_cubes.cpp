@@ -21,17 +21,14 @@
 #include <omp.h>
 
 #include "core/error.hpp"
+#include "surface/case_triangulation.hpp"
 #include "surface/cube_cases.hpp"
+#include "surface/edge_vertex.hpp"
 #include "surface/inside_mask.hpp"
 #include "surface/loop_triangulation.hpp"
 
 namespace lbmshape {
 namespace {
-
-// Vertices stay this fraction of an edge away from its ends: with a sample
-// equal to the isovalue, several edges would otherwise put their vertices on
-// the same grid point and the triangles between them would have no area.
-constexpr double edgeMargin = 1e-3;
 
 struct Grid {
   const float* values;
@@ -42,11 +39,7 @@ struct Grid {
   float at(int x, int y, int z) const { return values[index(x, y, z)]; }
 
   // Where along the edge from sample a to sample b the field crosses iso.
-  double crossing(float a, float b) const
-  {
-    const double t = (double(a) - iso) / (double(a) - double(b));
-    return std::clamp(t, edgeMargin, 1.0 - edgeMargin);
-  }
+  double crossing(float a, float b) const { return edge_vertex::crossing(a, b, iso); }
 
   int caseIndex(int x, int y, int z) const
   {
@@ -57,21 +50,9 @@ struct Grid {
            int(v[sz + sy + 1] > iso) << 7;
   }
 
-  double derivative(int x, int y, int z, int axis) const
-  {
-    const int n = axis == 0 ? nx : axis == 1 ? ny : nz;
-    const int c = axis == 0 ? x : axis == 1 ? y : z;
-    const int lo = std::max(c - 1, 0), hi = std::min(c + 1, n - 1);
-    if (hi == lo) return 0.0;
-    int a[3] = {x, y, z}, b[3] = {x, y, z};
-    a[axis] = lo;
-    b[axis] = hi;
-    return (double(at(b[0], b[1], b[2])) - double(at(a[0], a[1], a[2]))) / (hi - lo);
-  }
-
   glm::dvec3 gradient(int x, int y, int z) const
   {
-    return {derivative(x, y, z, 0), derivative(x, y, z, 1), derivative(x, y, z, 2)};
+    return edge_vertex::gradient([this](int a, int b, int c) { return at(a, b, c); }, Extent3{nx, ny, nz}, x, y, z);
   }
 };
 
@@ -199,16 +180,8 @@ private:
     glm::dvec3 grid(x, y, z);
     grid[axis] += t;
     mesh_.positions[index] = frame_.toWorld(grid);
-    glm::dvec3 outward = -((1.0 - t) * g_.gradient(x, y, z) + t * g_.gradient(end[0], end[1], end[2]));
-    const double length = glm::length(outward);
-    if (length > 0.0 && std::isfinite(length)) {
-      outward /= length;
-    } else {
-      // A flat field: the edge itself points from the inside sample out.
-      outward = glm::dvec3(0.0);
-      outward[axis] = a > g_.iso ? 1.0 : -1.0;
-    }
-    mesh_.normals[index] = glm::vec3(outward);
+    mesh_.normals[index] =
+        edge_vertex::normal(g_.gradient(x, y, z), g_.gradient(end[0], end[1], end[2]), t, axis, a > g_.iso);
   }
 
   // Numbers the cut edges of plane z in the order countPlanes counted them:
@@ -289,32 +262,10 @@ private:
   {
     const cube::CubeCase& c = cube::cubeCases()[g_.caseIndex(x, y, z)];
     std::array<uint32_t, 12> vertex;
-    std::array<glm::dvec3, 12> points;
-    std::array<glm::u8vec3, maxLoopSize - 2> local;
     for (int i = 0; i < c.edgeCount; ++i) vertex[i] = vertexOf(c.edges[i], x, y, lower, upper);
-    int first = 0;
-    for (int loop = 0; loop < c.loopCount; ++loop) {
-      const int size = c.loopSize[loop];
-      int count = 0;
-      if (size == 3) {
-        local[0] = glm::u8vec3(0, 1, 2);
-        count = 1;
-      } else {
-        for (int i = 0; i < size; ++i) points[i] = localPoint(c.edges[first + i], x, y, z);
-        count = triangulateLoop(points.data(), size, c.blockedChords.data() + first, local);
-      }
-      // Every loop of the table has a triangulation without blocked chords
-      // (the tests check all 256 cases), so the fan is never used; it only
-      // keeps the triangle count right.
-      if (count != size - 2) {
-        count = size - 2;
-        for (int i = 0; i < count; ++i) local[i] = glm::u8vec3(0, i + 1, i + 2);
-      }
-      for (int i = 0; i < count; ++i)
-        mesh_.triangles[next++] =
-            glm::uvec3(vertex[first + local[i][0]], vertex[first + local[i][1]], vertex[first + local[i][2]]);
-      first += size;
-    }
+    triangulateCubeCase(
+        c, [&](int edge) { return localPoint(edge, x, y, z); },
+        [&](int i, int j, int k) { mesh_.triangles[next++] = glm::uvec3(vertex[i], vertex[j], vertex[k]); });
   }
 
   const Grid& g_;

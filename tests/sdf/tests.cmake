@@ -1,4 +1,6 @@
 lbmshape_test(sdf_tests
+  ${CMAKE_CURRENT_LIST_DIR}/band_sdf_checks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/band_signed_distance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp
@@ -7,6 +9,8 @@ lbmshape_test(sdf_tests
   ${CMAKE_CURRENT_LIST_DIR}/winding_gradient_bound_test.cpp
 )
 lbmshape_shared_asset_test(sdf_shared_asset_tests
+  ${CMAKE_CURRENT_LIST_DIR}/band_sdf_checks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/shared_band_sdf_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/shared_mesh_sdf_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sdf_fixtures.cpp
 )

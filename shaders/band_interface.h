@@ -1,0 +1,70 @@
+// What the narrow-band shader (band_step.comp) and its host side
+// (src/lbm/band_vulkan_solver.cpp) agree on, written once for both: GLSL
+// includes this file, and so does C++.
+//
+// Layouts, per brick slot s (a brick is 8 x 8 x 8 cells, cell
+// l = x + 8 y + 64 z), all as vec4 of four consecutive cells of a row:
+//   moments: [s][m][l / 4]: m = 0..3 for rho*, jx*, jy*, jz* after the last collision
+//   field, omega, source base: [s][l / 4] (the order of BandField's values)
+// and as words:
+//   streams: uint [s][y + 8 z], bit x set when cell (x, y, z) streams
+//   neighbours: int [s][27]: slots of the brick's neighbours, (dx + 1) +
+//     3 (dy + 1) + 9 (dz + 1), -1 for none
+//   origins: ivec4 [s]: the brick's first cell in the grid
+//   work: int [w]: the slot each workgroup updates, from workOffset on (a
+//     step skips the bricks that never change; the field pass reads all)
+//
+// Reads go through texel buffers (one view can span far more than a
+// storage-buffer binding, 128 MiB on lavapipe, and a vec4 texel fetch is
+// the cheapest load there); writes go to storage buffers split into pools
+// of whole bricks, each pool one binding within the device's range limit.
+#ifndef LBMSHAPE_BAND_INTERFACE_H
+#define LBMSHAPE_BAND_INTERFACE_H
+
+#define BAND_WORKGROUP_SIZE 64  // one brick: its 64 rows of eight cells
+#define BAND_MAX_WORKGROUPS_X 65535
+#define BAND_MAX_POOLS 16
+
+// Bindings of set 0.
+#define BAND_BINDING_MOMENTS 0     // samplerBuffer, the current copy
+#define BAND_BINDING_STREAMS 1     // usamplerBuffer
+#define BAND_BINDING_NEIGHBOURS 2  // isamplerBuffer
+#define BAND_BINDING_ORIGINS 3     // isamplerBuffer (RGBA32I)
+#define BAND_BINDING_OMEGA 4       // samplerBuffer
+#define BAND_BINDING_SOURCE 5      // samplerBuffer
+#define BAND_BINDING_NEXT 6        // storage buffers [BAND_MAX_POOLS]: the next copy
+#define BAND_BINDING_FIELD 7       // storage buffers [BAND_MAX_POOLS]: the field
+#define BAND_BINDING_WORK 8        // isamplerBuffer
+
+// Specialization constants.
+#define BAND_SPEC_PER_CELL_OMEGA 0
+#define BAND_SPEC_HAS_SOURCE 1
+#define BAND_SPEC_COLLIDE 2
+#define BAND_SPEC_W_REST 3
+#define BAND_SPEC_W_AXIAL 4
+#define BAND_SPEC_W_DIAGONAL 5
+
+// The push constants, as a list of (type, name) for both languages.
+#define BAND_STEP_PARAMETERS(FIELD) \
+  FIELD(int, nx)                    \
+  FIELD(int, ny)                    \
+  FIELD(int, nz)                    \
+  FIELD(int, workOffset)            \
+  FIELD(int, works)                 \
+  FIELD(int, slotsPerMomentPool)    \
+  FIELD(int, slotsPerFieldPool)     \
+  FIELD(float, omega)               \
+  FIELD(float, decay)
+
+#define BAND_DECLARE_FIELD(type, name) type name;
+
+#ifdef __cplusplus
+namespace lbmshape::band_shader {
+struct StepParameters {
+  BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
+};
+static_assert(sizeof(StepParameters) == 9 * 4, "push constants: 9 words");
+}  // namespace lbmshape::band_shader
+#endif
+
+#endif

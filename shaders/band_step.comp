@@ -1,0 +1,163 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// One step of the narrow-band lattice in moment form (src/lbm/band_solver.hpp
+// has the scheme; band_reference_solver.cpp is the same arithmetic on the
+// CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
+// J, apply the source, collide and store (rho*, j*). With COLLIDE false it
+// stores X instead: the field of the current state.
+//
+// A workgroup is one brick; an invocation one of its rows of eight cells, as
+// two vec4 per moment, so every fetch brings four cells (on lavapipe a vec4
+// texel fetch is plain loads, other loads one lane at a time) and only the
+// cells beyond the row's ends come from the bricks beside it.
+#include "band_interface.h"
+
+layout(local_size_x = BAND_WORKGROUP_SIZE) in;
+layout(constant_id = BAND_SPEC_PER_CELL_OMEGA) const bool PER_CELL_OMEGA = false;
+layout(constant_id = BAND_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
+layout(constant_id = BAND_SPEC_COLLIDE) const bool COLLIDE = true;
+layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
+layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
+layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
+
+layout(push_constant) uniform Parameters { BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD) } p;
+
+layout(set = 0, binding = BAND_BINDING_MOMENTS) uniform samplerBuffer moments;
+layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBits;
+layout(set = 0, binding = BAND_BINDING_NEIGHBOURS) uniform isamplerBuffer neighbours;
+layout(set = 0, binding = BAND_BINDING_ORIGINS) uniform isamplerBuffer origins;
+layout(set = 0, binding = BAND_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;
+layout(set = 0, binding = BAND_BINDING_SOURCE) uniform samplerBuffer sourceBase;
+layout(set = 0, binding = BAND_BINDING_WORK) uniform isamplerBuffer work;
+layout(set = 0, binding = BAND_BINDING_NEXT, std430) writeonly buffer NextPool { vec4 v[]; } nextPools[BAND_MAX_POOLS];
+layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_POOLS];
+
+int slot, y, z;  // this invocation's brick and row
+ivec3 origin;    // the brick's first cell
+vec4 fa[19], fb[19];  // the row's cells 0-3 and 4-7, pulled
+
+// vec4 index of moment `m` of row (yy, zz), half hh, of brick s.
+int momentAt(int s, int m, int yy, int zz, int hh) { return ((s * 4 + m) * 64 + (zz * 8 + yy)) * 2 + hh; }
+int neighbourSlot(int dx, int dy, int dz) { return texelFetch(neighbours, slot * 27 + (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1)).x; }
+vec4 moment(int index) { return texelFetch(moments, index); }
+
+bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
+
+#define WEIGHT(EX, EY, EZ) \
+  ((EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 0 ? W_REST : (EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 1 ? W_AXIAL : W_DIAGONAL)
+// e . j for a velocity of literal components, without multiplications by 0
+// (so the sum is the CPU reference's, term for term).
+#define E_DOT(EX, EY, EZ, JX, JY, JZ)                                                      \
+  (((EX) == 0 ? vec4(0.0) : float(EX) * (JX)) + ((EY) == 0 ? vec4(0.0) : float(EY) * (JY)) + \
+   ((EZ) == 0 ? vec4(0.0) : float(EZ) * (JZ)))
+
+// fa[I], fb[I]: the row's eight cells pull from the cells at -e_I: the row
+// (y - EY, z - EZ), possibly in a neighbouring brick, shifted by one cell
+// along x for EX != 0 (the cell beyond the row's end from the neighbouring
+// brick). A cell whose upstream cell is outside the grid (or, never for a
+// streaming cell, outside the band) bounces back: f*_opposite of itself. A
+// held cell pulls from itself.
+#define PULL(I, EX, EY, EZ)                                                                                    \
+  {                                                                                                            \
+    const int yy = y - (EY), zz = z - (EZ);                                                                    \
+    const int by = yy < 0 ? -1 : (yy > 7 ? 1 : 0), bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);                       \
+    const int rowSlot = neighbourSlot(0, by, bz);                                                              \
+    const bool rowValid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 &&                   \
+                          origin.z + zz < p.nz && rowSlot >= 0;                                                \
+    const int rs = rowValid ? rowSlot : slot, ly = rowValid ? yy & 7 : y, lz = rowValid ? zz & 7 : z;          \
+    vec4 a[4], b[4];                                                                                           \
+    for (int k = 0; k < 4; ++k) {                                                                              \
+      a[k] = moment(momentAt(rs, k, ly, lz, 0));                                                               \
+      b[k] = moment(momentAt(rs, k, ly, lz, 1));                                                               \
+    }                                                                                                          \
+    bvec4 validA = bvec4(rowValid), validB = bvec4(rowValid);                                                  \
+    if ((EX) == 1) {                                                                                           \
+      const int side = neighbourSlot(-1, by, bz);                                                              \
+      const bool sideValid = rowValid && origin.x > 0 && side >= 0;                                            \
+      for (int k = 0; k < 4; ++k) {                                                                            \
+        const float left = moment(momentAt(sideValid ? side : rs, k, ly, lz, 1)).w;                            \
+        b[k] = vec4(a[k].w, b[k].xyz);                                                                         \
+        a[k] = vec4(left, a[k].xyz);                                                                           \
+      }                                                                                                        \
+      validA.x = sideValid;                                                                                    \
+    } else if ((EX) == -1) {                                                                                   \
+      const int side = neighbourSlot(1, by, bz);                                                               \
+      const bool sideValid = rowValid && side >= 0;                                                            \
+      for (int k = 0; k < 4; ++k) {                                                                            \
+        const float right = moment(momentAt(sideValid ? side : rs, k, ly, lz, 0)).x;                           \
+        a[k] = vec4(a[k].yzw, b[k].x);                                                                         \
+        b[k] = vec4(b[k].yzw, right);                                                                          \
+      }                                                                                                        \
+      validA = both(validA, lessThan(origin.x + ivec4(1, 2, 3, 4), ivec4(p.nx)));                              \
+      validB = both(validB, lessThan(origin.x + ivec4(5, 6, 7, 8), ivec4(p.nx)));                              \
+      validB.w = validB.w && sideValid;                                                                        \
+    }                                                                                                          \
+    const float w = WEIGHT(EX, EY, EZ);                                                                        \
+    const vec4 ownDotA = E_DOT(EX, EY, EZ, ownA[1], ownA[2], ownA[3]);                                         \
+    const vec4 ownDotB = E_DOT(EX, EY, EZ, ownB[1], ownB[2], ownB[3]);                                         \
+    /* held cells pull from themselves (+e), streaming cells at a wall bounce back (-e) */                    \
+    fa[I] = mix(w * (ownA[0] + 3.0 * mix(ownDotA, -ownDotA, streamsA)),                                        \
+                w * (a[0] + 3.0 * E_DOT(EX, EY, EZ, a[1], a[2], a[3])), both(validA, streamsA));               \
+    fb[I] = mix(w * (ownB[0] + 3.0 * mix(ownDotB, -ownDotB, streamsB)),                                        \
+                w * (b[0] + 3.0 * E_DOT(EX, EY, EZ, b[1], b[2], b[3])), both(validB, streamsB));               \
+  }
+
+// X = sum f, J = sum e f (in index order, as the CPU reference sums), the
+// source, then the collision or the field, for one half of the row.
+void finish(vec4 f[19], int part)
+{
+  vec4 X = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] + f[13] +
+           f[14] + f[15] + f[16] + f[17] + f[18];
+  const vec4 Jx = f[1] - f[2] + f[7] - f[8] + f[9] - f[10] + f[11] - f[12] + f[13] - f[14];
+  const vec4 Jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
+  const vec4 Jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
+  const int cells = (slot * 64 + z * 8 + y) * 2 + part;  // vec4 index in the per-cell arrays
+  vec4 S = vec4(0.0);
+  if (HAS_SOURCE) {
+    const vec4 A = texelFetch(sourceBase, cells);
+    X = (X + 0.5 * A) / (1.0 + 0.5 * p.decay);
+    S = A - p.decay * X;
+  }
+  // Every pool holds whole bricks, so a workgroup writes to one pool: the
+  // pool index is the same across it (dynamically uniform).
+  if (!COLLIDE) {
+    const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
+    fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
+    return;
+  }
+  const vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
+  const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
+  nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + (1.0 - 0.5 * omega) * S;
+  nextPools[pool].v[momentAt(first, 1, y, z, part)] = (1.0 - omega) * Jx;
+  nextPools[pool].v[momentAt(first, 2, y, z, part)] = (1.0 - omega) * Jy;
+  nextPools[pool].v[momentAt(first, 3, y, z, part)] = (1.0 - omega) * Jz;
+}
+
+void main()
+{
+  const int item = int(gl_WorkGroupID.x + gl_WorkGroupID.y * BAND_MAX_WORKGROUPS_X);
+  if (item >= p.works) return;
+  slot = texelFetch(work, p.workOffset + item).x;
+  const int lane = int(gl_LocalInvocationID.x);
+  y = lane & 7;
+  z = lane >> 3;
+  origin = texelFetch(origins, slot).xyz;
+  const uint rowBits = texelFetch(streamBits, slot * 64 + z * 8 + y).x;
+  const vec4 streamsA = vec4(notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0)));
+  const vec4 streamsB = vec4(notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0)));
+  vec4 ownA[4], ownB[4];
+  for (int k = 0; k < 4; ++k) {
+    ownA[k] = moment(momentAt(slot, k, y, z, 0));
+    ownB[k] = moment(momentAt(slot, k, y, z, 1));
+  }
+  const bvec4 streamsAb = notEqual(streamsA, vec4(0.0)), streamsBb = notEqual(streamsB, vec4(0.0));
+#define streamsA streamsAb
+#define streamsB streamsBb
+  PULL(0, 0, 0, 0)
+  PULL(1, 1, 0, 0) PULL(2, -1, 0, 0) PULL(3, 0, 1, 0) PULL(4, 0, -1, 0) PULL(5, 0, 0, 1) PULL(6, 0, 0, -1)
+  PULL(7, 1, 1, 0) PULL(8, -1, -1, 0) PULL(9, 1, -1, 0) PULL(10, -1, 1, 0)
+  PULL(11, 1, 0, 1) PULL(12, -1, 0, -1) PULL(13, 1, 0, -1) PULL(14, -1, 0, 1)
+  PULL(15, 0, 1, 1) PULL(16, 0, -1, -1) PULL(17, 0, 1, -1) PULL(18, 0, -1, 1)
+  finish(fa, 0);
+  finish(fb, 1);
+}

@@ -1,0 +1,133 @@
+#include "lbm/band_reference_solver.hpp"
+
+#include "lbm/band_state.hpp"
+#include "lbm/d3q19.hpp"
+#include "lbm/relaxation.hpp"
+
+namespace lbmshape {
+
+using d3q19::Q;
+
+BandReferenceSolver::BandReferenceSolver(std::shared_ptr<const BrickSet> bricks)
+    : bricks_(std::move(bricks)), neighbours_(bricks_->neighbourTable()), current_(bricks_->storedCells()),
+      next_(bricks_->storedCells()), streams_(bricks_->storedCells(), 0)
+{
+}
+
+void BandReferenceSolver::setUniformGamma(double gamma)
+{
+  relaxation::checkGamma(gamma);
+  uniformOmega_ = float(relaxation::omegaFromGamma(gamma));
+  omegaPerCell_.clear();
+}
+
+void BandReferenceSolver::setGammaPerCell(const BandField& gamma)
+{
+  band_state::checkSameBricks(*bricks_, gamma, "gamma");
+  omegaPerCell_ = band_state::omegaFromGamma(gamma);
+}
+
+void BandReferenceSolver::setSource(std::optional<BandSource> source)
+{
+  if (source) band_state::checkSameBricks(*bricks_, source->base, "source");
+  source_ = std::move(source);
+}
+
+void BandReferenceSolver::initialize(const BandField& field, double streamingHalfWidth)
+{
+  band_state::checkSameBricks(*bricks_, field, "field");
+  current_ = band_state::collidedEquilibrium(field, source_, uniformOmega_, omegaPerCell_);
+  next_ = current_;  // bricks a step skips keep their moments in both copies
+  streams_ = band_state::streamingCells(field, streamingHalfWidth);
+  work_ = band_state::slotsToStep(*bricks_, streams_, source_.has_value());
+  initial_ = field;
+  steps_ = 0;
+}
+
+void BandReferenceSolver::step(int count)
+{
+  // The state initialize() leaves is already the one after the first step
+  // (band_state::collidedEquilibrium): that step costs nothing.
+  if (count > 0 && steps_ == 0) --count, ++steps_;
+  for (int s = 0; s < count; ++s) {
+    sweep<true>(nullptr);
+    current_.swap(next_);
+    ++steps_;
+  }
+}
+
+BandField BandReferenceSolver::field()
+{
+  // Beyond the band nothing moves: the far sides are the initial field's.
+  BandField out = initial_;
+  if (steps_ > 0) sweep<false>(&out.values());
+  return out;
+}
+
+template <bool Collide>
+void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
+{
+  const BrickSet& bricks = *bricks_;
+  const Extent3 e = bricks.cells();
+  // A step updates the bricks that change; the field is read from all.
+  std::vector<int32_t> all;
+  if (!Collide) {
+    all.resize(bricks.activeCount());
+    for (size_t s = 0; s < all.size(); ++s) all[s] = int32_t(s);
+  }
+  const std::vector<int32_t>& work = Collide ? work_ : all;
+  const glm::vec4* current = current_.data();
+  glm::vec4* next = next_.data();
+  const float* A = source_ ? source_->base.values().data() : nullptr;
+  const float decay = source_ ? source_->decay : 0.0f;
+#pragma omp parallel for schedule(static)
+  for (size_t w = 0; w < work.size(); ++w) {
+    const size_t s = size_t(work[w]);
+    const glm::ivec3 origin = brickEdge * bricks.brick(int32_t(s));
+    const int32_t* around = neighbours_.data() + s * 27;
+    for (int local = 0; local < brickCells; ++local) {
+      const size_t i = s * brickCells + size_t(local);
+      const glm::ivec3 l(local % brickEdge, local / brickEdge % brickEdge, local / (brickEdge * brickEdge));
+      const glm::ivec3 c = origin + l;
+      if (!e.contains(c.x, c.y, c.z)) continue;
+      const glm::vec4 own = current[i];
+      float f[Q];
+      for (int q = 0; q < Q; ++q) {
+        const auto& v = d3q19::velocities[q];
+        const glm::vec3 ev(float(v.x), float(v.y), float(v.z));
+        glm::vec4 from = own;  // held cells pull from themselves
+        float sign = 1.0f;
+        if (streams_[i]) {
+          const glm::ivec3 up = c - glm::ivec3(v.x, v.y, v.z);
+          const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
+          const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
+          if (e.contains(up.x, up.y, up.z) && slot != noBrick)
+            from = current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
+          else
+            sign = -1.0f;  // a wall (or, never for a streaming cell, the band's edge): bounce-back, f*_opposite(x)
+        }
+        f[q] = d3q19::weight(q) * (from.x + sign * 3.0f * (ev.x * from.y + ev.y * from.z + ev.z * from.w));
+      }
+      float X = 0.0f;
+      for (int q = 0; q < Q; ++q) X += f[q];
+      glm::vec3 J(0.0f);
+      for (int q = 0; q < Q; ++q) {
+        const auto& v = d3q19::velocities[q];
+        J += glm::vec3(float(v.x), float(v.y), float(v.z)) * f[q];
+      }
+      float S = 0.0f;
+      if (A) {
+        X = (X + 0.5f * A[i]) / (1.0f + 0.5f * decay);
+        S = A[i] - decay * X;
+      }
+      if constexpr (!Collide) {
+        (*fieldOut)[i] = X;
+      } else {
+        const float omega = omegaPerCell_.empty() ? uniformOmega_ : omegaPerCell_[i];
+        next[i] = glm::vec4(X + (1.0f - 0.5f * omega) * S, (1.0f - omega) * J);
+      }
+    }
+  }
+}
+
+}  // namespace lbmshape

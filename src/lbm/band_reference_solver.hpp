@@ -1,0 +1,43 @@
+// The narrow-band lattice (band_solver.hpp) on the CPU: the reference the
+// Vulkan solver is tested against.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lbm/band_solver.hpp"
+
+namespace lbmshape {
+
+class BandReferenceSolver final : public BandSolver {
+public:
+  explicit BandReferenceSolver(std::shared_ptr<const BrickSet> bricks);
+
+  std::string backendName() const override { return "reference (band)"; }
+  const BrickSet& bricks() const override { return *bricks_; }
+  void setUniformGamma(double gamma) override;
+  void setGammaPerCell(const BandField& gamma) override;
+  void setSource(std::optional<BandSource> source) override;
+  void initialize(const BandField& field, double streamingHalfWidth) override;
+  void step(int count) override;
+  int stepsTaken() const override { return steps_; }
+  BandField field() override;
+
+private:
+  template <bool Collide>
+  void sweep(std::vector<float>* fieldOut);
+
+  std::shared_ptr<const BrickSet> bricks_;
+  std::vector<int32_t> neighbours_;     // 27 a slot (BrickSet::neighbourTable)
+  std::vector<glm::vec4> current_, next_;  // (rho*, j*) a cell
+  std::vector<uint8_t> streams_;        // 1: the cell streams; 0: held (or beyond the grid)
+  std::vector<int32_t> work_;           // the slots a step updates (band_state::slotsToStep)
+  BandField initial_;                   // X at initialisation, with its far sides
+  float uniformOmega_ = 1.0f;
+  std::vector<float> omegaPerCell_;     // empty: uniform
+  std::optional<BandSource> source_;
+  int steps_ = 0;
+};
+
+}  // namespace lbmshape

@@ -1,0 +1,52 @@
+// The lattice Boltzmann scheme on the narrow band (band/), stored as four
+// moments a cell instead of 19 distributions: the regularised form of the
+// same D3Q19 scheme (lattice_solver.hpp). docs/lattice-theory.md derives it.
+//
+// After collision a cell keeps rho* = X + (1 - omega/2) S and the flux
+// j* = (1 - omega) J, from which every post-collision distribution follows:
+//     f*_i = w_i (rho* + 3 e_i . j*).
+// A step pulls f_i(x) = f*_i(x - e_i) from the neighbours' moments, sums
+// X = sum_i f_i (+ S/2, solved exactly for S = A - c X, as on the grid) and
+// J = sum_i e_i f_i, and collides. This is BGK with the distributions'
+// higher moments filtered out at every collision: the same scheme exactly
+// at omega = 1 (tau = 1), and the same diffusion coefficient c_s^2 (tau -
+// 1/2) otherwise; 16 bytes a cell a copy instead of 76.
+//
+// Cells with |X| < streamingHalfWidth at initialisation stream; the others,
+// near the band's edge, are held: they pull from themselves (no exchange
+// with their neighbours), so they keep their value, or follow only the
+// source. Streaming cells next to them see a fixed boundary value. Cells at
+// the grid's faces bounce back, as on the grid.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "band/band_field.hpp"
+#include "lbm/stepping_solver.hpp"
+
+namespace lbmshape {
+
+// S = base - decay * X in every cell of the band.
+struct BandSource {
+  BandField base;
+  float decay = 0.0f;
+};
+
+class BandSolver : public SteppingSolver {
+public:
+  virtual const BrickSet& bricks() const = 0;
+
+  virtual void setUniformGamma(double gamma) = 0;
+  virtual void setGammaPerCell(const BandField& gamma) = 0;
+  virtual void setSource(std::optional<BandSource> source) = 0;
+
+  // Restart from field X, every cell at equilibrium (after setSource).
+  virtual void initialize(const BandField& field, double streamingHalfWidth) = 0;
+
+  // The field X after the steps taken so far, on the same bricks; beyond
+  // them (far value and sides) as the field initialize() was given.
+  virtual BandField field() = 0;
+};
+
+}  // namespace lbmshape

@@ -1,0 +1,67 @@
+#include "lbm/band_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "lbm/relaxation.hpp"
+
+namespace lbmshape::band_state {
+
+std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source,
+                                           float uniformOmega, const std::vector<float>& omegaPerCell)
+{
+  const std::vector<float>& X = field.values();
+  std::vector<glm::vec4> moments(X.size(), glm::vec4(0.0f));
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < X.size(); ++i) {
+    const float omega = omegaPerCell.empty() ? uniformOmega : omegaPerCell[i];
+    const float S = source ? source->base.values()[i] - source->decay * X[i] : 0.0f;
+    moments[i] = glm::vec4(X[i] + (1.0f - 0.5f * omega) * S, 0.0f, 0.0f, 0.0f);
+  }
+  return moments;
+}
+
+std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth)
+{
+  const BrickSet& bricks = field.bricks();
+  std::vector<uint8_t> streams(field.values().size(), 0);
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < bricks.activeCount(); ++s)
+    for (int local = 0; local < brickCells; ++local) {
+      const glm::ivec3 c = bricks.cell(int32_t(s), local);
+      const size_t i = s * brickCells + size_t(local);
+      streams[i] = bricks.cells().contains(c.x, c.y, c.z) && std::abs(field.values()[i]) < halfWidth;
+    }
+  return streams;
+}
+
+std::vector<int32_t> slotsToStep(const BrickSet& bricks, const std::vector<uint8_t>& streams, bool source)
+{
+  std::vector<int32_t> slots;
+  for (size_t s = 0; s < bricks.activeCount(); ++s) {
+    const auto first = streams.begin() + std::ptrdiff_t(s * brickCells);
+    if (source || std::any_of(first, first + brickCells, [](uint8_t streams) { return streams != 0; }))
+      slots.push_back(int32_t(s));
+  }
+  return slots;
+}
+
+std::vector<float> omegaFromGamma(const BandField& gamma)
+{
+  std::vector<float> omega(gamma.values().size());
+  for (size_t i = 0; i < omega.size(); ++i) {
+    relaxation::checkGamma(gamma.values()[i]);
+    omega[i] = float(relaxation::omegaFromGamma(gamma.values()[i]));
+  }
+  return omega;
+}
+
+void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)
+{
+  if (&field.bricks() != &bricks && (field.bricks().activeCount() != bricks.activeCount() ||
+                                     !(field.bricks().cells() == bricks.cells())))
+    throw std::invalid_argument(std::string("the ") + what + " lies on other bricks than the solver's");
+}
+
+}  // namespace lbmshape::band_state

@@ -1,0 +1,36 @@
+// Host-side work both narrow-band solvers share: the state initialize()
+// starts from, and which cells stream.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "band/band_field.hpp"
+#include "lbm/band_solver.hpp"
+
+namespace lbmshape::band_state {
+
+// The moments (rho*, j*) after one collision of the equilibrium
+// f_i = w_i (X - S/2): what a grid solver holds after its first step, whose
+// streaming delivers every cell its own equilibrium. rho* = X + (1 - omega/2)
+// S with S = A - c X, j* = 0. `omega` per cell, or uniform when empty.
+std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source,
+                                           float uniformOmega, const std::vector<float>& omegaPerCell);
+
+// 1 for each stored cell inside the grid with |X| < halfWidth, else 0.
+std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth);
+
+// The slots a step must update: all of them with a source (held cells
+// follow it), else only those with a streaming cell: a brick of held cells
+// alone keeps its moments, step after step.
+std::vector<int32_t> slotsToStep(const BrickSet& bricks, const std::vector<uint8_t>& streams, bool source);
+
+// omega per cell from gamma per cell, checking every value, as on the grid.
+std::vector<float> omegaFromGamma(const BandField& gamma);
+
+// Throws std::invalid_argument unless `field` lies on `bricks`.
+void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what);
+
+}  // namespace lbmshape::band_state

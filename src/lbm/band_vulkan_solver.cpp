@@ -1,0 +1,329 @@
+#include "lbm/band_vulkan_solver.hpp"
+
+#include <array>
+#include <cstring>
+
+#include "band_interface.h"
+#include "core/error.hpp"
+#include "gpu/gpu_buffer.hpp"
+#include "gpu/gpu_context.hpp"
+#include "lbm/band_state.hpp"
+#include "lbm/d3q19.hpp"
+#include "lbm/relaxation.hpp"
+
+namespace lbmshape {
+
+using gpu::GpuBuffer;
+using gpu::MemoryUse;
+
+namespace {
+
+// Steps recorded into one submission; Ctrl-C is checked between batches by
+// the caller (InterruptibleSteps), so this only bounds a command buffer.
+constexpr int stepsPerSubmit = 256;
+
+constexpr uint64_t momentBytesPerSlot = 4 * brickCells * 4, fieldBytesPerSlot = brickCells * 4;
+
+constexpr auto texels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
+constexpr auto storage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
+                         vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
+
+std::vector<vk::DescriptorSetLayoutBinding> bindings()
+{
+  using T = vk::DescriptorType;
+  return {{BAND_BINDING_MOMENTS, T::eUniformTexelBuffer, 1, {}},   {BAND_BINDING_STREAMS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}}, {BAND_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},     {BAND_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_NEXT, T::eStorageBuffer, BAND_MAX_POOLS, {}}, {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_POOLS, {}},
+          {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}}};
+}
+
+}  // namespace
+
+// How the band's buffers split into pools of whole bricks, each within the
+// device's storage-buffer range, and whether they fit its texel buffers.
+struct BandPools {
+  BandPools(const gpu::DeviceDescription& device, size_t slots)
+      : slotsPerMomentPool(std::max<uint64_t>(1, device.maxStorageBufferRange / momentBytesPerSlot)),
+        slotsPerFieldPool(std::max<uint64_t>(1, device.maxStorageBufferRange / fieldBytesPerSlot))
+  {
+    const uint64_t cells = uint64_t(slots) * brickCells;
+    const uint64_t pools = std::max((slots + slotsPerMomentPool - 1) / slotsPerMomentPool,
+                                    (slots + slotsPerFieldPool - 1) / slotsPerFieldPool);
+    auto fits = [&](uint64_t maxCells) {
+      return "the narrow band has " + std::to_string(cells) + " cells, but " + device.name + " holds at most " +
+             std::to_string(maxCells) + " of them; use a coarser grid (--res)";
+    };
+    if (pools > BAND_MAX_POOLS) throw UsageError(fits(BAND_MAX_POOLS * slotsPerMomentPool * brickCells));
+    if (cells > device.maxTexelBufferElements) throw UsageError(fits(device.maxTexelBufferElements));
+    if (device.maxAllocationBytes && cells * 16 > device.maxAllocationBytes)
+      throw UsageError(fits(device.maxAllocationBytes / 16));
+  }
+
+  uint64_t slotsPerMomentPool, slotsPerFieldPool;
+};
+
+struct BandVulkanSolver::Resources {
+  Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b)
+      : context(c), bricks(std::move(b)), cells(bricks->storedCells()), pools(c.description(), bricks->activeCount()),
+        moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device), GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
+        field(c, 4 * cells, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
+        neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
+        origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
+        work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device),
+        omega(c, 16, texels, MemoryUse::Device), source(c, 16, texels, MemoryUse::Device),
+        staging(c, 16 * cells, vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst,
+                MemoryUse::Readback)
+  {
+    std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
+                                                   vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
+    descriptorPool = vk::raii::DescriptorPool(
+        c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
+    const auto& setLayout = c.program(program(true)).setLayout;
+    std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
+    sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
+    writeDescriptors();
+  }
+
+  gpu::GpuContext& context;
+  std::shared_ptr<const BrickSet> bricks;
+  size_t cells;
+  BandPools pools;
+  GpuBuffer moments[2];
+  GpuBuffer field, streams, neighbours, origins;
+  GpuBuffer work;   // the slots a step updates, then every slot (for the field)
+  int stepWorks = 0;
+  GpuBuffer omega, source;  // 16 bytes until set: a valid view for the shader variants that ignore them
+  GpuBuffer staging;
+  std::vector<vk::raii::BufferView> views;
+  vk::raii::DescriptorPool descriptorPool{nullptr};
+  std::vector<vk::raii::DescriptorSet> sets;  // [k]: reads copy k, writes the other
+
+  int current = 0;
+  int steps = 0;
+  float uniformOmega = 1.0f;
+  std::vector<float> omegaPerCell;     // host copy: initialize() needs it
+  std::optional<BandSource> sourceHost;
+  BandField initial;                   // X at initialisation, with its far sides
+
+  vk::BufferView view(const GpuBuffer& buffer, vk::Format format)
+  {
+    views.emplace_back(context.device(), vk::BufferViewCreateInfo({}, buffer.handle(), format, 0, VK_WHOLE_SIZE));
+    return *views.back();
+  }
+
+  // Descriptors of every binding, both sets; again when omega or the source
+  // buffer is replaced.
+  void writeDescriptors()
+  {
+    using T = vk::DescriptorType;
+    views.clear();
+    const vk::BufferView copyViews[2] = {view(moments[0], vk::Format::eR32G32B32A32Sfloat),
+                                         view(moments[1], vk::Format::eR32G32B32A32Sfloat)};
+    const vk::BufferView streamView = view(streams, vk::Format::eR32Uint),
+                         neighbourView = view(neighbours, vk::Format::eR32Sint),
+                         originView = view(origins, vk::Format::eR32G32B32A32Sint),
+                         omegaView = view(omega, vk::Format::eR32G32B32A32Sfloat),
+                         sourceView = view(source, vk::Format::eR32G32B32A32Sfloat),
+                         workView = view(work, vk::Format::eR32Sint);
+    auto poolRanges = [&](const GpuBuffer& buffer, uint64_t bytesPerSlot, uint64_t slotsPerPool) {
+      std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS> ranges;
+      const uint64_t poolBytes = bytesPerSlot * slotsPerPool;
+      for (uint64_t k = 0; k < BAND_MAX_POOLS; ++k) {
+        // Pools past the last repeat it: every descriptor must be valid.
+        const uint64_t offset = std::min(k * poolBytes, (buffer.bytes() - 1) / poolBytes * poolBytes);
+        ranges[k] = vk::DescriptorBufferInfo(buffer.handle(), offset, std::min(poolBytes, buffer.bytes() - offset));
+      }
+      return ranges;
+    };
+    std::array<std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS>, 2> nextRanges = {
+        poolRanges(moments[1], momentBytesPerSlot, pools.slotsPerMomentPool),
+        poolRanges(moments[0], momentBytesPerSlot, pools.slotsPerMomentPool)};
+    const auto fieldRanges = poolRanges(field, fieldBytesPerSlot, pools.slotsPerFieldPool);
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (int k = 0; k < 2; ++k) {
+      const vk::DescriptorSet set = *sets[size_t(k)];
+      writes.emplace_back(set, BAND_BINDING_MOMENTS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
+      writes.emplace_back(set, BAND_BINDING_STREAMS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &streamView);
+      writes.emplace_back(set, BAND_BINDING_NEIGHBOURS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &neighbourView);
+      writes.emplace_back(set, BAND_BINDING_ORIGINS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &originView);
+      writes.emplace_back(set, BAND_BINDING_OMEGA, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaView);
+      writes.emplace_back(set, BAND_BINDING_SOURCE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceView);
+      writes.emplace_back(set, BAND_BINDING_WORK, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &workView);
+      writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, nextRanges[size_t(k)].data());
+      writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, fieldRanges.data());
+    }
+    context.device().updateDescriptorSets(writes, {});
+  }
+
+  // Copies `bytes` from host memory into a device buffer, through the staging buffer.
+  void upload(const void* data, size_t bytes, const GpuBuffer& target)
+  {
+    std::memcpy(staging.mapped(), data, bytes);
+    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, bytes)); });
+  }
+
+  gpu::ProgramSpec program(bool collide) const
+  {
+    using gpu::specBool, gpu::specFloat;
+    return {"band_step", bindings(),
+            {specBool(!omegaPerCell.empty()), specBool(sourceHost.has_value()), specBool(collide),
+             specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
+            sizeof(band_shader::StepParameters)};
+  }
+
+  // A step's parameters, or with `everySlot` the field pass's.
+  band_shader::StepParameters parameters(bool everySlot) const
+  {
+    const Extent3& e = bricks->cells();
+    band_shader::StepParameters p{};
+    p.nx = e.nx, p.ny = e.ny, p.nz = e.nz;
+    p.workOffset = everySlot ? stepWorks : 0;
+    p.works = everySlot ? int(bricks->activeCount()) : stepWorks;
+    p.slotsPerMomentPool = int(pools.slotsPerMomentPool);
+    p.slotsPerFieldPool = int(pools.slotsPerFieldPool);
+    p.omega = uniformOmega;
+    p.decay = sourceHost ? sourceHost->decay : 0.0f;
+    return p;
+  }
+
+  void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int from, bool everySlot) const
+  {
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[size_t(from)], {});
+    const uint32_t works = uint32_t(everySlot ? bricks->activeCount() : size_t(stepWorks));
+    cmd.dispatch(std::min<uint32_t>(works, BAND_MAX_WORKGROUPS_X), (works + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
+  }
+};
+
+BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks)
+{
+  if (bricks->activeCount() == 0) throw std::invalid_argument("a narrow band without bricks");
+  r_ = std::make_unique<Resources>(context, std::move(bricks));
+  const BrickSet& b = *r_->bricks;
+  const std::vector<int32_t> table = b.neighbourTable();
+  r_->upload(table.data(), table.size() * 4, r_->neighbours);
+  std::vector<glm::ivec4> origins(b.activeCount());
+  for (size_t s = 0; s < origins.size(); ++s) origins[s] = glm::ivec4(brickEdge * b.brick(int32_t(s)), 0);
+  r_->upload(origins.data(), origins.size() * 16, r_->origins);
+}
+
+BandVulkanSolver::~BandVulkanSolver() = default;
+
+double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
+{
+  return 2 * 16 + 4 + 0.5 + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field, streaming bits
+}
+
+std::string BandVulkanSolver::backendName() const { return "vulkan band (" + r_->context.description().name + ")"; }
+const BrickSet& BandVulkanSolver::bricks() const { return *r_->bricks; }
+int BandVulkanSolver::stepsTaken() const { return r_->steps; }
+
+void BandVulkanSolver::setUniformGamma(double gamma)
+{
+  relaxation::checkGamma(gamma);
+  r_->uniformOmega = float(relaxation::omegaFromGamma(gamma));
+  r_->omegaPerCell.clear();
+}
+
+void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
+{
+  band_state::checkSameBricks(*r_->bricks, gamma, "gamma");
+  r_->omegaPerCell = band_state::omegaFromGamma(gamma);
+  if (r_->omega.bytes() != 4 * r_->cells) {
+    r_->omega = GpuBuffer(r_->context, 4 * r_->cells, texels, MemoryUse::Device);
+    r_->writeDescriptors();
+  }
+  r_->upload(r_->omegaPerCell.data(), 4 * r_->cells, r_->omega);
+}
+
+void BandVulkanSolver::setSource(std::optional<BandSource> source)
+{
+  if (source) {
+    band_state::checkSameBricks(*r_->bricks, source->base, "source");
+    if (r_->source.bytes() != 4 * r_->cells) {
+      r_->source = GpuBuffer(r_->context, 4 * r_->cells, texels, MemoryUse::Device);
+      r_->writeDescriptors();
+    }
+    r_->upload(source->base.values().data(), 4 * r_->cells, r_->source);
+  }
+  r_->sourceHost = std::move(source);
+}
+
+void BandVulkanSolver::initialize(const BandField& field, double streamingHalfWidth)
+{
+  band_state::checkSameBricks(*r_->bricks, field, "field");
+  const std::vector<glm::vec4> moments =
+      band_state::collidedEquilibrium(field, r_->sourceHost, r_->uniformOmega, r_->omegaPerCell);
+  // Per cell (rho*, jx*, jy*, jz*) -> per brick [moment][cell].
+  std::vector<float> layout(4 * r_->cells);
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < r_->bricks->activeCount(); ++s)
+    for (int m = 0; m < 4; ++m)
+      for (int l = 0; l < brickCells; ++l) layout[(s * 4 + size_t(m)) * brickCells + size_t(l)] = moments[s * brickCells + size_t(l)][m];
+  r_->upload(layout.data(), layout.size() * 4, r_->moments[0]);
+  r_->upload(layout.data(), layout.size() * 4, r_->moments[1]);  // bricks a step skips keep their moments in both
+
+  const std::vector<uint8_t> streams = band_state::streamingCells(field, streamingHalfWidth);
+  std::vector<int32_t> work = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
+  r_->stepWorks = int(work.size());
+  for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));
+  r_->upload(work.data(), work.size() * 4, r_->work);
+  std::vector<uint32_t> rows(64 * r_->bricks->activeCount(), 0);
+  for (size_t row = 0; row < rows.size(); ++row)
+    for (int x = 0; x < brickEdge; ++x) rows[row] |= uint32_t(streams[row * brickEdge + size_t(x)]) << x;
+  r_->upload(rows.data(), rows.size() * 4, r_->streams);
+  r_->current = 0;
+  r_->steps = 0;
+  r_->initial = field;
+}
+
+void BandVulkanSolver::step(int count)
+{
+  // The state initialize() leaves is the one after the first step
+  // (band_state::collidedEquilibrium): that step costs nothing.
+  if (count > 0 && r_->steps == 0) --count, ++r_->steps;
+  if (count <= 0) return;
+  auto& program = r_->context.program(r_->program(true));
+  const auto bind = vk::PipelineBindPoint::eCompute;
+  while (count > 0) {
+    const int batch = std::min(count, stepsPerSubmit);
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.bindPipeline(bind, *program.pipeline);
+      cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(false));
+      for (int s = 0; s < batch; ++s) {
+        r_->dispatch(cmd, program, (r_->current + s) % 2, false);
+        // The next step reads what this one wrote and overwrites what it read.
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                            vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eShaderRead,
+                                              vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
+                            {}, {});
+      }
+    });
+    r_->current = (r_->current + batch) % 2;
+    r_->steps += batch;
+    count -= batch;
+  }
+}
+
+BandField BandVulkanSolver::field()
+{
+  // Beyond the band nothing moves: the far sides are the initial field's.
+  BandField out = r_->initial;
+  if (r_->steps == 0) return out;
+  auto& program = r_->context.program(r_->program(false));
+  const size_t bytes = 4 * r_->cells;
+  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(true));
+    r_->dispatch(cmd, program, r_->current, true);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
+    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, bytes));
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
+  });
+  std::memcpy(out.values().data(), r_->staging.mapped(), bytes);
+  return out;
+}
+
+}  // namespace lbmshape

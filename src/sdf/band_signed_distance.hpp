@@ -1,0 +1,30 @@
+// The signed distance field on the narrow band only: the bricks (band/) that
+// hold a cell within halfWidth + 2 voxels of the surface, every cell of them
+// with its exact distance and its sign; nothing is computed or stored for
+// the rest of the grid, whose bricks are only marked inside or outside. Same
+// convention as signedDistance(): positive inside, in voxels, inside meaning
+// generalized winding number above 1/2.
+//
+// Why + 2: the lattice updates the cells within halfWidth of the surface,
+// and each pulls from neighbours up to sqrt(2) voxels away, which must be
+// stored too; marching cubes needs the cells within about 2 voxels.
+#pragma once
+
+#include "band/band_field.hpp"
+#include "core/progress.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "sdf/grid_frame.hpp"
+#include "sdf/signed_distance.hpp"
+
+namespace lbmshape {
+
+struct BandDistanceOptions {
+  double halfWidth = 9.0;        // voxels; at least 1
+  Progress* progress = nullptr;  // told each part of the work as it starts
+};
+
+// Throws like signedDistance(); UsageError for a half width under 1 voxel.
+BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options = {},
+                             SignedDistanceStats* stats = nullptr);
+
+}  // namespace lbmshape

@@ -1,0 +1,138 @@
+#include "surface/band_marching_cubes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "surface/case_triangulation.hpp"
+#include "surface/cube_cases.hpp"
+#include "surface/edge_vertex.hpp"
+
+namespace lbmshape {
+namespace {
+
+// A cut grid edge, named by the grid index of its lower sample and its axis.
+using EdgeKey = uint64_t;
+
+struct BrickTriangles {
+  std::vector<std::array<EdgeKey, 3>> triangles;
+};
+
+class BrickCubes {
+public:
+  BrickCubes(const BandField& field, float iso) : field_(field), e_(field.extent()), iso_(iso) {}
+
+  void triangulate(int32_t slot, BrickTriangles& out) const
+  {
+    const glm::ivec3 origin = brickEdge * field_.bricks().brick(slot);
+    const auto& cases = cube::cubeCases();
+    std::array<float, 8> corner;
+    for (int lz = 0; lz < brickEdge; ++lz)
+      for (int ly = 0; ly < brickEdge; ++ly)
+        for (int lx = 0; lx < brickEdge; ++lx) {
+          const glm::ivec3 c = origin + glm::ivec3(lx, ly, lz);
+          if (c.x + 1 >= e_.nx || c.y + 1 >= e_.ny || c.z + 1 >= e_.nz) continue;
+          int index = 0;
+          for (int k = 0; k < 8; ++k) {
+            corner[k] = field_.at(c.x + (k & 1), c.y + (k >> 1 & 1), c.z + (k >> 2 & 1));
+            index |= int(corner[k] > iso_) << k;
+          }
+          if (index == 0 || index == 255) continue;
+          triangulateCube(cases[index], c, corner, out);
+        }
+  }
+
+private:
+  EdgeKey keyOf(int edge, const glm::ivec3& c) const
+  {
+    const cube::Edge& e = cube::edges()[edge];
+    const glm::ivec3 lower = c + glm::ivec3(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1),
+                                           cube::cornerOffset(e.lower, 2));
+    return EdgeKey(e_.index(lower.x, lower.y, lower.z)) * 3 + e.axis;
+  }
+
+  // The cube-local position of the vertex on a cube edge.
+  glm::dvec3 localPoint(int edge, const std::array<float, 8>& corner) const
+  {
+    const cube::Edge& e = cube::edges()[edge];
+    glm::dvec3 p(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1), cube::cornerOffset(e.lower, 2));
+    p[e.axis] += edge_vertex::crossing(corner[e.lower], corner[e.upper], iso_);
+    return p;
+  }
+
+  void triangulateCube(const cube::CubeCase& c, const glm::ivec3& cell, const std::array<float, 8>& corner,
+                       BrickTriangles& out) const
+  {
+    triangulateCubeCase(
+        c, [&](int edge) { return localPoint(edge, corner); },
+        [&](int i, int j, int k) {
+          out.triangles.push_back({keyOf(c.edges[i], cell), keyOf(c.edges[j], cell), keyOf(c.edges[k], cell)});
+        });
+  }
+
+  const BandField& field_;
+  Extent3 e_;
+  float iso_;
+};
+
+}  // namespace
+
+TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, float isovalue)
+{
+  if (!(frame.extent == field.extent()))
+    throw std::invalid_argument("the field is " + field.extent().toString() + " but its frame is " +
+                                frame.extent.toString());
+  if (!std::isfinite(isovalue)) throw UsageError("the iso value must be a finite number");
+  for (float v : field.values())
+    if (!std::isfinite(v)) throw NumericalError("the field holds a value that is not a finite number");
+
+  const BrickSet& bricks = field.bricks();
+  const size_t slots = bricks.activeCount();
+  std::vector<BrickTriangles> perBrick(slots);
+  const BrickCubes cubes(field, isovalue);
+#pragma omp parallel for schedule(dynamic, 4)
+  for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), perBrick[s]);
+
+  // One vertex per cut edge: the edges' keys, sorted, number the vertices.
+  std::vector<EdgeKey> keys;
+  size_t triangleCount = 0;
+  for (const BrickTriangles& b : perBrick) triangleCount += b.triangles.size();
+  keys.reserve(3 * triangleCount);
+  for (const BrickTriangles& b : perBrick)
+    for (const auto& t : b.triangles) keys.insert(keys.end(), t.begin(), t.end());
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  if (keys.size() >= std::numeric_limits<uint32_t>::max())
+    throw UsageError("the surface has more than 4 billion vertices; use a coarser grid");
+
+  TriangleMesh mesh;
+  mesh.triangles.reserve(triangleCount);
+  auto vertexOf = [&](EdgeKey key) { return uint32_t(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin()); };
+  for (const BrickTriangles& b : perBrick)
+    for (const auto& t : b.triangles) mesh.triangles.emplace_back(vertexOf(t[0]), vertexOf(t[1]), vertexOf(t[2]));
+
+  const Extent3 e = field.extent();
+  const auto at = [&field](int x, int y, int z) { return field.at(x, y, z); };
+  mesh.positions.resize(keys.size());
+  mesh.normals.resize(keys.size());
+#pragma omp parallel for schedule(static)
+  for (size_t v = 0; v < keys.size(); ++v) {
+    const int axis = int(keys[v] % 3);
+    const uint64_t cell = keys[v] / 3;
+    const glm::ivec3 a(int(cell % e.nx), int(cell / e.nx % e.ny), int(cell / e.nx / e.ny));
+    glm::ivec3 b = a;
+    ++b[axis];
+    const float fa = field.at(a.x, a.y, a.z), fb = field.at(b.x, b.y, b.z);
+    const double t = edge_vertex::crossing(fa, fb, isovalue);
+    glm::dvec3 grid(a);
+    grid[axis] += t;
+    mesh.positions[v] = frame.toWorld(grid);
+    mesh.normals[v] = edge_vertex::normal(edge_vertex::gradient(at, e, a.x, a.y, a.z),
+                                          edge_vertex::gradient(at, e, b.x, b.y, b.z), t, axis, fa > isovalue);
+  }
+  return mesh;
+}
+
+}  // namespace lbmshape

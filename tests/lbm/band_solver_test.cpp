@@ -1,0 +1,181 @@
+// The narrow-band lattice in moment form (lbm/band_solver.hpp) against the
+// grid's BGK lattice, the analytic diffusion coefficient, and itself on the
+// other back end.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "lbm/band_width.hpp"
+#include "lbm/relaxation.hpp"
+#include "support/band_fields.hpp"
+#include "support/fields.hpp"
+
+namespace lbmshape {
+namespace {
+
+using testing::Backend;
+
+class BandSolverTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
+protected:
+  std::unique_ptr<BandSolver> solver(std::shared_ptr<const BrickSet> bricks)
+  {
+    return testing::makeBandSolver(GetParam(), std::move(bricks));
+  }
+  // The grid's BGK lattice and the band's after `steps` steps from `field`.
+  std::pair<Volume, BandField> bothAfter(const Volume& field, double gamma, int steps, double halfWidth,
+                                         std::shared_ptr<const BrickSet> bricks)
+  {
+    auto dense = testing::makeSolver(GetParam(), field.extent());
+    dense->setUniformGamma(gamma);
+    dense->initialize(field);
+    dense->step(steps);
+    auto band = solver(bricks);
+    band->setUniformGamma(gamma);
+    band->initialize(testing::bandOf(field, bricks), halfWidth);
+    band->step(steps);
+    return {dense->field(), band->field()};
+  }
+};
+
+// At tau = 1 the collision leaves nothing but the equilibrium, so the moment
+// form is BGK itself: the same field, cell for cell, wherever the band's
+// edge is farther than the steps taken (nothing from it has arrived).
+TEST_P(BandSolverTest, IsTheGridsBgkAtTauOne)
+{
+  const Extent3 extent{56, 60, 64};
+  const Volume field = testing::sphereDistance(extent, 27.5, 29.0, 31.5, 12.0);
+  const double halfWidth = 9.0;
+  const int steps = 6;
+  auto bricks = testing::bricksNear(field, halfWidth + 2.0);
+  const auto [expected, got] = bothAfter(field, relaxation::gammaFromTau(1.0), steps, halfWidth, bricks);
+  const double worst =
+      testing::maxDifference(got, expected, [&](float x) { return std::abs(x) < halfWidth - steps - 1; });
+  EXPECT_LT(worst, 2e-5) << "voxels";
+  EXPECT_LT(double(bricks->storedCells()), 0.8 * double(extent.cells())) << "a band, not the whole grid";
+}
+
+// At other tau the moment form filters the distributions' higher moments:
+// close to BGK, not equal. Denoise's defaults, near the surface.
+TEST_P(BandSolverTest, StaysCloseToBgkAtTheDefaults)
+{
+  const Extent3 extent{48, 48, 48};
+  const Volume field = testing::sphereDistance(extent, 23.5, 23.5, 23.5, 10.0);
+  const double gamma = 0.2;
+  const int steps = 7;
+  const double halfWidth = streamingHalfWidth(gamma, steps);
+  auto bricks = testing::bricksNear(field, halfWidth + 2.0);
+  const auto [expected, got] = bothAfter(field, gamma, steps, halfWidth, bricks);
+  const double worst = testing::maxDifference(got, expected, [](float x) { return std::abs(x) < 2.0f; });
+  EXPECT_LT(worst, 5e-3) << "voxels, at the cells that place the surface";
+  EXPECT_GT(worst, 0.0) << "a different scheme at tau != 1";
+}
+
+TEST_P(BandSolverTest, HeldCellsKeepTheirValueWithoutASource)
+{
+  const Extent3 extent{32, 32, 32};
+  const Volume field = testing::sphereDistance(extent, 15.5, 15.5, 15.5, 9.0);
+  const double halfWidth = 4.0;
+  auto bricks = testing::bricksNear(field, 20.0);
+  auto band = solver(bricks);
+  band->setUniformGamma(0.2);
+  const BandField start = testing::bandOf(field, bricks);
+  band->initialize(start, halfWidth);
+  band->step(12);
+  const BandField after = band->field();
+  size_t held = 0;
+  for (size_t i = 0; i < start.values().size(); ++i) {
+    const glm::ivec3 c = bricks->cell(int32_t(i / brickCells), int(i % brickCells));
+    if (!extent.contains(c.x, c.y, c.z) || std::abs(start.values()[i]) < halfWidth) continue;
+    ++held;
+    ASSERT_NEAR(after.values()[i], start.values()[i], 1e-5 * std::abs(start.values()[i])) << "cell " << i;
+  }
+  EXPECT_GT(held, 1000u);
+}
+
+// A Gaussian pulse spreads with variance growing by 2 gamma t along each
+// axis: the moment form keeps BGK's diffusion coefficient (tau - 1/2) / 3.
+TEST_P(BandSolverTest, DiffusesWithGammaEqualToTauMinusHalfOverThree)
+{
+  const Extent3 extent{48, 48, 48};
+  const Volume pulse = testing::gaussianPulse(extent, 23.5, 24.0, 24.5, 3.0);
+  auto bricks = testing::bricksNear(pulse, std::numeric_limits<double>::infinity());
+  for (double gamma : {0.05, 0.2, 0.5}) {
+    auto band = solver(bricks);
+    band->setUniformGamma(gamma);
+    band->initialize(testing::bandOf(pulse, bricks), std::numeric_limits<double>::infinity());
+    auto variances = [&] {
+      const Volume v = testing::gridOf(band->field());
+      double mass = 0, mean[3] = {}, second[3] = {};
+      for (int z = 0; z < extent.nz; ++z)
+        for (int y = 0; y < extent.ny; ++y)
+          for (int x = 0; x < extent.nx; ++x) {
+            const double m = v.at(x, y, z), p[3] = {double(x), double(y), double(z)};
+            mass += m;
+            for (int a = 0; a < 3; ++a) mean[a] += m * p[a], second[a] += m * p[a] * p[a];
+          }
+      std::array<double, 3> var;
+      for (int a = 0; a < 3; ++a) var[a] = second[a] / mass - (mean[a] / mass) * (mean[a] / mass);
+      return var;
+    };
+    band->step(10);
+    const auto early = variances();
+    band->step(30);
+    const auto late = variances();
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR((late[a] - early[a]) / (2.0 * gamma * 30), 1.0, 0.01) << "gamma " << gamma;
+  }
+}
+
+LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
+
+// The Vulkan solver against the CPU reference: near the grid's faces, with
+// a source, with gamma per cell. Tolerance scaled by the field's magnitude,
+// as a conformant device may fuse multiply-adds.
+class BandVulkanMatchesReference : public testing::GpuTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
+{
+  const int variant = GetParam();  // 0 plain, 1 source, 2 gamma per cell, 3 both
+  const Extent3 extent{37, 29, 45};  // sides that are no multiple of 8; the sphere reaches the faces
+  const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
+  auto bricks = testing::bricksNear(field, 8.0);
+  BandField start = testing::bandOf(field, bricks);
+  const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 11);
+  for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
+  auto gpu = testing::makeBandSolver(Backend::Vulkan, bricks), cpu = testing::makeBandSolver(Backend::Reference, bricks);
+  for (BandSolver* s : {gpu.get(), cpu.get()}) {
+    s->setUniformGamma(0.15);
+    if (variant & 1) {
+      BandField target = testing::bandOf(testing::sphereDistance(extent, 20.0, 14.0, 20.0, 12.0), bricks);
+      for (float& v : target.values()) v *= 0.1f;
+      s->setSource(BandSource{std::move(target), 0.1f});
+    }
+    if (variant & 2) {
+      BandField gamma = testing::bandOf(testing::randomField(extent, 0.02f, 0.6f, 5), bricks);
+      for (float& g : gamma.values()) g = std::clamp(g, 0.02f, 0.6f);
+      s->setGammaPerCell(gamma);
+    }
+    s->initialize(start, 6.0);
+    s->step(20);
+  }
+  const BandField a = gpu->field(), b = cpu->field();
+  double worst = 0.0, scale = 0.0;
+  for (size_t i = 0; i < a.values().size(); ++i) {
+    const glm::ivec3 c = bricks->cell(int32_t(i / brickCells), int(i % brickCells));
+    if (!extent.contains(c.x, c.y, c.z)) continue;
+    worst = std::max(worst, double(std::abs(a.values()[i] - b.values()[i])));
+    scale = std::max(scale, double(std::abs(b.values()[i])));
+  }
+  EXPECT_LE(worst, 1e-5 * scale) << "max |X|: " << scale;
+  EXPECT_GT(scale, 1.0);
+}
+
+std::string variantName(const ::testing::TestParamInfo<int>& info)
+{
+  static const char* names[] = {"plain", "source", "gamma_per_cell", "source_and_gamma_per_cell"};
+  return names[info.param];
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, BandVulkanMatchesReference, ::testing::Values(0, 1, 2, 3), variantName);
+
+}  // namespace
+}  // namespace lbmshape

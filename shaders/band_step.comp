@@ -127,7 +127,7 @@ void finish(vec4 f[19], int part)
   }
   const vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
-  nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + (1.0 - 0.5 * omega) * S;
+  nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + 0.5 * S;
   nextPools[pool].v[momentAt(first, 1, y, z, part)] = (1.0 - omega) * Jx;
   nextPools[pool].v[momentAt(first, 2, y, z, part)] = (1.0 - omega) * Jy;
   nextPools[pool].v[momentAt(first, 3, y, z, part)] = (1.0 - omega) * Jz;

@@ -33,12 +33,13 @@ void BandReferenceSolver::setSource(std::optional<BandSource> source)
   source_ = std::move(source);
 }
 
-void BandReferenceSolver::initialize(const BandField& field, double streamingHalfWidth)
+void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*bricks_, field, "field");
-  current_ = band_state::collidedEquilibrium(field, source_, uniformOmega_, omegaPerCell_);
+  current_ = band_state::collidedEquilibrium(field, source_);
   next_ = current_;  // bricks a step skips keep their moments in both copies
-  streams_ = band_state::streamingCells(field, streamingHalfWidth);
+  if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
+  streams_ = band_state::onlyCellsInTheGrid(std::move(streams), *bricks_);
   work_ = band_state::slotsToStep(*bricks_, streams_, source_.has_value());
   initial_ = field;
   steps_ = 0;
@@ -124,7 +125,7 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
         (*fieldOut)[i] = X;
       } else {
         const float omega = omegaPerCell_.empty() ? uniformOmega_ : omegaPerCell_[i];
-        next[i] = glm::vec4(X + (1.0f - 0.5f * omega) * S, (1.0f - omega) * J);
+        next[i] = glm::vec4(X + 0.5f * S, (1.0f - omega) * J);
       }
     }
   }

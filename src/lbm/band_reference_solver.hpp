@@ -19,7 +19,8 @@ public:
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const BandField& gamma) override;
   void setSource(std::optional<BandSource> source) override;
-  void initialize(const BandField& field, double streamingHalfWidth) override;
+  using BandSolver::initialize;
+  void initialize(const BandField& field, std::vector<uint8_t> streams) override;
   void step(int count) override;
   int stepsTaken() const override { return steps_; }
   BandField field() override;

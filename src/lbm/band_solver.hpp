@@ -2,8 +2,10 @@
 // moments a cell instead of 19 distributions: the regularised form of the
 // same D3Q19 scheme (lattice_solver.hpp). docs/lattice-theory.md derives it.
 //
-// After collision a cell keeps rho* = X + (1 - omega/2) S and the flux
-// j* = (1 - omega) J, from which every post-collision distribution follows:
+// After collision a cell keeps rho* = X + S/2 and the flux j* = (1 - omega) J,
+// the zeroth and first moments of BGK's post-collision distributions (with
+// sum_i f_i = X - S/2, BGK's f* sums to X - S/2 + omega S/2 + (1 - omega/2) S
+// = X + S/2, whatever omega), from which every distribution follows:
 //     f*_i = w_i (rho* + 3 e_i . j*).
 // A step pulls f_i(x) = f*_i(x - e_i) from the neighbours' moments, sums
 // X = sum_i f_i (+ S/2, solved exactly for S = A - c X, as on the grid) and
@@ -21,6 +23,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "band/band_field.hpp"
 #include "lbm/stepping_solver.hpp"
@@ -33,6 +36,9 @@ struct BandSource {
   float decay = 0.0f;
 };
 
+// 1 for each stored cell inside the grid with |X| < halfWidth, else 0.
+std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth);
+
 class BandSolver : public SteppingSolver {
 public:
   virtual const BrickSet& bricks() const = 0;
@@ -41,8 +47,15 @@ public:
   virtual void setGammaPerCell(const BandField& gamma) = 0;
   virtual void setSource(std::optional<BandSource> source) = 0;
 
-  // Restart from field X, every cell at equilibrium (after setSource).
-  virtual void initialize(const BandField& field, double streamingHalfWidth) = 0;
+  // Restart from field X, every cell at equilibrium (after setSource); the
+  // cells flagged in `streams` (one byte a stored cell) stream, the others
+  // are held.
+  virtual void initialize(const BandField& field, std::vector<uint8_t> streams) = 0;
+  // The same with the cells within `streamingHalfWidth` of the surface streaming.
+  void initialize(const BandField& field, double streamingHalfWidth)
+  {
+    initialize(field, streamingCells(field, streamingHalfWidth));
+  }
 
   // The field X after the steps taken so far, on the same bricks; beyond
   // them (far value and sides) as the field initialize() was given.

@@ -8,30 +8,24 @@
 
 namespace lbmshape::band_state {
 
-std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source,
-                                           float uniformOmega, const std::vector<float>& omegaPerCell)
+std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source)
 {
   const std::vector<float>& X = field.values();
   std::vector<glm::vec4> moments(X.size(), glm::vec4(0.0f));
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < X.size(); ++i) {
-    const float omega = omegaPerCell.empty() ? uniformOmega : omegaPerCell[i];
     const float S = source ? source->base.values()[i] - source->decay * X[i] : 0.0f;
-    moments[i] = glm::vec4(X[i] + (1.0f - 0.5f * omega) * S, 0.0f, 0.0f, 0.0f);
+    moments[i] = glm::vec4(X[i] + 0.5f * S, 0.0f, 0.0f, 0.0f);
   }
   return moments;
 }
 
-std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth)
+std::vector<uint8_t> onlyCellsInTheGrid(std::vector<uint8_t> streams, const BrickSet& bricks)
 {
-  const BrickSet& bricks = field.bricks();
-  std::vector<uint8_t> streams(field.values().size(), 0);
-#pragma omp parallel for schedule(static)
   for (size_t s = 0; s < bricks.activeCount(); ++s)
     for (int local = 0; local < brickCells; ++local) {
       const glm::ivec3 c = bricks.cell(int32_t(s), local);
-      const size_t i = s * brickCells + size_t(local);
-      streams[i] = bricks.cells().contains(c.x, c.y, c.z) && std::abs(field.values()[i]) < halfWidth;
+      if (!bricks.cells().contains(c.x, c.y, c.z)) streams[s * brickCells + size_t(local)] = 0;
     }
   return streams;
 }
@@ -65,3 +59,21 @@ void checkSameBricks(const BrickSet& bricks, const BandField& field, const char*
 }
 
 }  // namespace lbmshape::band_state
+
+namespace lbmshape {
+
+std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth)
+{
+  const BrickSet& bricks = field.bricks();
+  std::vector<uint8_t> streams(field.values().size(), 0);
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < bricks.activeCount(); ++s)
+    for (int local = 0; local < brickCells; ++local) {
+      const glm::ivec3 c = bricks.cell(int32_t(s), local);
+      const size_t i = s * brickCells + size_t(local);
+      streams[i] = bricks.cells().contains(c.x, c.y, c.z) && std::abs(field.values()[i]) < halfWidth;
+    }
+  return streams;
+}
+
+}  // namespace lbmshape

@@ -14,13 +14,13 @@ namespace lbmshape::band_state {
 
 // The moments (rho*, j*) after one collision of the equilibrium
 // f_i = w_i (X - S/2): what a grid solver holds after its first step, whose
-// streaming delivers every cell its own equilibrium. rho* = X + (1 - omega/2)
-// S with S = A - c X, j* = 0. `omega` per cell, or uniform when empty.
-std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source,
-                                           float uniformOmega, const std::vector<float>& omegaPerCell);
+// streaming delivers every cell its own equilibrium. rho* = X + S/2 with
+// S = A - c X, j* = 0: omega does not enter.
+std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source);
 
-// 1 for each stored cell inside the grid with |X| < halfWidth, else 0.
-std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth);
+// `streams` with the cells beyond the grid (in bricks at its far faces)
+// cleared: they never stream, whatever the caller flagged.
+std::vector<uint8_t> onlyCellsInTheGrid(std::vector<uint8_t> streams, const BrickSet& bricks);
 
 // The slots a step must update: all of them with a source (held cells
 // follow it), else only those with a streaming cell: a brick of held cells

@@ -249,11 +249,11 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
   r_->sourceHost = std::move(source);
 }
 
-void BandVulkanSolver::initialize(const BandField& field, double streamingHalfWidth)
+void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*r_->bricks, field, "field");
   const std::vector<glm::vec4> moments =
-      band_state::collidedEquilibrium(field, r_->sourceHost, r_->uniformOmega, r_->omegaPerCell);
+      band_state::collidedEquilibrium(field, r_->sourceHost);
   // Per cell (rho*, jx*, jy*, jz*) -> per brick [moment][cell].
   std::vector<float> layout(4 * r_->cells);
 #pragma omp parallel for schedule(static)
@@ -263,7 +263,8 @@ void BandVulkanSolver::initialize(const BandField& field, double streamingHalfWi
   r_->upload(layout.data(), layout.size() * 4, r_->moments[0]);
   r_->upload(layout.data(), layout.size() * 4, r_->moments[1]);  // bricks a step skips keep their moments in both
 
-  const std::vector<uint8_t> streams = band_state::streamingCells(field, streamingHalfWidth);
+  if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
+  streams = band_state::onlyCellsInTheGrid(std::move(streams), *r_->bricks);
   std::vector<int32_t> work = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
   r_->stepWorks = int(work.size());
   for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));

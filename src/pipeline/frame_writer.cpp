@@ -6,6 +6,7 @@
 #include "core/stopwatch.hpp"
 #include "core/worker_threads.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "surface/band_marching_cubes.hpp"
 #include "surface/marching_cubes.hpp"
 
 namespace lbmshape {
@@ -38,7 +39,7 @@ std::filesystem::path FrameWriter::framePath(int index) const
   return folder_ / (name + extension_);
 }
 
-double FrameWriter::push(int index, std::shared_ptr<const Volume> field)
+double FrameWriter::push(int index, FrameField field)
 {
   Stopwatch waited;
   std::unique_lock lock(mutex_);
@@ -85,9 +86,9 @@ void FrameWriter::run()
   // Extraction runs parallel loops on this thread: their OpenMP threads are
   // made now, before the lattice takes its memory (core/worker_threads.hpp).
   prepareParallelRegions();
-  std::shared_ptr<const Volume> previousField;
+  FrameField previousField;
   for (;;) {
-    std::pair<int, std::shared_ptr<const Volume>> job;
+    std::pair<int, FrameField> job;
     {
       std::unique_lock lock(mutex_);
       changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
@@ -103,7 +104,7 @@ void FrameWriter::run()
         std::lock_guard lock(mutex_);
         mesh = meshes_.back();
       } else {
-        mesh = extractSurface(*job.second, grid_);
+        mesh = std::visit([this](const auto& field) { return extractSurface(*field, grid_); }, job.second);
       }
       const bool empty = mesh.triangles.empty();
       if (empty && job.first == frameCount_ - 1)

@@ -11,13 +11,18 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <variant>
 #include <vector>
 
+#include "band/band_field.hpp"
 #include "core/volume.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "sdf/grid_frame.hpp"
 
 namespace lbmshape {
+
+// A frame's field: on the whole grid, or on the narrow band.
+using FrameField = std::variant<std::shared_ptr<const Volume>, std::shared_ptr<const BandField>>;
 
 class FrameWriter {
 public:
@@ -33,7 +38,7 @@ public:
   // identical to the previous one: it is written without extracting again).
   // Blocks while two frames are already waiting, and returns the
   // milliseconds it waited. Rethrows an error of the writer thread.
-  double push(int index, std::shared_ptr<const Volume> field);
+  double push(int index, FrameField field);
 
   // Waits until every queued frame is written; returns the meshes in frame
   // order. Rethrows an error of the writer thread.
@@ -62,7 +67,7 @@ private:
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<std::pair<int, std::shared_ptr<const Volume>>> queue_;
+  std::deque<std::pair<int, FrameField>> queue_;
   bool stopping_ = false;
   bool busy_ = false;
   std::exception_ptr error_;

@@ -17,9 +17,8 @@
 #include "mesh/mesh_reader.hpp"
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
+#include "pipeline/morph_lattice.hpp"
 #include "pipeline/stage_clock.hpp"
-#include "sdf/enclosed_volume.hpp"
-#include "sdf/signed_distance.hpp"
 
 namespace lbmshape {
 namespace fs = std::filesystem;
@@ -135,16 +134,6 @@ private:
   int ticket_ = -1;
 };
 
-// max |X - X_target| over the cells near the target's surface.
-double bandError(const Volume& X, const Volume& target)
-{
-  double worst = 0.0;
-#pragma omp parallel for reduction(max : worst) schedule(static)
-  for (size_t i = 0; i < X.size(); ++i)
-    if (std::abs(target[i]) <= convergenceBand) worst = std::max(worst, double(std::abs(X[i] - target[i])));
-  return worst;
-}
-
 // "5 to 9, 12": frame numbers in ascending order, runs shortened.
 std::string frameRanges(const std::vector<int>& frames)
 {
@@ -200,32 +189,20 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
-  device.checkFits(frame.extent);
+  if (o.dense || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(source, frame, {.progress = &progress}); });
-  const Volume targetField =
-      clock.time("sdf", [&](Progress& progress) { return signedDistance(target, frame, {.progress = &progress}); });
+  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, clock);
   // A shape that encloses nothing is the input's fault, not the morph's.
-  requireEnclosedVolume(field, sourcePath);
-  requireEnclosedVolume(targetField, targetPath);
+  lattice->requireEnclosedVolumes(sourcePath, targetPath);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
   newFolder.created();
-  addFieldNoise(field, o.noise);
-
-  auto solver = clock.time("setup", [&] {
-    auto s = device.makeSolver(frame.extent);
-    Volume base(frame.extent);
-    for (size_t i = 0; i < base.size(); ++i) base[i] = float(o.cs) * targetField[i];
-    s->setUniformGamma(o.gamma);
-    s->setSource(LinearSource{std::move(base), float(o.cs)});
-    s->initialize(field);
-    return s;
-  });
+  lattice->start(device, o, clock);
+  SteppingSolver& solver = lattice->solver();
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames);
-  InterruptibleSteps stepper(*solver, o.stepsPerBatch);
+  InterruptibleSteps stepper(solver, o.stepsPerBatch);
   const auto whatWasDone = [&] {
     return std::to_string(writer.framesWritten()) + " complete frames in " + folder.string();
   };
@@ -233,7 +210,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   std::optional<int> convergedAt;
   double lastError = 0.0;
   Stopwatch sinceProgress, running;
-  std::shared_ptr<const Volume> current;
+  FrameField current;
   for (int k = 0; k < o.frames; ++k) {
     interrupt::check(whatWasDone());
     if (!convergedAt) {
@@ -241,11 +218,11 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
       stepper.advanceTo(schedule[size_t(k)], whatWasDone);
       lbmMs += lbm.ms();
       Stopwatch download;
-      current = std::make_shared<const Volume>(solver->field());
+      current = lattice->field();
       downloadMs += download.ms();
-      lastError = bandError(*current, targetField);
+      lastError = lattice->errorNearTarget(current, convergenceBand);
       if (k > 0 && lastError < o.tolerance) {
-        convergedAt = solver->stepsTaken();
+        convergedAt = solver.stepsTaken();
         if (k + 1 < o.frames)
           log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
                     std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) +
@@ -255,7 +232,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
     waitedMs += writer.push(k, current);
     if (sinceProgress.ms() > 1000.0) {
       log::info("frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " +
-                std::to_string(int(solver->stepsTaken() / (running.ms() * 1e-3))) + " steps/s");
+                std::to_string(int(solver.stepsTaken() / (running.ms() * 1e-3))) + " steps/s");
       sinceProgress.restart();
     }
   }
@@ -282,8 +259,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 
   const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
   const MeshTopology last = analyzeTopology(meshes.back());
-  const int steps = solver->stepsTaken();
-  const double updates = double(frame.extent.cells()) * steps;
+  const int steps = solver.stepsTaken();
+  const double updates = double(lattice->cells()) * steps;
   return {{"command", "morph"},
           {"source", sourcePath.string()},
           {"target", targetPath.string()},
@@ -297,6 +274,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
           {"gamma", o.gamma},
           {"cs", o.cs},
           {"noise", o.noise.amplitude},
+          {"lattice", lattice->describe()},
           {"align", {{"mode", alignmentName(o.align)}, {"scale", placement.scale},
                      {"translation", {(placement.toCentre - placement.scale * placement.fromCentre).x,
                                       (placement.toCentre - placement.scale * placement.fromCentre).y,

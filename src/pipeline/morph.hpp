@@ -34,6 +34,7 @@ struct MorphOptions {
   bool force = false;              // write into a non-empty folder
   double tolerance = 0.1;          // converged: max |X - X_target| near the target below this (voxels)
   FieldNoise noise;                // on the source's field (the paper's noisy sphere)
+  bool dense = false;              // the lattice on every cell of the grid, not the narrow band
   // Lattice steps between two Ctrl-C checks; by default batches of about a
   // quarter of a second. The frames do not depend on it (for tests).
   std::optional<int> stepsPerBatch;

@@ -122,12 +122,25 @@ void markFarSides(BandField& band, const std::vector<uint8_t>& inside, const Tri
 
 }  // namespace
 
+std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const GridFrame& frame, double reachVoxels)
+{
+  checkSignedDistanceArguments(mesh, frame, 1.0);
+  return bandBricks(TriangleBvh(mesh), frame, reachVoxels);
+}
+
 BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options,
                              SignedDistanceStats* stats)
 {
   checkSignedDistanceArguments(mesh, frame, 1.0);
   if (!(options.halfWidth >= 1.0) || !std::isfinite(options.halfWidth))
     throw UsageError("the band's half width must be at least 1 voxel");
+  return signedDistanceOn(mesh, frame, nullptr, options, stats);
+}
+
+BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std::shared_ptr<const BrickSet> given,
+                           const BandDistanceOptions& options, SignedDistanceStats* stats)
+{
+  checkSignedDistanceArguments(mesh, frame, 1.0);
   SignedDistanceStats local;
   SignedDistanceStats& s = stats ? *stats : local;
   s = SignedDistanceStats{};
@@ -140,7 +153,7 @@ BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, c
   Stopwatch stage;
   beginPart("hierarchy", 0.1);
   const TriangleBvh bvh(mesh);
-  const auto bricks = bandBricks(bvh, frame, options.halfWidth + 2.0);
+  const std::shared_ptr<const BrickSet> bricks = given ? given : bandBricks(bvh, frame, options.halfWidth + 2.0);
   s.bvhMs = stage.ms();
 
   stage.restart();

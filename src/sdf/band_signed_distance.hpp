@@ -27,4 +27,12 @@ struct BandDistanceOptions {
 BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options = {},
                              SignedDistanceStats* stats = nullptr);
 
+// The two halves of it, for a band that must hold more than one surface (a
+// morph's source and target): the bricks with a cell within `reachVoxels`
+// of the mesh, and the signed distance on given bricks (every cell of them;
+// far value halfWidth + 2 + a brick's diagonal).
+std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const GridFrame& frame, double reachVoxels);
+BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std::shared_ptr<const BrickSet> bricks,
+                           const BandDistanceOptions& options = {}, SignedDistanceStats* stats = nullptr);
+
 }  // namespace lbmshape

@@ -24,9 +24,36 @@ class BrickCubes {
 public:
   BrickCubes(const BandField& field, float iso) : field_(field), e_(field.extent()), iso_(iso) {}
 
-  void triangulate(int32_t slot, BrickTriangles& out) const
+  // +1 when every stored cell of the slot is above the isovalue, -1 when
+  // every one is at or below it, 0 when mixed.
+  int8_t sideOf(int32_t slot) const
   {
-    const glm::ivec3 origin = brickEdge * field_.bricks().brick(slot);
+    const float* v = field_.values().data() + size_t(slot) * brickCells;
+    bool above = false, below = false;
+    for (int l = 0; l < brickCells; ++l) (v[l] > iso_ ? above : below) = true;
+    return above && below ? 0 : above ? 1 : -1;
+  }
+
+  void triangulate(int32_t slot, const std::vector<int8_t>& sides, BrickTriangles& out) const
+  {
+    // The brick's cubes reach one cell into the bricks after it along x, y
+    // and z: when those and the brick lie wholly on one side, no cube is cut.
+    const BrickSet& bricks = field_.bricks();
+    const glm::ivec3 b = bricks.brick(slot);
+    const int8_t own = sides[size_t(slot)];
+    bool uniform = own != 0;
+    for (int k = 1; k < 8 && uniform; ++k) {
+      const glm::ivec3 n = b + glm::ivec3(k & 1, k >> 1 & 1, k >> 2 & 1);
+      if (!bricks.bricks().contains(n.x, n.y, n.z)) continue;
+      const int32_t s = bricks.slot(n.x, n.y, n.z);
+      const int8_t side =
+          s != noBrick ? sides[size_t(s)] : (field_.farValue() * field_.farSide(n.x, n.y, n.z) > iso_ ? int8_t(1) : int8_t(-1));
+      uniform = side == own;
+    }
+    if (uniform) return;
+
+    const glm::ivec3 origin = brickEdge * b;
+    const float* own8 = field_.values().data() + size_t(slot) * brickCells;
     const auto& cases = cube::cubeCases();
     std::array<float, 8> corner;
     for (int lz = 0; lz < brickEdge; ++lz)
@@ -34,9 +61,11 @@ public:
         for (int lx = 0; lx < brickEdge; ++lx) {
           const glm::ivec3 c = origin + glm::ivec3(lx, ly, lz);
           if (c.x + 1 >= e_.nx || c.y + 1 >= e_.ny || c.z + 1 >= e_.nz) continue;
+          const bool inside = lx < brickEdge - 1 && ly < brickEdge - 1 && lz < brickEdge - 1;
           int index = 0;
           for (int k = 0; k < 8; ++k) {
-            corner[k] = field_.at(c.x + (k & 1), c.y + (k >> 1 & 1), c.z + (k >> 2 & 1));
+            const int dx = k & 1, dy = k >> 1 & 1, dz = k >> 2 & 1;
+            corner[k] = inside ? own8[cellInBrick(lx + dx, ly + dy, lz + dz)] : field_.at(c.x + dx, c.y + dy, c.z + dz);
             index |= int(corner[k] > iso_) << k;
           }
           if (index == 0 || index == 255) continue;
@@ -92,8 +121,11 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
   const size_t slots = bricks.activeCount();
   std::vector<BrickTriangles> perBrick(slots);
   const BrickCubes cubes(field, isovalue);
+  std::vector<int8_t> sides(slots);
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < slots; ++s) sides[s] = cubes.sideOf(int32_t(s));
 #pragma omp parallel for schedule(dynamic, 4)
-  for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), perBrick[s]);
+  for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), sides, perBrick[s]);
 
   // One vertex per cut edge: the edges' keys, sorted, number the vertices.
   std::vector<EdgeKey> keys;

@@ -70,6 +70,34 @@ TEST_P(BandSolverTest, StaysCloseToBgkAtTheDefaults)
   EXPECT_GT(worst, 0.0) << "a different scheme at tau != 1";
 }
 
+// The morph force S = Cs (X_target - X), at the morph's defaults (tau = 0.65,
+// over-relaxed): the band follows the grid's BGK near both surfaces.
+TEST_P(BandSolverTest, FollowsTheGridWithTheMorphForce)
+{
+  const Extent3 extent{48, 48, 48};
+  const Volume from = testing::sphereDistance(extent, 22.5, 23.5, 24.5, 10.0);
+  const Volume to = testing::sphereDistance(extent, 25.5, 23.0, 22.5, 13.0);
+  const double gamma = 0.05, cs = 0.1;
+  const int steps = 30;
+  auto dense = testing::makeSolver(GetParam(), extent);
+  Volume base(extent);
+  for (size_t i = 0; i < base.size(); ++i) base[i] = float(cs) * to[i];
+  dense->setUniformGamma(gamma);
+  dense->setSource(LinearSource{base, float(cs)});
+  dense->initialize(from);
+  dense->step(steps);
+  const Volume expected = dense->field();
+
+  auto bricks = testing::bricksNear(from, 40.0);  // every brick between the two surfaces
+  auto band = solver(bricks);
+  band->setUniformGamma(gamma);
+  band->setSource(BandSource{testing::bandOf(base, bricks), float(cs)});
+  band->initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  band->step(steps);
+  const double worst = testing::maxDifference(band->field(), expected, [](float x) { return std::abs(x) < 2.0f; });
+  EXPECT_LT(worst, 0.02) << "voxels, near the surface";
+}
+
 TEST_P(BandSolverTest, HeldCellsKeepTheirValueWithoutASource)
 {
   const Extent3 extent{32, 32, 32};

@@ -1,0 +1,185 @@
+#include "pipeline/morph_lattice.hpp"
+
+#include <cmath>
+
+#include "lbm/band_width.hpp"
+#include "pipeline/field_noise.hpp"
+#include "sdf/band_signed_distance.hpp"
+#include "sdf/enclosed_volume.hpp"
+#include "sdf/signed_distance.hpp"
+
+namespace lbmshape {
+namespace {
+
+class GridMorph final : public MorphLattice {
+public:
+  GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock)
+      : frame_(frame)
+  {
+    source_ = clock.time("sdf", [&](Progress& p) { return signedDistance(source, frame, {.progress = &p}); });
+    target_ = clock.time("sdf", [&](Progress& p) { return signedDistance(target, frame, {.progress = &p}); });
+  }
+
+  void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const override
+  {
+    requireEnclosedVolume(source_, source);
+    requireEnclosedVolume(target_, target);
+  }
+
+  void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
+  {
+    addFieldNoise(source_, o.noise);
+    solver_ = clock.time("setup", [&] {
+      device.checkFits(frame_.extent);
+      auto s = device.makeSolver(frame_.extent);
+      Volume base(frame_.extent);
+      for (size_t i = 0; i < base.size(); ++i) base[i] = float(o.cs) * target_[i];
+      s->setUniformGamma(o.gamma);
+      s->setSource(LinearSource{std::move(base), float(o.cs)});
+      s->initialize(source_);
+      return s;
+    });
+    source_ = Volume();  // no longer needed
+  }
+
+  SteppingSolver& solver() override { return *solver_; }
+  FrameField field() override { return std::make_shared<const Volume>(solver_->field()); }
+
+  double errorNearTarget(const FrameField& field, float band) const override
+  {
+    const Volume& X = *std::get<std::shared_ptr<const Volume>>(field);
+    double worst = 0.0;
+#pragma omp parallel for reduction(max : worst) schedule(static)
+    for (size_t i = 0; i < X.size(); ++i)
+      if (std::abs(target_[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - target_[i])));
+    return worst;
+  }
+
+  size_t cells() const override { return frame_.extent.cells(); }
+  nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
+
+private:
+  GridFrame frame_;
+  Volume source_, target_;
+  std::unique_ptr<LatticeSolver> solver_;
+};
+
+// The narrow band of a morph holds the cells near the source's surface, near
+// the target's, and every brick between the two (where the surface will
+// pass: beyond them the two fields have the same sign). Cells stream where
+// either field is within W of its surface or the two differ in sign; the
+// rest are far from every place the surface goes through, and there the
+// morph force alone moves X (X follows X_target + (X_source - X_target)
+// e^(-Cs t), which the held cells do).
+class BandMorph final : public MorphLattice {
+public:
+  BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, const MorphOptions& o,
+            StageClock& clock)
+      : frame_(frame)
+  {
+    const auto schedule = frameSchedule(o);
+    halfWidth_ = streamingHalfWidth(o.gamma, schedule.back());
+    clock.time("sdf", [&](Progress& progress) {
+      const double reach = halfWidth_ + 2.0;
+      auto bricks = bricksNearSurface(source, frame, reach);
+      const auto targetBricks = bricksNearSurface(target, frame, reach);
+      for (size_t s = 0; s < targetBricks->activeCount(); ++s) {
+        const glm::ivec3 b = targetBricks->brick(int32_t(s));
+        bricks->activate(b.x, b.y, b.z);
+      }
+      computeFields(source, target, bricks, progress);
+      // Bricks between the surfaces: beyond both bands, on different sides.
+      const Extent3 grid = bricks->bricks();
+      bool swept = false;
+      for (size_t b = 0; b < grid.cells(); ++b) {
+        const glm::ivec3 brick(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
+        if (bricks->slot(brick.x, brick.y, brick.z) == noBrick && source_.farSides()[b] != target_.farSides()[b]) {
+          bricks->activate(brick.x, brick.y, brick.z);
+          swept = true;
+        }
+      }
+      if (swept) computeFields(source, target, bricks, progress);
+    });
+  }
+
+  void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const override
+  {
+    requireEnclosedVolume(source_, source);
+    requireEnclosedVolume(target_, target);
+  }
+
+  void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
+  {
+    solver_ = clock.time("setup", [&] {
+      auto s = device.makeBandSolver(source_.sharedBricks());
+      BandField base = target_;
+      for (float& v : base.values()) v *= float(o.cs);
+      s->setUniformGamma(o.gamma);
+      s->setSource(BandSource{std::move(base), float(o.cs)});
+      s->initialize(source_, streams());
+      return s;
+    });
+    source_ = BandField();  // no longer needed
+  }
+
+  SteppingSolver& solver() override { return *solver_; }
+  FrameField field() override { return std::make_shared<const BandField>(solver_->field()); }
+
+  double errorNearTarget(const FrameField& field, float band) const override
+  {
+    const std::vector<float>& X = std::get<std::shared_ptr<const BandField>>(field)->values();
+    const std::vector<float>& T = target_.values();
+    double worst = 0.0;
+#pragma omp parallel for reduction(max : worst) schedule(static)
+    for (size_t i = 0; i < X.size(); ++i)
+      if (std::abs(T[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - T[i])));
+    return worst;
+  }
+
+  size_t cells() const override { return target_.bricks().storedCells(); }
+  nlohmann::json describe() const override
+  {
+    const BrickSet& bricks = target_.bricks();
+    return {{"kind", "band"},
+            {"half_width", halfWidth_},
+            {"bricks", bricks.activeCount()},
+            {"cells", bricks.storedCells()},
+            {"fraction_of_grid", double(bricks.storedCells()) / double(frame_.extent.cells())}};
+  }
+
+private:
+  void computeFields(const TriangleMesh& source, const TriangleMesh& target, std::shared_ptr<const BrickSet> bricks,
+                     Progress& progress)
+  {
+    const BandDistanceOptions options{.halfWidth = halfWidth_, .progress = &progress};
+    source_ = signedDistanceOn(source, frame_, bricks, options);
+    target_ = signedDistanceOn(target, frame_, bricks, options);
+  }
+
+  std::vector<uint8_t> streams() const
+  {
+    const std::vector<float>& A = source_.values();
+    const std::vector<float>& T = target_.values();
+    std::vector<uint8_t> flags(A.size());
+    const float w = float(halfWidth_);
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < A.size(); ++i) flags[i] = std::abs(A[i]) < w || std::abs(T[i]) < w || (A[i] > 0) != (T[i] > 0);
+    return flags;
+  }
+
+  GridFrame frame_;
+  double halfWidth_ = 0.0;
+  BandField source_, target_;
+  std::unique_ptr<BandSolver> solver_;
+};
+
+}  // namespace
+
+std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
+                                               const GridFrame& frame, const MorphOptions& options, StageClock& clock)
+{
+  if (options.dense || options.noise.amplitude > 0.0) return std::make_unique<GridMorph>(source, target, frame, clock);
+  return std::make_unique<BandMorph>(source, target, frame, options, clock);
+}
+
+}  // namespace lbmshape

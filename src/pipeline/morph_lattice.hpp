@@ -1,0 +1,48 @@
+// What a morph's lattice holds, on the whole grid or on the narrow band:
+// the two signed distance fields, the solver with the morph force, the
+// field of each frame and how far it still is from the target. morph.cpp
+// runs the frames the same way on either.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "lbm/stepping_solver.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "pipeline/compute_device.hpp"
+#include "pipeline/frame_writer.hpp"
+#include "pipeline/morph.hpp"
+#include "pipeline/stage_clock.hpp"
+#include "sdf/grid_frame.hpp"
+
+namespace lbmshape {
+
+class MorphLattice {
+public:
+  virtual ~MorphLattice() = default;
+
+  // Throws InputError naming the mesh when the source or the target
+  // encloses nothing on the grid (before any output folder exists).
+  virtual void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const = 0;
+  // The solver, with the morph force S = Cs (X_target - X), started from the
+  // source's field (and its noise, on the grid).
+  virtual void start(const ComputeDevice& device, const MorphOptions& options, StageClock& clock) = 0;
+  virtual SteppingSolver& solver() = 0;
+  // The field now, for a frame.
+  virtual FrameField field() = 0;
+  // max |X - X_target| over the cells within `band` voxels of the target's surface.
+  virtual double errorNearTarget(const FrameField& field, float band) const = 0;
+  // Cells the lattice updates per step, and a description for the report.
+  virtual size_t cells() const = 0;
+  virtual nlohmann::json describe() const = 0;
+};
+
+// The narrow band unless options.dense or options.noise (whose amplitude is
+// a fraction of the field's largest value, over the whole grid). Computes
+// both signed distance fields, as the "sdf" stage of `clock`.
+std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
+                                               const GridFrame& frame, const MorphOptions& options, StageClock& clock);
+
+}  // namespace lbmshape

@@ -1,0 +1,50 @@
+// A morph on the narrow band gives the grid's frames: a sphere becomes a
+// torus, every frame within 0.05 voxel (mean) of the grid's.
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "analysis/mesh_topology.hpp"
+#include "analysis/surface_comparison.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/morph.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+TEST(BandMorph, GivesTheGridsFrames)
+{
+  ComputeDevice device{"", true};  // Vulkan, with the validation layer
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(4, 1.0), folder / "sphere.obj");
+  writeMesh(testing::torusMesh(1.0, 0.4, 96, 48), folder / "torus.obj");
+  MorphOptions o;
+  o.grid.resolution = 64;
+  o.align = Alignment::None;
+  o.format = "obj";
+  o.frames = 8;
+  o.steps = 60;
+  const nlohmann::json band = morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "band", o, device);
+  o.dense = true;
+  const nlohmann::json grid = morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "grid", o, device);
+  EXPECT_EQ(band["lattice"]["kind"], "band");
+  EXPECT_EQ(grid["lattice"]["kind"], "grid");
+  const double voxel = grid["grid"]["voxel"].get<double>();
+  for (int k = 0; k < o.frames; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.obj", k);
+    const TriangleMesh a = readMesh(folder / "band" / name), b = readMesh(folder / "grid" / name);
+    const SurfaceComparison c = compareSurfaces(a, b, ComparisonOptions{20000});
+    EXPECT_LT(c.mean / voxel, 0.05) << "frame " << k;
+    EXPECT_LT(c.hausdorff / voxel, 1.0) << "frame " << k;
+    EXPECT_EQ(analyzeTopology(a).genus, analyzeTopology(b).genus) << "frame " << k;
+  }
+  EXPECT_NEAR(band["final"]["mean_distance_to_target_voxels"].get<double>(),
+              grid["final"]["mean_distance_to_target_voxels"].get<double>(), 0.05);
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -151,7 +151,9 @@ private:
   void computeFields(const TriangleMesh& source, const TriangleMesh& target, std::shared_ptr<const BrickSet> bricks,
                      Progress& progress)
   {
-    const BandDistanceOptions options{.halfWidth = halfWidth_, .progress = &progress};
+    // The cells between the two surfaces need their true distances: the
+    // force moves each from one to the other at its own pace.
+    const BandDistanceOptions options{.halfWidth = halfWidth_, .clampBeyondHalfWidth = false, .progress = &progress};
     source_ = signedDistanceOn(source, frame_, bricks, options);
     target_ = signedDistanceOn(target, frame_, bricks, options);
   }

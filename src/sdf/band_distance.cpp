@@ -1,6 +1,9 @@
 #include "sdf/band_distance.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
 
 #include "sdf/cell_space.hpp"
 
@@ -54,11 +57,69 @@ size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double
                               progress, progressWeight);
 }
 
+// On the band, triangle by triangle: each visits the cells within the band
+// around it and keeps, per cell, the nearest so far. Querying the hierarchy
+// cell by cell would ask about every cell of every brick, most of them
+// farther than the band; a triangle's neighbourhood holds only the cells
+// that matter.
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
                           std::vector<float>& distance, std::vector<uint32_t>& nearest, Progress* progress,
                           double progressWeight)
 {
-  return exactBandDistancesIn(cells, bvh, frame, bandVoxels, distance.data(), nearest.data(), progress, progressWeight);
+  const BrickSet& bricks = cells.bricks();
+  const Extent3& e = bricks.cells();
+  const size_t count = bvh.triangleCount();
+  if (progress) progress->beginPart("exact band", double(count), progressWeight);
+  // The nearest triangle of each cell so far: its squared distance's float
+  // bits (which order as the distances do) and the triangle, packed so that
+  // one atomic minimum keeps the nearest, ties going to the lower triangle.
+  std::vector<uint64_t> best(cells.count(), ~uint64_t(0));
+  const double band = bandVoxels * frame.voxel;
+  const double halfDiagonal = 0.5 * (brickEdge - 1) * std::sqrt(3.0) * frame.voxel;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (size_t t = 0; t < count; ++t) {
+    if (progress && t % 256 == 0) progress->advance(256);
+    const uint32_t triangle = uint32_t(t);
+    glm::dvec3 lo, hi;
+    bvh.triangleBounds(triangle, lo, hi);
+    const glm::ivec3 first = glm::max(glm::ivec3(glm::ceil(frame.toGrid(lo) - bandVoxels)), glm::ivec3(0));
+    const glm::ivec3 last =
+        glm::min(glm::ivec3(glm::floor(frame.toGrid(hi) + bandVoxels)), glm::ivec3(e.nx - 1, e.ny - 1, e.nz - 1));
+    if (glm::any(glm::lessThan(last, first))) continue;
+    const glm::ivec3 firstBrick = first / brickEdge, lastBrick = last / brickEdge;
+    for (int bz = firstBrick.z; bz <= lastBrick.z; ++bz)
+      for (int by = firstBrick.y; by <= lastBrick.y; ++by)
+        for (int bx = firstBrick.x; bx <= lastBrick.x; ++bx) {
+          const int32_t slot = bricks.slot(bx, by, bz);
+          if (slot == noBrick) continue;
+          const glm::ivec3 origin = brickEdge * glm::ivec3(bx, by, bz);
+          const glm::dvec3 centre = frame.toWorld(glm::dvec3(origin) + 0.5 * (brickEdge - 1));
+          if (bvh.closestOnTriangle(centre, triangle).distance > band + halfDiagonal) continue;
+          const glm::ivec3 from = glm::max(first, origin), to = glm::min(last, origin + brickEdge - 1);
+          for (int z = from.z; z <= to.z; ++z)
+            for (int y = from.y; y <= to.y; ++y)
+              for (int x = from.x; x <= to.x; ++x) {
+                const double d = bvh.closestOnTriangle(frame.cellCentre(x, y, z), triangle).distance;
+                if (d > band) continue;
+                const size_t i = size_t(slot) * brickCells + size_t(cellInBrick(x & 7, y & 7, z & 7));
+                const float v = float(d / frame.voxel);
+                const uint64_t packed = uint64_t(std::bit_cast<uint32_t>(v)) << 32 | triangle;
+                std::atomic_ref<uint64_t> slotBest(best[i]);
+                uint64_t old = slotBest.load(std::memory_order_relaxed);
+                while (packed < old && !slotBest.compare_exchange_weak(old, packed, std::memory_order_relaxed)) {
+                }
+              }
+        }
+  }
+  size_t written = 0;
+#pragma omp parallel for schedule(static) reduction(+ : written)
+  for (size_t i = 0; i < best.size(); ++i) {
+    if (best[i] == ~uint64_t(0)) continue;
+    distance[i] = std::bit_cast<float>(uint32_t(best[i] >> 32));
+    nearest[i] = uint32_t(best[i]);
+    ++written;
+  }
+  return written;
 }
 
 size_t exactFaceDistances(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,

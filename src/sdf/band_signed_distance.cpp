@@ -48,17 +48,18 @@ std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& fr
   return bricks;
 }
 
-// Unsigned distances (voxels) of every stored cell inside the grid, as the
-// grid's signed distance makes them: exact within bandVoxels of the surface,
-// closest-point propagation beyond (far_field.hpp); +inf beyond the grid.
+// Unsigned distances (voxels) of the stored cells inside the grid, as the
+// grid's signed distance makes them: exact within exactVoxels of the
+// surface, closest-point propagation beyond (far_field.hpp) up to
+// maxVoxels; +inf beyond that and beyond the grid.
 std::vector<float> bandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
-                                 double exactVoxels, Progress* progress, SignedDistanceStats& s)
+                                 double exactVoxels, double maxVoxels, Progress* progress, SignedDistanceStats& s)
 {
   std::vector<float> distance(cells.count(), std::numeric_limits<float>::infinity());
   std::vector<uint32_t> nearest(cells.count(), TriangleBvh::kNoTriangle);
   s.bandCells = exactBandDistances(bvh, frame, cells, exactVoxels, distance, nearest, progress, 0.4);
   if (progress) progress->beginPart("far field", 1.0, 0.3);
-  s.farCells = propagateFarField(bvh, frame, cells, distance, nearest);
+  s.farCells = propagateFarField(bvh, frame, cells, distance, nearest, maxVoxels);
   return distance;
 }
 
@@ -159,7 +160,12 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   stage.restart();
   const BandCells cells(*bricks);
   s.cells = cells.count();
-  std::vector<float> distance = bandDistances(bvh, frame, cells, 3.0, options.progress, s);
+  // Only the cells that stream need their distance: the lattice holds the
+  // others fixed, and they decide nothing within the half width until as
+  // many steps as it has voxels (band_width.hpp). They get the clamped
+  // value halfWidth + 1 on their side.
+  const double clamped = options.clampBeyondHalfWidth ? options.halfWidth + 1.0 : std::numeric_limits<double>::infinity();
+  std::vector<float> distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
   s.bandMs = stage.ms();
 
   stage.restart();
@@ -177,7 +183,9 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   std::vector<float>& values = band.values();
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < values.size(); ++i) {
-    const float d = std::isfinite(distance[i]) ? distance[i] : farValue;
+    const float d = std::isfinite(distance[i]) ? std::min(distance[i], float(clamped))
+                    : cells.real(i)            ? float(clamped)
+                                               : farValue;
     values[i] = inside[i] ? d : -d;
   }
   markFarSides(band, inside, bvh, frame);

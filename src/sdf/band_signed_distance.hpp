@@ -20,6 +20,11 @@ namespace lbmshape {
 
 struct BandDistanceOptions {
   double halfWidth = 9.0;        // voxels; at least 1
+  // Cells beyond halfWidth + 1 get that value (on their side) instead of
+  // their distance: a lattice that holds them fixed needs nothing more
+  // (band_width.hpp), and it saves most of the work. A morph needs the true
+  // distances between its two surfaces: off.
+  bool clampBeyondHalfWidth = true;
   Progress* progress = nullptr;  // told each part of the work as it starts
 };
 

@@ -102,6 +102,8 @@ class BandCells {
 public:
   explicit BandCells(const BrickSet& bricks) : bricks_(bricks), neighbours_(bricks.neighbourTable()) {}
 
+  const BrickSet& bricks() const { return bricks_; }
+
   size_t count() const { return bricks_.storedCells(); }
   glm::ivec3 coords(size_t i) const { return bricks_.cell(int32_t(i / brickCells), int(i % brickCells)); }
   bool real(size_t i) const

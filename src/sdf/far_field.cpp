@@ -48,7 +48,7 @@ struct Push {
 
 template <class Cells>
 size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& frame, float* distance,
-                   uint32_t* nearest, bool exact)
+                   uint32_t* nearest, bool exact, double maxVoxels)
 {
   const size_t cells = space.count();
   const double inverseVoxel = 1.0 / frame.voxel;
@@ -104,7 +104,9 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
   file();
 
   std::vector<uint32_t> batch;
-  for (size_t b = 0; b < buckets.size(); ++b) {
+  // Buckets past maxVoxels are never settled: their cells keep no distance.
+  const size_t lastBucket = std::isfinite(maxVoxels) ? size_t(maxVoxels / kBucketWidth) + 1 : SIZE_MAX;
+  for (size_t b = 0; b < buckets.size() && b <= lastBucket; ++b) {
     while (!buckets[b].empty()) {
       // Settle the bucket's pending cells whose best offer still falls in it.
       batch.clear();
@@ -165,13 +167,14 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
 size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,
                          std::vector<uint32_t>& nearest, bool exact)
 {
-  return propagateIn(GridCells(frame.extent), bvh, frame, distance.data(), nearest.data(), exact);
+  return propagateIn(GridCells(frame.extent), bvh, frame, distance.data(), nearest.data(), exact,
+                     std::numeric_limits<double>::infinity());
 }
 
 size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
-                         std::vector<float>& distance, std::vector<uint32_t>& nearest)
+                         std::vector<float>& distance, std::vector<uint32_t>& nearest, double maxVoxels)
 {
-  return propagateIn(cells, bvh, frame, distance.data(), nearest.data(), false);
+  return propagateIn(cells, bvh, frame, distance.data(), nearest.data(), false, maxVoxels);
 }
 
 }  // namespace lbmshape

@@ -44,9 +44,11 @@ size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, Volume&
                          std::vector<uint32_t>& nearest, bool exact);
 
 // The same over the cells of the narrow band's bricks (BandCells numbering;
-// cells beyond the grid are never reached and stay as they are).
+// cells beyond the grid are never reached and stay as they are), settling
+// only the cells up to about maxVoxels (at least that far, at most a voxel
+// more): the others keep no distance (infinity).
 class BandCells;
 size_t propagateFarField(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
-                         std::vector<float>& distance, std::vector<uint32_t>& nearest);
+                         std::vector<float>& distance, std::vector<uint32_t>& nearest, double maxVoxels);
 
 }  // namespace lbmshape

@@ -53,6 +53,13 @@ public:
   double exactWindingNumber(const glm::dvec3& p) const;
 
   size_t triangleCount() const { return triangles_.size(); }
+  // Bounding box of one triangle (mesh index).
+  void triangleBounds(uint32_t triangle, glm::dvec3& lo, glm::dvec3& hi) const
+  {
+    const Triangle& t = triangles_[slotOf_[triangle]];
+    lo = glm::min(t.a, glm::min(t.b, t.c));
+    hi = glm::max(t.a, glm::max(t.b, t.c));
+  }
   // Closest point of one triangle (mesh index) to p, by the same arithmetic as closest().
   Closest closestOnTriangle(const glm::dvec3& p, uint32_t triangle) const;
 

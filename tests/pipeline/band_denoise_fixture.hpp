@@ -52,7 +52,9 @@ protected:
     EXPECT_TRUE(t.closedManifold);
     // The anisotropic rule can pinch off a speck of a voxel on one lattice
     // and not the other: its component count is not compared.
-    if (GetParam().smoothing != Smoothing::Anisotropic) EXPECT_EQ(t.components, analyzeTopology(grid.mesh).components);
+    if (GetParam().smoothing != Smoothing::Anisotropic) {
+      EXPECT_EQ(t.components, analyzeTopology(grid.mesh).components);
+    }
     EXPECT_EQ(band.report["lattice"]["kind"], "band");
     EXPECT_EQ(grid.report["lattice"]["kind"], "grid");
   }

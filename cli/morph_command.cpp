@@ -66,8 +66,8 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--noise", a->options.noise.amplitude, "The paper's noise on the source's distance field (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
-  cmd->add_flag("--dense", a->options.dense,
-                "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surfaces");
+  cmd->add_flag("--band", a->options.band,
+                "Run the lattice on the narrow band around both surfaces and between them (less memory; not with --noise)");
   cmd->callback([&common, a] { runMorph(common, *a); });
 }
 

@@ -189,7 +189,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
-  if (o.dense || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
+  if (!o.band || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
   const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, clock);

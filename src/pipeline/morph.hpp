@@ -34,7 +34,11 @@ struct MorphOptions {
   bool force = false;              // write into a non-empty folder
   double tolerance = 0.1;          // converged: max |X - X_target| near the target below this (voxels)
   FieldNoise noise;                // on the source's field (the paper's noisy sphere)
-  bool dense = false;              // the lattice on every cell of the grid, not the narrow band
+  // The lattice on the narrow band around both surfaces and between them,
+  // instead of every cell of the grid: less memory, but between a source
+  // and a target that differ much the band is most of the grid, and there a
+  // cell of the band costs more than a cell of the grid (docs/performance.md).
+  bool band = false;
   // Lattice steps between two Ctrl-C checks; by default batches of about a
   // quarter of a second. The frames do not depend on it (for tests).
   std::optional<int> stepsPerBatch;

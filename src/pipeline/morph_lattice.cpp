@@ -180,7 +180,7 @@ private:
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options, StageClock& clock)
 {
-  if (options.dense || options.noise.amplitude > 0.0) return std::make_unique<GridMorph>(source, target, frame, clock);
+  if (!options.band || options.noise.amplitude > 0.0) return std::make_unique<GridMorph>(source, target, frame, clock);
   return std::make_unique<BandMorph>(source, target, frame, options, clock);
 }
 

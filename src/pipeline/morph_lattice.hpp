@@ -39,9 +39,10 @@ public:
   virtual nlohmann::json describe() const = 0;
 };
 
-// The narrow band unless options.dense or options.noise (whose amplitude is
-// a fraction of the field's largest value, over the whole grid). Computes
-// both signed distance fields, as the "sdf" stage of `clock`.
+// The narrow band with options.band (but not with options.noise, whose
+// amplitude is a fraction of the field's largest value over the whole
+// grid), else the grid. Computes both signed distance fields, as the "sdf"
+// stage of `clock`.
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options, StageClock& clock);
 

@@ -27,8 +27,9 @@ TEST(BandMorph, GivesTheGridsFrames)
   o.format = "obj";
   o.frames = 8;
   o.steps = 60;
+  o.band = true;
   const nlohmann::json band = morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "band", o, device);
-  o.dense = true;
+  o.band = false;
   const nlohmann::json grid = morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "grid", o, device);
   EXPECT_EQ(band["lattice"]["kind"], "band");
   EXPECT_EQ(grid["lattice"]["kind"], "grid");

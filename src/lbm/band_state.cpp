@@ -10,13 +10,9 @@ namespace lbmshape::band_state {
 
 std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source)
 {
-  const std::vector<float>& X = field.values();
-  std::vector<glm::vec4> moments(X.size(), glm::vec4(0.0f));
+  std::vector<glm::vec4> moments(field.values().size(), glm::vec4(0.0f));
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < X.size(); ++i) {
-    const float S = source ? source->base.values()[i] - source->decay * X[i] : 0.0f;
-    moments[i] = glm::vec4(X[i] + 0.5f * S, 0.0f, 0.0f, 0.0f);
-  }
+  for (size_t i = 0; i < moments.size(); ++i) moments[i].x = collidedDensity(field, source, i);
   return moments;
 }
 

@@ -18,6 +18,14 @@ namespace lbmshape::band_state {
 // S = A - c X, j* = 0: omega does not enter.
 std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::optional<BandSource>& source);
 
+// rho* of stored cell i alone, for a solver that lays the moments out itself.
+inline float collidedDensity(const BandField& field, const std::optional<BandSource>& source, size_t i)
+{
+  const float X = field.values()[i];
+  const float S = source ? source->base.values()[i] - source->decay * X : 0.0f;
+  return X + 0.5f * S;
+}
+
 // `streams` with the cells beyond the grid (in bricks at its far faces)
 // cleared: they never stream, whatever the caller flagged.
 std::vector<uint8_t> onlyCellsInTheGrid(std::vector<uint8_t> streams, const BrickSet& bricks);

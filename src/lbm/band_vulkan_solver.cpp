@@ -1,5 +1,6 @@
 #include "lbm/band_vulkan_solver.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -64,7 +65,7 @@ struct BandPools {
 };
 
 struct BandVulkanSolver::Resources {
-  Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b)
+  Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b, uint64_t stagingBytes)
       : context(c), bricks(std::move(b)), cells(bricks->storedCells()), pools(c.description(), bricks->activeCount()),
         moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device), GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
         field(c, 4 * cells, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
@@ -72,8 +73,8 @@ struct BandVulkanSolver::Resources {
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device),
         omega(c, 16, texels, MemoryUse::Device), source(c, 16, texels, MemoryUse::Device),
-        staging(c, 16 * cells, vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst,
-                MemoryUse::Readback)
+        staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
+                vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
     std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
                                                    vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
@@ -104,7 +105,7 @@ struct BandVulkanSolver::Resources {
   float uniformOmega = 1.0f;
   std::vector<float> omegaPerCell;     // host copy: initialize() needs it
   std::optional<BandSource> sourceHost;
-  BandField initial;                   // X at initialisation, with its far sides
+  BandField initial;                   // X at initialisation (its values until the first step), with its far sides
 
   vk::BufferView view(const GpuBuffer& buffer, vk::Format format)
   {
@@ -156,11 +157,46 @@ struct BandVulkanSolver::Resources {
     context.device().updateDescriptorSets(writes, {});
   }
 
-  // Copies `bytes` from host memory into a device buffer, through the staging buffer.
-  void upload(const void* data, size_t bytes, const GpuBuffer& target)
+  // Fills `bytes` of a device buffer through the staging buffer, a chunk of
+  // whole `unit`s at a time: fill(first, count, to) writes units
+  // [first, first + count) at `to`.
+  template <class Fill>
+  void uploadUnits(const GpuBuffer& target, uint64_t bytes, uint64_t unit, Fill fill)
   {
-    std::memcpy(staging.mapped(), data, bytes);
-    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, bytes)); });
+    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unit), units = (bytes + unit - 1) / unit;
+    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
+      const uint64_t count = std::min(unitsPerChunk, units - first);
+      const uint64_t chunk = std::min(count * unit, bytes - first * unit);
+      fill(first, count, staging.mapped());
+      context.runAndWait([&](vk::CommandBuffer cmd) {
+        cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, first * unit, chunk));
+      });
+    }
+  }
+
+  // Copies `bytes` from host memory into a device buffer.
+  void upload(const void* data, uint64_t bytes, const GpuBuffer& target)
+  {
+    uploadUnits(target, bytes, 1, [&](uint64_t first, uint64_t count, std::byte* to) {
+      std::memcpy(to, static_cast<const std::byte*>(data) + first, count);
+    });
+  }
+
+  // Copies `bytes` of a device buffer into host memory, after what the
+  // command buffer `before` records (a barrier to transfer reads included).
+  template <class Before>
+  void download(const GpuBuffer& source, uint64_t bytes, void* data, Before before)
+  {
+    for (uint64_t first = 0; first < bytes; first += staging.bytes()) {
+      const uint64_t chunk = std::min(staging.bytes(), bytes - first);
+      context.runAndWait([&](vk::CommandBuffer cmd) {
+        if (first == 0) before(cmd);
+        cmd.copyBuffer(source.handle(), staging.handle(), vk::BufferCopy(first, 0, chunk));
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
+                            vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
+      });
+      std::memcpy(static_cast<std::byte*>(data) + first, staging.mapped(), chunk);
+    }
   }
 
   gpu::ProgramSpec program(bool collide) const
@@ -195,10 +231,11 @@ struct BandVulkanSolver::Resources {
   }
 };
 
-BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks)
+BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
+                                   uint64_t stagingBytes)
 {
   if (bricks->activeCount() == 0) throw std::invalid_argument("a narrow band without bricks");
-  r_ = std::make_unique<Resources>(context, std::move(bricks));
+  r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes);
   const BrickSet& b = *r_->bricks;
   const std::vector<int32_t> table = b.neighbourTable();
   r_->upload(table.data(), table.size() * 4, r_->neighbours);
@@ -252,16 +289,24 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
 void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*r_->bricks, field, "field");
-  const std::vector<glm::vec4> moments =
-      band_state::collidedEquilibrium(field, r_->sourceHost);
-  // Per cell (rho*, jx*, jy*, jz*) -> per brick [moment][cell].
-  std::vector<float> layout(4 * r_->cells);
+  // rho* and j* = 0 per brick, laid out [moment][cell], built a chunk at a
+  // time in the staging buffer; the second copy is the first's, on the
+  // device (bricks a step skips keep their moments in both).
+  r_->uploadUnits(r_->moments[0], r_->moments[0].bytes(), momentBytesPerSlot,
+                  [&](uint64_t first, uint64_t count, std::byte* to) {
+                    float* out = reinterpret_cast<float*>(to);
 #pragma omp parallel for schedule(static)
-  for (size_t s = 0; s < r_->bricks->activeCount(); ++s)
-    for (int m = 0; m < 4; ++m)
-      for (int l = 0; l < brickCells; ++l) layout[(s * 4 + size_t(m)) * brickCells + size_t(l)] = moments[s * brickCells + size_t(l)][m];
-  r_->upload(layout.data(), layout.size() * 4, r_->moments[0]);
-  r_->upload(layout.data(), layout.size() * 4, r_->moments[1]);  // bricks a step skips keep their moments in both
+                    for (uint64_t k = 0; k < count; ++k) {
+                      float* brick = out + k * 4 * brickCells;
+                      const size_t firstCell = size_t(first + k) * brickCells;
+                      for (int l = 0; l < brickCells; ++l)
+                        brick[l] = band_state::collidedDensity(field, r_->sourceHost, firstCell + size_t(l));
+                      std::fill(brick + brickCells, brick + 4 * brickCells, 0.0f);
+                    }
+                  });
+  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.copyBuffer(r_->moments[0].handle(), r_->moments[1].handle(), vk::BufferCopy(0, 0, r_->moments[0].bytes()));
+  });
 
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
   streams = band_state::onlyCellsInTheGrid(std::move(streams), *r_->bricks);
@@ -304,6 +349,9 @@ void BandVulkanSolver::step(int count)
     r_->steps += batch;
     count -= batch;
   }
+  // Once a step is taken, field() makes every stored value on the device:
+  // only the far sides of the initial field are still needed.
+  std::vector<float>().swap(r_->initial.values());
 }
 
 BandField BandVulkanSolver::field()
@@ -311,19 +359,15 @@ BandField BandVulkanSolver::field()
   // Beyond the band nothing moves: the far sides are the initial field's.
   BandField out = r_->initial;
   if (r_->steps == 0) return out;
+  out.values().resize(r_->cells);
   auto& program = r_->context.program(r_->program(false));
-  const size_t bytes = 4 * r_->cells;
-  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+  r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(true));
     r_->dispatch(cmd, program, r_->current, true);
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
-    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, bytes));
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
-                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
   });
-  std::memcpy(out.values().data(), r_->staging.mapped(), bytes);
   return out;
 }
 

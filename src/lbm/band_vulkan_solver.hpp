@@ -2,6 +2,7 @@
 // (shaders/band_step.comp), tested against BandReferenceSolver.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "lbm/band_solver.hpp"
@@ -14,8 +15,15 @@ class GpuContext;
 
 class BandVulkanSolver final : public BandSolver {
 public:
-  // Throws DeviceError when the device lacks buffer device addresses.
-  BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks);
+  // Host <-> device copies go through a staging buffer of at most
+  // `stagingBytes` (at least one brick's moments), chunk by chunk: a staging
+  // copy of the whole band, and the host arrays that would fill it, would
+  // cost more memory than the lattice itself. The default holds the field of
+  // 4 M cells (a band of 256^3), so most fields come back in one go.
+  static constexpr uint64_t defaultStagingBytes = uint64_t(16) << 20;
+
+  BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
+                   uint64_t stagingBytes = defaultStagingBytes);
   ~BandVulkanSolver() override;
 
   std::string backendName() const override;

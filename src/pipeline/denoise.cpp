@@ -84,14 +84,17 @@ BandField uniformLike(const BandField& field, double value)
 }
 
 // Runs the smoothing steps on `solver`, starting from `field`; a band
-// solver streams the cells within `halfWidth` of the surface.
+// solver streams the cells within `halfWidth` of the surface. `field` is
+// let go once the solver has taken it, so that its memory is free while the
+// lattice runs.
 template <class Solver, class Field>
-Field smooth(Solver& solver, const Field& field, const DenoiseOptions& o, double halfWidth, Progress& progress)
+Field smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWidth, Progress& progress)
 {
   switch (o.smoothing) {
   case Smoothing::Isotropic:
     solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
+    field = Field();
     stepShowingProgress(solver, o.steps, progress);
     return solver.field();
   case Smoothing::Anisotropic: {
@@ -99,7 +102,7 @@ Field smooth(Solver& solver, const Field& field, const DenoiseOptions& o, double
     // after every step and gamma goes out for the next.
     solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
-    Field before = field, gamma = uniformLike(field, o.gamma);
+    Field gamma = uniformLike(field, o.gamma), before = std::move(field);
     progress.beginPart("steps", o.steps);
     InterruptibleSteps stepper(solver);
     for (int s = 1; s <= o.steps; ++s) {
@@ -119,6 +122,7 @@ Field smooth(Solver& solver, const Field& field, const DenoiseOptions& o, double
     stepShowingProgress(solver, probeSteps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
     start(solver, field, halfWidth);
+    field = Field();
     stepShowingProgress(solver, o.steps, progress, "steps", 1.0 - probeShare);
     return solver.field();
   }
@@ -147,7 +151,9 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
-  Volume smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, 0.0, progress); });
+  Volume smoothed =
+      clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, 0.0, progress); });
+  solver.reset();  // its memory goes before marching cubes takes its own
   return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
           {{"kind", "grid"}, {"cells", frame.extent.cells()}},
           frame.extent.cells()};
@@ -161,9 +167,12 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
     return signedDistanceBand(mesh, frame, {.halfWidth = halfWidth, .progress = &progress});
   });
   requireEnclosedVolume(field, input);
-  auto solver = clock.time("setup", [&] { return device.makeBandSolver(field.sharedBricks()); });
-  BandField smoothed = clock.time("lbm", [&](Progress& progress) { return smooth(*solver, field, o, halfWidth, progress); });
-  const BrickSet& bricks = field.bricks();
+  const std::shared_ptr<const BrickSet> shared = field.sharedBricks();
+  const BrickSet& bricks = *shared;
+  auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared); });
+  BandField smoothed = clock.time(
+      "lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
+  solver.reset();  // its memory goes before marching cubes takes its own
   return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
           {{"kind", "band"},
            {"half_width", halfWidth},

@@ -4,16 +4,20 @@
 #include <iostream>
 #include <optional>
 
+#include "band_bench.hpp"
+
 #include "bench/lattice_bench.hpp"
 #include "bench/memory_bandwidth.hpp"
 #include "bench/paper_table.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "gpu/gpu_context.hpp"
+#include "lbm/band_width.hpp"
 #include "lbm/lattice_memory.hpp"
 #include "lbm/reference_solver.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/vulkan_solver.hpp"
+#include "pipeline/denoise.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -22,6 +26,8 @@ struct BenchOptions {
   std::vector<int> size = {128, 128, 128};
   BenchSettings settings;
   bool paper = false;
+  bool band = false;
+  std::optional<double> halfWidth;
 };
 
 struct SizeResult {
@@ -109,6 +115,12 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
     sizes.push_back(Extent3{options.size[0], options.size[1], options.size[2]});
   }
   for (const auto& e : sizes) checkExtent(e);
+  if (options.band) {
+    const double halfWidth = options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, DenoiseOptions{}.steps));
+    if (!(halfWidth >= 1.0 && halfWidth <= 64.0)) throw UsageError("--half-width must be between 1 and 64 voxels");
+    runBandBench(common, sizes.front(), options.settings, halfWidth);
+    return;
+  }
 
   const ComputeDevice& compute = common.computeDevice();
   for (const auto& e : sizes) compute.checkFits(e);  // against the device's limits, before it is opened
@@ -169,8 +181,14 @@ void addBenchCommand(CLI::App& app, const CommonOptions& common)
   bench->add_option("--steps", options->settings.steps, "Steps per timed run")->capture_default_str();
   bench->add_option("--runs", options->settings.runs, "Timed runs; the median is reported")->capture_default_str();
   bench->add_option("--gamma", options->settings.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
-  bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours")
-      ->excludes(size);
+  auto* paper = bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours")
+                    ->excludes(size);
+  auto* band = bench->add_flag("--band", options->band,
+                               "Time the narrow-band lattice, on the band a denoise would make around a sphere in the grid")
+                   ->excludes(paper);
+  bench->add_option("--half-width", options->halfWidth,
+                    "With --band: voxels each side of the surface that stream (default: a denoise's, 6 at the default gamma)")
+      ->needs(band);
   bench->callback([&common, options] { runBench(common, *options); });
 }
 

@@ -19,6 +19,13 @@ StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings)
   solver.setUniformGamma(settings.gamma);
   solver.initialize(field);
 
+  StepTiming timing = timeSteps(solver, settings, double(extent.cells()));
+  timing.gbps = timing.mlups * 1e6 * double(LatticeLayout::bytesPerUpdate) / 1e9;
+  return timing;
+}
+
+StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, double cellsPerStep)
+{
   StepTiming timing;
   Stopwatch first;
   solver.step(1);
@@ -33,8 +40,7 @@ StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings)
   std::sort(perStep.begin(), perStep.end());
   timing.msPerStep = perStep[perStep.size() / 2];
   timing.bestMsPerStep = perStep.front();
-  timing.mlups = double(extent.cells()) / (timing.msPerStep * 1e3);
-  timing.gbps = timing.mlups * 1e6 * double(LatticeLayout::bytesPerUpdate) / 1e9;
+  timing.mlups = cellsPerStep / (timing.msPerStep * 1e3);
   return timing;
 }
 

@@ -26,4 +26,8 @@ struct BenchSettings {
 // one warm-up step, and reports per-step figures.
 StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings);
 
+// The timing itself, on an initialised solver of either kind: one step
+// (firstStepMs), then the runs; mlups counts `cellsPerStep` updates a step.
+StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, double cellsPerStep);
+
 }  // namespace lbmshape

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 
 #include "band_interface.h"
@@ -10,6 +11,7 @@
 #include "gpu/gpu_context.hpp"
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/lattice_memory.hpp"
 #include "lbm/relaxation.hpp"
 
 namespace lbmshape {
@@ -42,23 +44,17 @@ std::vector<vk::DescriptorSetLayoutBinding> bindings()
 }  // namespace
 
 // How the band's buffers split into pools of whole bricks, each within the
-// device's storage-buffer range, and whether they fit its texel buffers.
+// device's storage-buffer range.
 struct BandPools {
   BandPools(const gpu::DeviceDescription& device, size_t slots)
       : slotsPerMomentPool(std::max<uint64_t>(1, device.maxStorageBufferRange / momentBytesPerSlot)),
         slotsPerFieldPool(std::max<uint64_t>(1, device.maxStorageBufferRange / fieldBytesPerSlot))
   {
     const uint64_t cells = uint64_t(slots) * brickCells;
-    const uint64_t pools = std::max((slots + slotsPerMomentPool - 1) / slotsPerMomentPool,
-                                    (slots + slotsPerFieldPool - 1) / slotsPerFieldPool);
-    auto fits = [&](uint64_t maxCells) {
-      return "the narrow band has " + std::to_string(cells) + " cells, but " + device.name + " holds at most " +
-             std::to_string(maxCells) + " of them; use a coarser grid (--res)";
-    };
-    if (pools > BAND_MAX_POOLS) throw UsageError(fits(BAND_MAX_POOLS * slotsPerMomentPool * brickCells));
-    if (cells > device.maxTexelBufferElements) throw UsageError(fits(device.maxTexelBufferElements));
-    if (device.maxAllocationBytes && cells * 16 > device.maxAllocationBytes)
-      throw UsageError(fits(device.maxAllocationBytes / 16));
+    const uint64_t most = BandVulkanSolver::maxCells(device, false, false);
+    if (cells > most)
+      throw DeviceError("the narrow band has " + std::to_string(cells) + " cells, but " + device.name +
+                        " holds at most " + std::to_string(most) + " of them");
   }
 
   uint64_t slotsPerMomentPool, slotsPerFieldPool;
@@ -248,7 +244,40 @@ BandVulkanSolver::~BandVulkanSolver() = default;
 
 double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
 {
-  return 2 * 16 + 4 + 0.5 + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field, streaming bits
+  // Per brick: streaming bits, 27 neighbours, origin, work lists.
+  const double tables = double(4 * 64 + 4 * 27 + 16 + 4 * 2) / brickCells;
+  return 2 * 16 + 4 + tables + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field
+}
+
+uint64_t BandVulkanSolver::maxCells(const gpu::DeviceDescription& device, bool perCellOmega, bool source)
+{
+  const uint64_t slotsPerPool = std::max<uint64_t>(1, device.maxStorageBufferRange / momentBytesPerSlot);
+  uint64_t most = std::min<uint64_t>(BAND_MAX_POOLS * slotsPerPool * brickCells, device.maxTexelBufferElements);
+  if (device.maxAllocationBytes) most = std::min<uint64_t>(most, device.maxAllocationBytes / 16);
+  if (device.deviceLocalBytes) {
+    const uint64_t room = device.deviceLocalBytes > defaultStagingBytes ? device.deviceLocalBytes - defaultStagingBytes : 0;
+    most = std::min<uint64_t>(most, uint64_t(double(room) / deviceBytesPerCell(perCellOmega, source)));
+  }
+  return most / brickCells * brickCells;
+}
+
+void BandVulkanSolver::checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega,
+                                 bool source)
+{
+  const uint64_t cells = bricks.storedCells();
+  const uint64_t most = maxCells(device, perCellOmega, source);
+  if (cells <= most) return;
+  // The band's cells grow with the surface's area: as the square of the
+  // grid's longest side.
+  const Extent3 e = bricks.cells();
+  const int longest = std::max({e.nx, e.ny, e.nz});
+  const int fits = int(std::floor(0.95 * longest * std::sqrt(double(most) / double(cells))));
+  const double perCell = deviceBytesPerCell(perCellOmega, source);
+  throw DeviceError("the narrow band of this " + e.toString() + " grid needs " + std::to_string(cells) + " cells (" +
+                    mebibytes(uint64_t(double(cells) * perCell)) + ") but " + device.name + " holds at most " +
+                    std::to_string(most) + " (" + mebibytes(uint64_t(double(most) * perCell)) +
+                    "); a grid of about " + std::to_string(fits) + " cells along its longest side (--res " +
+                    std::to_string(fits) + ") would fit");
 }
 
 std::string BandVulkanSolver::backendName() const { return "vulkan band (" + r_->context.description().name + ")"; }

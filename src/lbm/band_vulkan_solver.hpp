@@ -11,6 +11,7 @@ namespace lbmshape {
 
 namespace gpu {
 class GpuContext;
+struct DeviceDescription;
 }
 
 class BandVulkanSolver final : public BandSolver {
@@ -38,8 +39,18 @@ public:
   BandField field() override;
 
   // Bytes the solver keeps on the device per stored cell (both copies of
-  // the moments, the streaming bits, and per-cell omega or source if set).
+  // the moments, the field, the brick tables, and per-cell omega or source
+  // if set).
   static double deviceBytesPerCell(bool perCellOmega, bool source);
+  // The most cells a band may store on `device`: its buffers split into at
+  // most BAND_MAX_POOLS bindings within the storage-buffer range, the
+  // moments are read through one texel buffer and each copy of them is one
+  // allocation, and all of it, staging included, fits the device's memory.
+  // The constructor throws DeviceError beyond it.
+  static uint64_t maxCells(const gpu::DeviceDescription& device, bool perCellOmega, bool source);
+  // Throws DeviceError when a band on `bricks` exceeds maxCells(), saying
+  // what it needs and about what grid would fit.
+  static void checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega, bool source);
 
 private:
   struct Resources;

@@ -5,7 +5,6 @@
 #include "core/error.hpp"
 
 namespace lbmshape {
-namespace {
 std::string mebibytes(uint64_t bytes)
 {
   std::ostringstream s;
@@ -13,7 +12,6 @@ std::string mebibytes(uint64_t bytes)
   s << std::fixed << double(bytes) / (1024.0 * 1024.0) << " MiB";
   return s.str();
 }
-}  // namespace
 
 void checkExtent(const Extent3& e)
 {

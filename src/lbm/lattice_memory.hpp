@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "core/extent.hpp"
 #include "gpu/device_description.hpp"
@@ -64,6 +65,9 @@ struct LatticeLayout {
   // Bytes moved per cell update: 19 distributions read and written, fp32.
   static constexpr uint64_t bytesPerUpdate = 19 * 4 * 2;
 };
+
+// "12.3 MiB", for messages about memory.
+std::string mebibytes(uint64_t bytes);
 
 // Throws UsageError if a dimension is not positive.
 void checkExtent(const Extent3& extent);

@@ -57,6 +57,11 @@ std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const 
   return std::make_unique<BandReferenceSolver>(std::move(bricks));
 }
 
+void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const
+{
+  if (!isReference()) BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
+}
+
 void ComputeDevice::requireCleanValidation() const
 {
   const int messages = instance_ ? instance_->validationMessages() : 0;

@@ -43,6 +43,11 @@ public:
 
   // A solver for the narrow band on these bricks.
   std::unique_ptr<BandSolver> makeBandSolver(std::shared_ptr<const BrickSet> bricks) const;
+  // Throws DeviceError, saying what it needs and what grid would fit, when a
+  // band on these bricks (with per-cell omega, a source) would not fit the
+  // device: called as soon as the bricks are known, before their distances
+  // are computed or anything is allocated for them.
+  void checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const;
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;

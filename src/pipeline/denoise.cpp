@@ -164,7 +164,11 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
 {
   const double halfWidth = streamingHalfWidth(o.gamma, longestRun(o));
   BandField field = clock.time("sdf", [&](Progress& progress) {
-    return signedDistanceBand(mesh, frame, {.halfWidth = halfWidth, .progress = &progress});
+    const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
+    return signedDistanceBand(mesh, frame,
+                              {.halfWidth = halfWidth,
+                               .progress = &progress,
+                               .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); }});
   });
   requireEnclosedVolume(field, input);
   const std::shared_ptr<const BrickSet> shared = field.sharedBricks();

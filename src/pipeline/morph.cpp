@@ -192,7 +192,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!o.band || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, clock);
+  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, device, clock);
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
   FolderIfLeftEmpty newFolder(folder);

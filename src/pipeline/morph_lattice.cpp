@@ -74,7 +74,7 @@ private:
 class BandMorph final : public MorphLattice {
 public:
   BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, const MorphOptions& o,
-            StageClock& clock)
+            const ComputeDevice& device, StageClock& clock)
       : frame_(frame)
   {
     const auto schedule = frameSchedule(o);
@@ -87,6 +87,7 @@ public:
         const glm::ivec3 b = targetBricks->brick(int32_t(s));
         bricks->activate(b.x, b.y, b.z);
       }
+      device.checkBandFits(*bricks, false, true);
       computeFields(source, target, bricks, progress);
       // Bricks between the surfaces: beyond both bands, on different sides.
       const Extent3 grid = bricks->bricks();
@@ -98,7 +99,10 @@ public:
           swept = true;
         }
       }
-      if (swept) computeFields(source, target, bricks, progress);
+      if (swept) {
+        device.checkBandFits(*bricks, false, true);
+        computeFields(source, target, bricks, progress);
+      }
     });
   }
 
@@ -178,10 +182,11 @@ private:
 }  // namespace
 
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
-                                               const GridFrame& frame, const MorphOptions& options, StageClock& clock)
+                                               const GridFrame& frame, const MorphOptions& options,
+                                               const ComputeDevice& device, StageClock& clock)
 {
   if (!options.band || options.noise.amplitude > 0.0) return std::make_unique<GridMorph>(source, target, frame, clock);
-  return std::make_unique<BandMorph>(source, target, frame, options, clock);
+  return std::make_unique<BandMorph>(source, target, frame, options, device, clock);
 }
 
 }  // namespace lbmshape

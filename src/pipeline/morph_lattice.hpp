@@ -42,8 +42,10 @@ public:
 // The narrow band with options.band (but not with options.noise, whose
 // amplitude is a fraction of the field's largest value over the whole
 // grid), else the grid. Computes both signed distance fields, as the "sdf"
-// stage of `clock`.
+// stage of `clock`; a band that would not fit `device` is refused as soon
+// as its bricks are known.
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
-                                               const GridFrame& frame, const MorphOptions& options, StageClock& clock);
+                                               const GridFrame& frame, const MorphOptions& options,
+                                               const ComputeDevice& device, StageClock& clock);
 
 }  // namespace lbmshape

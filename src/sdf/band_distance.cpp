@@ -59,6 +59,58 @@ size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double
 
 namespace {
 
+// What a triangle reaches, in grid coordinates: the cells within `band`
+// voxels of it lie in the ball around its centroid of the farthest
+// corner's distance plus the band, within the box around its corners grown
+// by the band, and within the band of its plane.
+struct TriangleReach {
+  TriangleReach(const TriangleBvh& bvh, const GridFrame& frame, uint32_t triangle, double bandVoxels)
+  {
+    glm::dvec3 a, b, c;
+    bvh.triangleCorners(triangle, a, b, c);
+    a = frame.toGrid(a), b = frame.toGrid(b), c = frame.toGrid(c);
+    centre = (a + b + c) / 3.0;
+    radius = std::sqrt(std::max({glm::dot(a - centre, a - centre), glm::dot(b - centre, b - centre),
+                                 glm::dot(c - centre, c - centre)})) +
+             bandVoxels;
+    lo = glm::max(glm::min(a, glm::min(b, c)), centre - radius) - bandVoxels;
+    hi = glm::min(glm::max(a, glm::max(b, c)), centre + radius) + bandVoxels;
+    normal = glm::cross(b - a, c - a);
+    const double length = glm::length(normal);
+    // A sliver's normal is noise: it keeps the ball and the box alone.
+    planeTest = length > 1e-12 * std::max(1.0, glm::dot(b - a, b - a) + glm::dot(c - a, c - a));
+    normal = planeTest ? normal / length : glm::dvec3(0.0);
+    offset = glm::dot(normal, a);
+    band = bandVoxels;
+  }
+
+  // The cells of row (y, z) the ball spans, as [x0, x1]; empty when x0 > x1.
+  void row(int y, int z, int& x0, int& x1) const
+  {
+    const double dy = y - centre.y, dz = z - centre.z, rest = radius * radius - dy * dy - dz * dz;
+    if (rest < 0.0) {
+      x0 = 1, x1 = 0;
+      return;
+    }
+    const double half = std::sqrt(rest);
+    x0 = int(std::ceil(centre.x - half)), x1 = int(std::floor(centre.x + half));
+  }
+  bool nearPlane(int x, int y, int z) const
+  {
+    return !planeTest || std::abs(glm::dot(normal, glm::dvec3(x, y, z)) - offset) <= band;
+  }
+  // Work: the cells of the ball within the box, about.
+  double cells() const
+  {
+    const glm::dvec3 box = glm::max(hi - lo, 0.0);
+    return std::min(box.x * box.y * box.z, 4.19 * radius * radius * radius);
+  }
+
+  glm::dvec3 centre, lo, hi, normal;
+  double radius, offset, band;
+  bool planeTest;
+};
+
 // Triangle by triangle: each visits the band's cells within the band around
 // it and keeps, per cell, the nearest so far.
 size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
@@ -79,11 +131,9 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
   for (size_t t = 0; t < count; ++t) {
     if (progress && t % 256 == 0) progress->advance(256);
     const uint32_t triangle = uint32_t(t);
-    glm::dvec3 lo, hi;
-    bvh.triangleBounds(triangle, lo, hi);
-    const glm::ivec3 first = glm::max(glm::ivec3(glm::ceil(frame.toGrid(lo) - bandVoxels)), glm::ivec3(0));
-    const glm::ivec3 last =
-        glm::min(glm::ivec3(glm::floor(frame.toGrid(hi) + bandVoxels)), glm::ivec3(e.nx - 1, e.ny - 1, e.nz - 1));
+    const TriangleReach reach(bvh, frame, triangle, bandVoxels);
+    const glm::ivec3 first = glm::max(glm::ivec3(glm::ceil(reach.lo)), glm::ivec3(0));
+    const glm::ivec3 last = glm::min(glm::ivec3(glm::floor(reach.hi)), glm::ivec3(e.nx - 1, e.ny - 1, e.nz - 1));
     if (glm::any(glm::lessThan(last, first))) continue;
     const glm::ivec3 firstBrick = first / brickEdge, lastBrick = last / brickEdge;
     for (int bz = firstBrick.z; bz <= lastBrick.z; ++bz)
@@ -96,8 +146,11 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
           if (bvh.closestOnTriangle(centre, triangle).distance > band + halfDiagonal) continue;
           const glm::ivec3 from = glm::max(first, origin), to = glm::min(last, origin + brickEdge - 1);
           for (int z = from.z; z <= to.z; ++z)
-            for (int y = from.y; y <= to.y; ++y)
-              for (int x = from.x; x <= to.x; ++x) {
+            for (int y = from.y; y <= to.y; ++y) {
+              int x0, x1;
+              reach.row(y, z, x0, x1);
+              for (int x = std::max(x0, from.x); x <= std::min(x1, to.x); ++x) {
+                if (!reach.nearPlane(x, y, z)) continue;
                 const double d = bvh.closestOnTriangle(frame.cellCentre(x, y, z), triangle).distance;
                 if (d > band) continue;
                 const size_t i = size_t(slot) * brickCells + size_t(cellInBrick(x & 7, y & 7, z & 7));
@@ -108,6 +161,7 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
                 while (packed < old && !slotBest.compare_exchange_weak(old, packed, std::memory_order_relaxed)) {
                 }
               }
+            }
         }
   }
   size_t written = 0;
@@ -121,17 +175,12 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
   return written;
 }
 
-// Cells a triangle's neighbourhood spans, summed over the triangles: the
-// work of exactBandByTriangles.
+// Cells the triangles reach, summed over the triangles: the work of
+// exactBandByTriangles.
 double triangleNeighbourhoods(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels)
 {
   double cells = 0.0;
-  for (uint32_t t = 0; t < bvh.triangleCount(); ++t) {
-    glm::dvec3 lo, hi;
-    bvh.triangleBounds(t, lo, hi);
-    const glm::dvec3 span = (hi - lo) / frame.voxel + 2.0 * bandVoxels;
-    cells += span.x * span.y * span.z;
-  }
+  for (uint32_t t = 0; t < bvh.triangleCount(); ++t) cells += TriangleReach(bvh, frame, t, bandVoxels).cells();
   return cells;
 }
 

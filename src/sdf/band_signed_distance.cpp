@@ -57,9 +57,13 @@ std::vector<float> bandDistances(const TriangleBvh& bvh, const GridFrame& frame,
 {
   std::vector<float> distance(cells.count(), std::numeric_limits<float>::infinity());
   std::vector<uint32_t> nearest(cells.count(), TriangleBvh::kNoTriangle);
+  Stopwatch exact;
   s.bandCells = exactBandDistances(bvh, frame, cells, exactVoxels, distance, nearest, progress, 0.4);
+  s.bandMs = exact.ms();
   if (progress) progress->beginPart("far field", 1.0, 0.3);
+  Stopwatch propagated;
   s.farCells = propagateFarField(bvh, frame, cells, distance, nearest, maxVoxels);
+  s.farFieldMs = propagated.ms();
   return distance;
 }
 
@@ -156,6 +160,7 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   const TriangleBvh bvh(mesh);
   const std::shared_ptr<const BrickSet> bricks = given ? given : bandBricks(bvh, frame, options.halfWidth + 2.0);
   s.bvhMs = stage.ms();
+  if (options.checkBricks) options.checkBricks(*bricks);
 
   stage.restart();
   const BandCells cells(*bricks);
@@ -166,7 +171,6 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   // value halfWidth + 1 on their side.
   const double clamped = options.clampBeyondHalfWidth ? options.halfWidth + 1.0 : std::numeric_limits<double>::infinity();
   std::vector<float> distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
-  s.bandMs = stage.ms();
 
   stage.restart();
   beginPart("winding-number sign", 0.2);
@@ -191,8 +195,9 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   markFarSides(band, inside, bvh, frame);
   s.totalMs = total.ms();
   log::verbose("band distances: " + std::to_string(bricks->activeCount()) + " bricks; hierarchy and bricks " +
-               std::to_string(int(s.bvhMs)) + " ms, distances " + std::to_string(int(s.bandMs)) + " ms (" +
-               std::to_string(s.bandCells) + " exact, " + std::to_string(s.farCells) + " propagated), sign " +
+               std::to_string(int(s.bvhMs)) + " ms, " + std::to_string(s.bandCells) + " exact distances " +
+               std::to_string(int(s.bandMs)) + " ms, " + std::to_string(s.farCells) + " propagated " +
+               std::to_string(int(s.farFieldMs)) + " ms, sign " +
                std::to_string(int(s.signMs)) + " ms (" + std::to_string(s.windingEvaluations) + " evaluations), all " +
                std::to_string(int(s.totalMs)) + " ms");
   return band;

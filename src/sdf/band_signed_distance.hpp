@@ -10,6 +10,8 @@
 // stored too; marching cubes needs the cells within about 2 voxels.
 #pragma once
 
+#include <functional>
+
 #include "band/band_field.hpp"
 #include "core/progress.hpp"
 #include "mesh/triangle_mesh.hpp"
@@ -26,6 +28,10 @@ struct BandDistanceOptions {
   // distances between its two surfaces: off.
   bool clampBeyondHalfWidth = true;
   Progress* progress = nullptr;  // told each part of the work as it starts
+  // Called with the bricks as soon as they are chosen, before anything is
+  // computed or allocated for their cells: a caller that cannot hold them
+  // throws here (ComputeDevice::checkBandFits).
+  std::function<void(const BrickSet&)> checkBricks = {};
 };
 
 // Throws like signedDistance(); UsageError for a half width under 1 voxel.

@@ -60,6 +60,12 @@ public:
     lo = glm::min(t.a, glm::min(t.b, t.c));
     hi = glm::max(t.a, glm::max(t.b, t.c));
   }
+  // Corners of one triangle (mesh index).
+  void triangleCorners(uint32_t triangle, glm::dvec3& a, glm::dvec3& b, glm::dvec3& c) const
+  {
+    const Triangle& t = triangles_[slotOf_[triangle]];
+    a = t.a, b = t.b, c = t.c;
+  }
   // Closest point of one triangle (mesh index) to p, by the same arithmetic as closest().
   Closest closestOnTriangle(const glm::dvec3& p, uint32_t triangle) const;
 

@@ -167,6 +167,34 @@ TEST(DenoiseCli, WritesValidGltfAndReportsJson)
   }
 }
 
+// A band larger than the device is refused as soon as its bricks are known,
+// with what would fit; the limits themselves are tested in
+// tests/lbm/band_memory_test.cpp. A sphere's band at --res 1200 holds about
+// 1e8 cells (3.7 GB on the device): past lavapipe's 2 GiB heap, within a
+// large GPU's.
+TEST(DenoiseCli, ABandTooLargeForTheDeviceIsRefusedBeforeItsDistances)
+{
+  const auto info = nlohmann::json::parse(testing::runLbmshape({"info", "--json"}).out);
+  const auto& device = info["devices"][info["selected"].get<size_t>()];
+  if (device["device_local_bytes"].get<uint64_t>() > (uint64_t(3) << 30))
+    GTEST_SKIP() << device["name"] << " has room for this band; the refusal is tested on lavapipe";
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const auto before = folder.entries();
+  // --quiet: on a busy machine, choosing the bricks may take long enough to show progress.
+  for (std::vector<std::string> args : {std::vector<std::string>{"-q", "denoise", input, (folder / "out.glb").string()},
+                                        {"-q", "morph", input, input, (folder / "frames").string(), "--band"}}) {
+    args.insert(args.end(), {"--res", "1200"});
+    testing::CliResult r = testing::runLbmshape(args);
+    EXPECT_EQ(r.exitCode, 5) << args[1] << ": " << r.err;
+    auto lines = testing::nonEmptyLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_NE(lines[0].find("narrow band"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find("would fit"), std::string::npos) << lines[0];
+    EXPECT_EQ(folder.entries(), before) << args[1] << " wrote nothing";
+  }
+}
+
 TEST(CompareCli, IdenticalMeshesAreAtDistanceZero)
 {
   testing::ScratchFolder folder;

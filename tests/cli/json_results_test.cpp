@@ -61,6 +61,36 @@ TEST(JsonResults, BenchReportsConsistentFigures)
   EXPECT_GT(j["memory_bandwidth"]["gbps"].get<double>(), 0.1);
 }
 
+TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
+{
+  auto j = parseStdout(testing::runLbmshape({"bench", "--band", "--json", "--size", "48,40,40", "--steps", "2", "--runs", "1"}));
+  EXPECT_EQ(j["device"], selectedDeviceName());
+  const auto& band = j["band"];
+  EXPECT_EQ(band["half_width"], 6.0) << "a denoise's at the defaults (lbm/band_width.hpp)";
+  const size_t stored = band["stored_cells"], stepped = band["stepped_cells"], streaming = band["streaming_cells"];
+  EXPECT_EQ(stored, band["bricks"].get<size_t>() * 512);
+  EXPECT_LE(streaming, stepped);
+  EXPECT_LE(stepped, stored);
+  EXPECT_GT(streaming, 0u);
+  EXPECT_NEAR(band["fraction_of_grid"].get<double>(), double(stored) / (48 * 40 * 40), 1e-12);
+  EXPECT_LT(band["device_bytes_per_stored_cell"].get<double>(), 40.0) << "the issue's goal for compact state";
+  for (const char* backend : {"vulkan", "reference"}) {
+    const auto& b = j[backend];
+    ASSERT_TRUE(b.is_object()) << backend;
+    const double ms = b["ms_per_step"];
+    EXPECT_GT(ms, 0.0);
+    EXPECT_NEAR(b["mlups"].get<double>(), double(stepped) / (ms * 1e3), 1e-6 * b["mlups"].get<double>());
+    EXPECT_NEAR(b["stored_mlups"].get<double>(), double(stored) / (ms * 1e3), 1e-6 * b["stored_mlups"].get<double>());
+  }
+  EXPECT_NEAR(j["vulkan_over_reference"].get<double>(),
+              j["vulkan"]["mlups"].get<double>() / j["reference"]["mlups"].get<double>(), 1e-9);
+
+  auto narrow = parseStdout(
+      testing::runLbmshape({"bench", "--band", "--half-width", "2", "--json", "--size", "48,40,40", "--steps", "1", "--runs", "1"}));
+  EXPECT_EQ(narrow["band"]["half_width"], 2.0);
+  EXPECT_LT(narrow["band"]["streaming_cells"].get<size_t>(), streaming);
+}
+
 TEST(JsonResults, BenchPaperTimesTheLatticesOfTableOne)
 {
   auto j = parseStdout(testing::runLbmshape({"bench", "--paper", "--json", "--steps", "1", "--runs", "1"}));

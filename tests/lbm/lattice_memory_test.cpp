@@ -5,23 +5,12 @@
 
 #include "core/error.hpp"
 #include "lbm/lattice_memory.hpp"
+#include "support/roomy_device.hpp"
 
 namespace lbmshape {
 namespace {
 
-// A device with room for anything, whose limits each test lowers one at a time.
-gpu::DeviceDescription roomyDevice()
-{
-  gpu::DeviceDescription d;
-  d.name = "test device";
-  d.type = "discrete";
-  d.deviceLocalBytes = uint64_t(1) << 40;
-  d.maxStorageBufferRange = uint64_t(1) << 40;
-  d.maxTexelBufferElements = uint64_t(1) << 40;
-  d.maxAllocationBytes = uint64_t(1) << 40;
-  d.maxWorkgroupCount[0] = d.maxWorkgroupCount[1] = d.maxWorkgroupCount[2] = 1u << 30;
-  return d;
-}
+using testing::roomyDevice;
 
 std::string fitError(const Extent3& extent, const gpu::DeviceDescription& device)
 {

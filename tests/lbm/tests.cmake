@@ -1,5 +1,6 @@
 lbmshape_test(lbm_tests
   ${CMAKE_CURRENT_LIST_DIR}/adaptive_gamma_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/band_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_solver_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/conservation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curvature_motion_test.cpp

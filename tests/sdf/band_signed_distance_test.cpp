@@ -30,7 +30,12 @@ std::vector<BandCase> cases()
 {
   TriangleMesh holed = testing::icosphere(3);
   holed.triangles.resize(holed.triangles.size() - 40);  // an open mesh: the sign comes from the winding number
+  // The exact band goes triangle by triangle where triangles span voxels
+  // (the box, the holed sphere) and cell by cell where many share one (the
+  // fine sphere on a coarse grid, the sphere, the torus): band_distance.cpp
+  // picks by cost.
   return {{"sphere", testing::icosphere(4), 48},
+          {"fine_sphere_coarse_grid", testing::icosphere(5), 20},
           {"torus", testing::torusMesh(1.0, 0.3, 64, 24), 64},
           {"box_off_centre", testing::box({0.1, 0.2, -0.3}, {1.9, 0.8, 0.4}), 56},
           {"sphere_with_a_hole", holed, 40}};

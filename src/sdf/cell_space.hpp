@@ -58,6 +58,20 @@ public:
     return size_t(ptrdiff_t(i) + (ptrdiff_t(d.z) * e_.ny + d.y) * e_.nx + d.x);
   }
 
+  // f(neighbour index) for the six face neighbours of cell i (coordinates
+  // c) inside the grid, in the order -x, +x, -y, +y, -z, +z.
+  template <class F>
+  void forEachFaceNeighbour(size_t i, const glm::ivec3& c, F&& f) const
+  {
+    const ptrdiff_t row = e_.nx, plane = ptrdiff_t(e_.nx) * e_.ny;
+    if (c.x > 0) f(i - 1);
+    if (c.x < e_.nx - 1) f(i + 1);
+    if (c.y > 0) f(size_t(ptrdiff_t(i) - row));
+    if (c.y < e_.ny - 1) f(size_t(ptrdiff_t(i) + row));
+    if (c.z > 0) f(size_t(ptrdiff_t(i) - plane));
+    if (c.z < e_.nz - 1) f(size_t(ptrdiff_t(i) + plane));
+  }
+
   // f(neighbour index, its coordinates) for the 26 neighbours of cell i
   // (coordinates c) inside the grid; bounds are checked only on the faces.
   template <class F>
@@ -123,6 +137,29 @@ public:
     if (slot == noBrick) return noCell;
     const glm::ivec3 inside = shifted & (brickEdge - 1);
     return size_t(slot) * brickCells + size_t(cellInBrick(inside.x, inside.y, inside.z));
+  }
+
+  // f(neighbour index) for the six face neighbours of cell i that are
+  // stored cells inside the grid, in the order -x, +x, -y, +y, -z, +z;
+  // within a brick that the grid holds, without the brick table.
+  template <class F>
+  void forEachFaceNeighbour(size_t i, const glm::ivec3& c, F&& f) const
+  {
+    const glm::ivec3 local = c & (brickEdge - 1);
+    const Extent3& e = bricks_.cells();
+    if (glm::all(glm::greaterThan(local, glm::ivec3(0))) && glm::all(glm::lessThan(local, glm::ivec3(brickEdge - 1))) &&
+        c.x + 1 < e.nx && c.y + 1 < e.ny && c.z + 1 < e.nz) {
+      constexpr size_t row = brickEdge, plane = brickEdge * brickEdge;
+      f(i - 1), f(i + 1), f(i - row), f(i + row), f(i - plane), f(i + plane);
+      return;
+    }
+    for (int axis = 0; axis < 3; ++axis)
+      for (int s = -1; s <= 1; s += 2) {
+        glm::ivec3 d(0);
+        d[axis] = s;
+        const size_t j = neighbour(i, c, d);
+        if (j != noCell) f(j);
+      }
   }
 
   // f(neighbour index, its coordinates) for the 26 neighbours of cell i

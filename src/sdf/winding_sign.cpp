@@ -1,7 +1,9 @@
 #include "sdf/winding_sign.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <stdexcept>
 
 #include "sdf/cell_space.hpp"
 
@@ -61,36 +63,52 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   };
   // Breadth-first, so intervals widen with the path length from the
   // evaluated cell; every cell enters the queue once.
-  std::vector<size_t> queue;
+  if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("too many cells for the sign's flood");
+  std::vector<uint32_t> queue;
   queue.reserve(count);
   size_t head = 0;
   auto flood = [&](size_t seed) {
-    queue.push_back(seed);
+    queue.push_back(uint32_t(seed));
     while (head < queue.size()) {
       const size_t i = queue[head++];
       const glm::ivec3 c = cells.coords(i);
       const float widened = radius[i] + growth[cells.blockOf(i)];
       const bool decided = std::abs(value[i] - 0.5f) > widened;
-      for (int axis = 0; axis < 3; ++axis)
-        for (int s = -1; s <= 1; s += 2) {
-          glm::ivec3 d(0);
-          d[axis] = s;
-          const size_t j = cells.neighbour(i, c, d);
-          // A surface point z on the segment would give d(i) + d(j) <=
-          // |i - z| + |z - j| = one voxel.
-          if (j == noCell || radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) continue;
-          if (decided)
-            value[j] = value[i], radius[j] = widened;
-          else
-            evaluate(j);
-          queue.push_back(j);
-        }
+      cells.forEachFaceNeighbour(i, c, [&](size_t j) {
+        // A surface point z on the segment would give d(i) + d(j) <=
+        // |i - z| + |z - j| = one voxel.
+        if (radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) return;
+        if (decided)
+          value[j] = value[i], radius[j] = widened;
+        else
+          evaluate(j);
+        queue.push_back(uint32_t(j));
+      });
     }
   };
-  // The same test across the 26-neighbourhood, for a cell that the floods
-  // did not reach: a cell hugging a surface that runs diagonally to the
-  // grid has no face neighbour clear of it, but usually a diagonal one.
-  auto inherit = [&](size_t i) {
+  // Cells clear of the surface first: they flood the big regions (one
+  // evaluation each), sequentially, since a region may span the grid.
+  for (size_t seed = 0; seed < count; ++seed)
+    if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
+      evaluate(seed);
+      flood(seed);
+    }
+
+  // The cells left hug the surface. Each takes the value of a decided
+  // neighbour across its 26-neighbourhood where the same test allows it (a
+  // surface that runs diagonally to the grid leaves a cell no face
+  // neighbour clear of it, but usually a diagonal one), in rounds that read
+  // only what earlier rounds decided, so the cells of a round are
+  // independent; the few that no neighbour decides are evaluated, all in
+  // parallel.
+  std::vector<size_t> left;
+  for (size_t i = 0; i < count; ++i)
+    if (radius[i] < 0.0f && cells.real(i)) left.push_back(i);
+  struct Inherited {
+    float value, radius;
+  };
+  std::vector<Inherited> taken(left.size());
+  auto inherit = [&](size_t i, Inherited& out) {
     const glm::ivec3 c = cells.coords(i);
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
@@ -100,24 +118,36 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
           const float length = std::sqrt(float(dx * dx + dy * dy + dz * dz));
           const float widened = radius[j] + length * growth[cells.blockOf(j)];
           if (distance[i] + distance[j] > kOneVoxel * length && std::abs(value[j] - 0.5f) > widened) {
-            value[i] = value[j], radius[i] = widened;
+            out = {value[j], widened};
             return true;
           }
         }
     return false;
   };
-  // Cells clear of the surface first: they flood the big regions, so that
-  // the cells left over find decided neighbours.
-  for (size_t seed = 0; seed < count; ++seed)
-    if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
-      evaluate(seed);
-      flood(seed);
+  while (!left.empty()) {
+    std::vector<uint8_t> decided(left.size(), 0);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (size_t k = 0; k < left.size(); ++k) decided[k] = inherit(left[k], taken[k]);
+    size_t kept = 0;
+    for (size_t k = 0; k < left.size(); ++k) {
+      if (decided[k])
+        value[left[k]] = taken[k].value, radius[left[k]] = taken[k].radius;
+      else
+        left[kept++] = left[k];
     }
-  for (size_t seed = 0; seed < count; ++seed)
-    if (radius[seed] < 0.0f && cells.real(seed)) {
-      if (!inherit(seed)) evaluate(seed);
-      flood(seed);
-    }
+    const bool progress = kept < left.size();
+    left.resize(kept);
+    if (!progress) break;
+  }
+  size_t evaluatedLast = 0;
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : evaluatedLast)
+  for (size_t k = 0; k < left.size(); ++k) {
+    const size_t i = left[k];
+    value[i] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(i)))));
+    radius[i] = kEvaluationError;
+    ++evaluatedLast;
+  }
+  evaluations += evaluatedLast;
 
   std::vector<uint8_t> inside(count);
 #pragma omp parallel for schedule(static)

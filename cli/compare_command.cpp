@@ -3,6 +3,8 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "analysis/surface_comparison.hpp"
+#include "core/error.hpp"
+#include "core/parameter_bounds.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh_commands.hpp"
 
@@ -47,6 +49,8 @@ void printTopology(const char* label, const std::string& path, const MeshTopolog
 
 void runCompare(const CommonOptions& common, const CompareArguments& args)
 {
+  if (args.samples < 1 || args.samples > parameter_bounds::maxSamples)
+    throw UsageError("--samples must be from 1 to " + std::to_string(parameter_bounds::maxSamples));
   const TriangleMesh a = readMesh(args.a), b = readMesh(args.b);
   const MeshTopology ta = analyzeTopology(a), tb = analyzeTopology(b);
   ComparisonOptions options;

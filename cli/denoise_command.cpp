@@ -54,6 +54,7 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
+  cmd->add_flag("--force", a->options.replaceInput, "Write the result even where the output is the input mesh");
   cmd->callback([&common, a] { runDenoise(common, *a); });
 }
 

@@ -30,6 +30,21 @@ std::string outOfMemory(const CLI::App& app)
   return "out of memory";
 }
 
+// CLI11 reports a first word that names no command as "A subcommand is
+// required"; name the word and the commands instead.
+std::string usageMessage(const CLI::App& app, const CLI::ParseError& e)
+{
+  if (app.get_subcommands().empty())
+    for (const std::string& word : app.remaining())
+      if (!word.empty() && word[0] != '-') {
+        std::string commands;
+        for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+          commands += (commands.empty() ? "" : ", ") + command->get_name();
+        return "unknown command '" + word + "'; the commands are " + commands + " (see lbmshape --help)";
+      }
+  return std::string(e.what()) + " (see lbmshape --help)";
+}
+
 int fail(lbmshape::ExitCode code, const std::string& message)
 {
   // One line of printable text, whatever the message (it may quote a
@@ -98,7 +113,7 @@ int main(int argc, char** argv)
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return fail(ExitCode::Usage, std::string(e.what()) + " (see lbmshape --help)");
+    return fail(ExitCode::Usage, usageMessage(app, e));
   } catch (const Error& e) {
     return fail(e.code(), e.what());
   } catch (const vk::SystemError& e) {

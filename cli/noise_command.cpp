@@ -15,6 +15,7 @@ struct NoiseArguments {
   std::string input, output;
   double sigma = 0.5;
   uint32_t seed = 1;
+  bool force = false;
 };
 
 void runNoise(const CommonOptions& common, const NoiseArguments& args)
@@ -22,6 +23,7 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
   // inf would pass a sign check and only fail at the writer, as an output error.
   if (!(args.sigma >= 0.0) || !std::isfinite(args.sigma))
     throw UsageError("--sigma must be a finite number, zero or positive");
+  checkNotTheInput(args.output, args.input, args.force);
   checkMeshDestination(args.output);
   const TriangleMesh mesh = readMesh(args.input);
   const double edge = meanEdgeLength(mesh);
@@ -43,6 +45,7 @@ void addNoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("output", args->output, "Noisy copy, format by extension")->required();
   cmd->add_option("--sigma", args->sigma, "Standard deviation, in mean edge lengths")->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
+  cmd->add_flag("--force", args->force, "Write the copy even where the output is the input mesh");
   cmd->callback([&common, args] { runNoise(common, *args); });
 }
 

@@ -1,6 +1,8 @@
 #include "run_command.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include <vulkan/vulkan.hpp>
 
@@ -26,25 +28,56 @@ struct RunArguments {
 constexpr int maxJobsFileDepth = 16;
 struct TooDeep {};
 
+struct DuplicateKey {
+  size_t job;
+  std::string key;
+};
+
+// The jobs of `file`. A key given twice in one job (JSON would keep the
+// last silently) and two jobs writing the same output (the second would
+// replace the first's result) are refused, naming the job and the key.
 nlohmann::json readJobs(const fs::path& file)
 {
   const MappedFile text(file);  // a regular file, or an InputError that says what it is
-  const auto refuseDeep = [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
-    if (depth >= maxJobsFileDepth &&
-        (event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start))
-      throw TooDeep{};
+  std::vector<std::set<std::string>> keysAtDepth;
+  size_t jobsSeen = 0;
+  const auto check = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (depth >= maxJobsFileDepth && (event == Event::object_start || event == Event::array_start)) throw TooDeep{};
+    if (event == Event::object_start) {
+      if (depth == 1) ++jobsSeen;
+      keysAtDepth.resize(size_t(depth) + 1);
+      keysAtDepth[size_t(depth)].clear();
+    } else if (event == Event::key && depth >= 1 && size_t(depth) <= keysAtDepth.size()) {
+      if (!keysAtDepth[size_t(depth) - 1].insert(parsed.get<std::string>()).second)
+        throw DuplicateKey{jobsSeen, parsed.get<std::string>()};
+    }
     return true;
   };
   nlohmann::json jobs;
   try {
-    jobs = nlohmann::json::parse(text.bytes(), refuseDeep);
+    jobs = nlohmann::json::parse(text.bytes(), check);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError("cannot read " + file.string() + ": not valid JSON (" + e.what() + ")");
   } catch (const TooDeep&) {
     throw InputError("cannot read " + file.string() + ": its JSON nests more than " + std::to_string(maxJobsFileDepth) +
                      " levels deep (a jobs file is an array of objects of options)");
+  } catch (const DuplicateKey& d) {
+    throw UsageError(file.string() + ": job " + std::to_string(d.job) + " gives \"" + d.key + "\" twice");
   }
   if (!jobs.is_array()) throw InputError("cannot read " + file.string() + ": expected a JSON array of jobs");
+  std::map<fs::path, size_t> writers;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!jobs[i].is_object() || !jobs[i].contains("output") || !jobs[i]["output"].is_string()) continue;
+    std::error_code ec;
+    const fs::path given = fs::absolute(file.parent_path() / jobs[i]["output"].get<std::string>(), ec);
+    fs::path output = fs::weakly_canonical(given, ec);
+    if (ec) output = given.lexically_normal();
+    const auto [first, inserted] = writers.emplace(output, i + 1);
+    if (!inserted)
+      throw UsageError(file.string() + ": jobs " + std::to_string(first->second) + " and " + std::to_string(i + 1) +
+                       " both write " + jobs[i]["output"].get<std::string>());
+  }
   return jobs;
 }
 

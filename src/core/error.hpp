@@ -14,7 +14,7 @@ enum class ExitCode : int {
   Input = 3,   // unreadable or invalid input file
   Output = 4,  // cannot write the result
   Device = 5,  // Vulkan device failure or numerical blow-up
-  Interrupted = 130,  // Ctrl-C: the shell's convention, 128 + SIGINT
+  Interrupted = 130,  // Ctrl-C: the shell's convention, 128 + SIGINT (143 for SIGTERM, 129 for SIGHUP)
 };
 
 class Error : public std::runtime_error {
@@ -38,9 +38,14 @@ struct OutputError : Error {
 struct DeviceError : Error {
   explicit DeviceError(const std::string& m) : Error(ExitCode::Device, m) {}
 };
-// The user pressed Ctrl-C; what was complete is kept, nothing partial.
+// The user pressed Ctrl-C, or the process was asked to stop (SIGTERM,
+// SIGHUP); what was complete is kept, nothing partial. The exit code is
+// 128 + the signal's number, as the shell reports a process it killed.
 struct Interrupted : Error {
-  explicit Interrupted(const std::string& m) : Error(ExitCode::Interrupted, m) {}
+  explicit Interrupted(const std::string& m, int signal = 2 /* SIGINT */)
+      : Error(static_cast<ExitCode>(128 + signal), m)
+  {
+  }
 };
 // A result that is not a number, or a scheme driven outside its stable range.
 struct NumericalError : Error {

@@ -10,32 +10,50 @@
 
 namespace lbmshape::interrupt {
 namespace {
-std::atomic<bool> flag{false};
+constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
+std::atomic<int> received{0};
 
-extern "C" void onInterrupt(int)
+extern "C" void onSignal(int signal)
 {
-  if (!flag.exchange(true)) return;  // the first Ctrl-C: a request, checked between batches of work
-  // The second ends the process at once, as usual, but first removes the
+  int none = 0;
+  if (received.compare_exchange_strong(none, signal)) return;  // the first: a request, checked between batches of work
+  // A second ends the process at once, as usual, but first removes the
   // temporary files that unwinding would have removed.
   temporary_files::removeAllFromSignalHandler();
-  std::signal(SIGINT, SIG_DFL);
-  std::raise(SIGINT);  // delivered when this handler returns: the process dies of SIGINT, as the shell expects
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);  // delivered when this handler returns: the process dies of it, as the shell expects
+}
+
+std::string stoppedBy(int signal)
+{
+  switch (signal) {
+  case SIGTERM: return "terminated (SIGTERM): ";
+  case SIGHUP: return "hung up (SIGHUP): ";
+  default: return "interrupted: ";
+  }
 }
 }  // namespace
 
 void installHandler()
 {
   struct sigaction action = {};
-  action.sa_handler = onInterrupt;
+  action.sa_handler = onSignal;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;  // system calls go on after the first Ctrl-C; the flag is checked between batches
-  sigaction(SIGINT, &action, nullptr);
+  action.sa_flags = SA_RESTART;  // system calls go on after the first signal; the flag is checked between batches
+  for (int signal : handled) sigaction(signal, &action, nullptr);
 }
-bool requested() { return flag; }
+
+bool requested() { return received != 0; }
+int signalReceived() { return received; }
 
 void check(const std::string& whatWasDone)
 {
-  if (flag) throw Interrupted("interrupted: " + whatWasDone);
+  if (const int signal = received) throw Interrupted(stoppedBy(signal) + whatWasDone, signal);
+}
+
+void check(const std::function<std::string()>& whatWasDone)
+{
+  if (const int signal = received) throw Interrupted(stoppedBy(signal) + whatWasDone(), signal);
 }
 
 }  // namespace lbmshape::interrupt

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/parameter_bounds.hpp"
 #include "lbm/d3q19.hpp"
 
 namespace lbmshape::relaxation {
@@ -17,6 +18,13 @@ void checkGamma(double gamma, const char* what)
     std::ostringstream message;
     message << what << " must be a positive number of voxels^2 per step (got " << gamma
             << "); it sets tau = 3*gamma + 1/2, and tau <= 1/2 is unstable";
+    throw UsageError(message.str());
+  }
+  if (gamma > parameter_bounds::maxGamma) {
+    std::ostringstream message;
+    message << what << " = " << gamma << " is above " << parameter_bounds::maxGamma
+            << " voxel^2 per step, where the lattice stops following the diffusion equation (tau = 3*gamma + 1/2 > 3.5"
+            << " relaxes too slowly); for more smoothing, give more steps";
     throw UsageError(message.str());
   }
   // The lattice computes in fp32: below about 5e-9, omega = 1/tau rounds to

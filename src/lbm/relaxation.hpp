@@ -15,8 +15,9 @@ double tauFromGamma(double gamma);
 double gammaFromTau(double tau);
 inline double omegaFromGamma(double gamma) { return 1.0 / tauFromGamma(gamma); }
 
-// Throws UsageError unless 0 < gamma and the resulting tau is inside BGK's
-// linear stability range 1/2 < tau (omega < 2). `what` names the option.
+// Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's
+// linear stability range 1/2 < tau (omega < 2), and small enough for the
+// lattice to diffuse (core/parameter_bounds.hpp). `what` names the option.
 void checkGamma(double gamma, const char* what = "gamma");
 
 }  // namespace lbmshape::relaxation

@@ -28,6 +28,14 @@ void checkMeshDestination(const std::filesystem::path& path)
   AtomicFile probe(path);  // created and, uncommitted, removed again
 }
 
+void checkNotTheInput(const std::filesystem::path& output, const std::filesystem::path& input, bool replaceInput)
+{
+  std::error_code ec;
+  if (replaceInput || !std::filesystem::equivalent(output, input, ec) || ec) return;
+  throw UsageError("the output " + output.string() + " is the input mesh " + input.string() +
+                   ": write the result elsewhere, or give --force to replace the input");
+}
+
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty)
 {
   const auto format = outputFormat(path);

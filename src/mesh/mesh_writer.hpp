@@ -31,4 +31,9 @@ void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, Empt
 // or unwritable folder (tested by creating and removing a temporary file).
 void checkMeshDestination(const std::filesystem::path& path);
 
+// UsageError when `output` is the file `input` (the same path, a link to it,
+// or a hard link): writing the result there would replace the input, which
+// a command does only when asked to (`replaceInput`, --force).
+void checkNotTheInput(const std::filesystem::path& output, const std::filesystem::path& input, bool replaceInput);
+
 }  // namespace lbmshape

@@ -6,6 +6,7 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
+#include "core/parameter_bounds.hpp"
 #include "core/log.hpp"
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
@@ -199,7 +200,8 @@ void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
 void checkDenoiseOptions(const DenoiseOptions& o)
 {
   relaxation::checkGamma(o.gamma, "--gamma");
-  if (o.steps < 0) throw UsageError("--steps must be zero or more");
+  if (o.steps < 0 || o.steps > parameter_bounds::maxSteps)
+    throw UsageError("--steps must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -213,6 +215,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
   checkDenoiseOptions(o);
+  checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output);
   StageClock clock;
 

@@ -39,6 +39,7 @@ struct DenoiseOptions {
   // against). The paper's field noise is defined over the whole grid, so
   // --noise runs on the grid.
   bool dense = false;
+  bool replaceInput = false;  // the output may be the input file (--force)
 };
 
 struct DenoiseResult {

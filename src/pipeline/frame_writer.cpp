@@ -65,9 +65,13 @@ std::vector<int> FrameWriter::emptyFrames() const
   return emptyFrames_;
 }
 
-int FrameWriter::framesWritten() const
+int FrameWriter::stop()
 {
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
+  stopping_ = true;
+  queue_.clear();
+  changed_.notify_all();
+  changed_.wait(lock, [&] { return !busy_; });
   return int(meshes_.size());
 }
 double FrameWriter::extractMs() const

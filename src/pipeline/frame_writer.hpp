@@ -51,7 +51,9 @@ public:
   // writing it.
   std::vector<int> emptyFrames() const;
 
-  int framesWritten() const;
+  // Stops: the frame being written is finished, the queued ones are
+  // dropped. Returns the frames complete on disk, all of them final.
+  int stop();
   double extractMs() const;
   double writeMs() const;
 

@@ -26,7 +26,7 @@ int InterruptibleSteps::nextBatch(int remaining) const
 void InterruptibleSteps::advanceTo(int totalSteps, const std::function<std::string()>& whatWasDone, Progress* progress)
 {
   while (solver_.stepsTaken() < totalSteps) {
-    interrupt::check(whatWasDone());
+    interrupt::check(whatWasDone);
     const int batch = nextBatch(totalSteps - solver_.stepsTaken());
     Stopwatch clock;
     solver_.step(batch);

@@ -1,13 +1,19 @@
 #include "pipeline/morph.hpp"
 
 #include <cmath>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <system_error>
+
+#include <unistd.h>  // access
 
 #include "analysis/mesh_topology.hpp"
 #include "analysis/surface_comparison.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/folder_lock.hpp"
+#include "core/parameter_bounds.hpp"
 #include "core/interrupt.hpp"
 #include "core/temporary_files.hpp"
 #include "core/log.hpp"
@@ -65,13 +71,28 @@ bool isOurFile(const fs::path& file)
 
 // The output folder may be missing or empty; a non-empty one only with
 // --force. Checked before anything else, changes nothing.
-void checkFolder(const fs::path& folder, bool force)
+// Before any work: the folder is a folder, empty unless --force, no other
+// lbmshape writes into it (the lock is held from here on), and it, or the
+// folder it will be made in, is writable.
+std::optional<FolderLock> checkFolder(const fs::path& folder, bool force)
 {
   std::error_code ec;
   if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
     throw OutputError("cannot write frames to " + folder.string() + ": it is a file, not a folder");
-  if (fs::is_directory(folder, ec) && !fs::is_empty(folder, ec) && !force)
-    throw OutputError(folder.string() + " is not empty; use --force to write the frames into it anyway");
+  if (fs::is_directory(folder, ec)) {
+    std::optional<FolderLock> lock(std::in_place, folder);
+    if (!fs::is_empty(folder, ec) && !force)
+      throw OutputError(folder.string() + " is not empty; use --force to write the frames into it anyway");
+    AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
+    return lock;
+  }
+  fs::path existing = fs::absolute(folder, ec).parent_path();
+  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path()) existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not a folder");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not writable");
+  return std::nullopt;
 }
 
 // Creates the folder; with --force only the files a morph writes (frame_*,
@@ -153,14 +174,21 @@ std::string frameRanges(const std::vector<int>& frames)
 void checkMorphOptions(const MorphOptions& o)
 {
   relaxation::checkGamma(o.gamma, "--gamma");
-  if (!(o.cs > 0.0) || !std::isfinite(o.cs)) throw UsageError("--cs must be a positive morphing speed (the paper uses 0.1 to 0.3)");
-  if (o.frames < 2) throw UsageError("--frames must be at least 2 (the source and the result)");
+  if (!(o.cs > 0.0 && o.cs <= parameter_bounds::maxCs))
+    throw UsageError("--cs must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 X "
+                     "reaches the target in one step, beyond it overshoots)");
+  if (o.frames < 2 || o.frames > parameter_bounds::maxFrames)
+    throw UsageError("--frames must be from 2 (the source and the result) to " + std::to_string(parameter_bounds::maxFrames));
   if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
   // A morph of no steps would only repeat the source; denoise --steps 0 is
   // the way to see a mesh on the grid unchanged.
   const char* noSteps = " (with 0 steps every frame would be the source; lbmshape denoise --steps 0 shows a mesh on the grid)";
   if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1" + std::string(noSteps));
   if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1" + std::string(noSteps));
+  const long total = o.steps ? long(*o.steps) : long(o.stepsPerFrame.value_or(1)) * (o.frames - 1);
+  if (total > parameter_bounds::maxSteps)
+    throw UsageError("the morph would run " + std::to_string(total) + " steps (--steps, or --steps-per-frame times " +
+                     "--frames - 1); at most " + std::to_string(parameter_bounds::maxSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
   if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
   if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
@@ -181,7 +209,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 {
   checkMorphOptions(o);
   const std::vector<int> schedule = frameSchedule(o);
-  checkFolder(folder, o.force);
+  std::optional<FolderLock> lock = checkFolder(folder, o.force);
   StageClock clock;
 
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
@@ -197,14 +225,17 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
+  if (!lock) lock.emplace(folder);
   newFolder.created();
   lattice->start(device, o, clock);
   SteppingSolver& solver = lattice->solver();
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames);
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
-  const auto whatWasDone = [&] {
-    return std::to_string(writer.framesWritten()) + " complete frames in " + folder.string();
+  // Asked only when stopping: the frame being written is finished first, so
+  // the count is what the folder holds.
+  const std::function<std::string()> whatWasDone = [&] {
+    return std::to_string(writer.stop()) + " complete frames in " + folder.string();
   };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
@@ -212,7 +243,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   Stopwatch sinceProgress, running;
   FrameField current;
   for (int k = 0; k < o.frames; ++k) {
-    interrupt::check(whatWasDone());
+    interrupt::check(whatWasDone);
     if (!convergedAt) {
       Stopwatch lbm;
       stepper.advanceTo(schedule[size_t(k)], whatWasDone);

@@ -195,6 +195,29 @@ TEST(DenoiseCli, ABandTooLargeForTheDeviceIsRefusedBeforeItsDistances)
   }
 }
 
+// Writing over the input mesh, by its own path or through a link, is
+// refused before any work unless asked for with --force.
+TEST(DenoiseCli, TheOutputIsNotTheInputUnlessForced)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const fs::path link = folder / "link.obj";
+  fs::create_symlink(input, link);
+  const auto before = fs::file_size(input);
+  for (std::vector<std::string> args : {std::vector<std::string>{"denoise", input, input, "--res", "24"},
+                                        {"denoise", input, link.string(), "--res", "24"},
+                                        {"noise", input, input, "--sigma", "0.1"}}) {
+    testing::CliResult r = testing::runLbmshape(args);
+    EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find("is the input mesh"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+    EXPECT_EQ(fs::file_size(input), before) << "the input is untouched";
+  }
+  testing::CliResult forced = testing::runLbmshape({"denoise", input, input, "--res", "24", "--force"});
+  EXPECT_EQ(forced.exitCode, 0) << forced.err;
+  EXPECT_NE(fs::file_size(input), before) << "--force replaced it";
+}
+
 TEST(CompareCli, IdenticalMeshesAreAtDistanceZero)
 {
   testing::ScratchFolder folder;

@@ -83,6 +83,29 @@ TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
   EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
 }
 
+// A key twice in one job, or two jobs writing one output (by different
+// spellings of the path too), would make one silently win: both are refused
+// before any job runs, naming the job and the key or the two jobs.
+TEST_F(JobsFile, DuplicateKeysAndOutputsAreRefusedBeforeAnyJob)
+{
+  const fs::path file = folder / "jobs.json";
+  std::ofstream(file) << R"([{"command": "denoise", "input": "sphere.obj", "output": "a.glb"},
+                             {"command": "denoise", "input": "sphere.obj", "output": "b.glb", "res": 16, "res": 32}])";
+  testing::CliResult twice = testing::runLbmshape({"run", file.string()});
+  EXPECT_EQ(twice.exitCode, 2) << twice.err;
+  EXPECT_NE(twice.err.find("job 2 gives \"res\" twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(fs::exists(folder / "a.glb")) << "no job ran";
+
+  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "same.glb"}, {"res", 16}},
+                                     {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "other.glb"}, {"res", 16}},
+                                     {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "./x/../same.glb"}, {"res", 16}}});
+  fs::create_directory(folder / "x");
+  testing::CliResult same = testing::runLbmshape({"run", write(jobs).string()});
+  EXPECT_EQ(same.exitCode, 2) << same.err;
+  EXPECT_NE(same.err.find("jobs 1 and 3 both write ./x/../same.glb"), std::string::npos) << same.err;
+  EXPECT_FALSE(fs::exists(folder / "same.glb")) << "no job ran";
+}
+
 // The jobs of one run share one device, opened once (-v logs "device:" when
 // it opens). A morph creates its output folder, parents and all; a
 // denoise's folder must exist.

@@ -1,6 +1,5 @@
 // lbmshape morph and lbmshape run as a user runs them.
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,7 +20,6 @@
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
-extern char** environ;
 
 namespace lbmshape {
 namespace {
@@ -158,20 +156,15 @@ INSTANTIATE_TEST_SUITE_P(
                       // 0 is a value to refuse, not "the default": a morph of no steps only repeats the source.
                       BadMorph{"zero_steps", 2, {"SPHERE", "TORUS", "OUT", "--steps", "0"}},
                       BadMorph{"zero_steps_per_frame", 2, {"SPHERE", "TORUS", "OUT", "--steps-per-frame", "0"}},
-                      BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}}),
+                      BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}},
+                      // The bounds of core/parameter_bounds.hpp, refused before any work.
+                      BadMorph{"cs_above_one", 2, {"SPHERE", "TORUS", "OUT", "--cs", "1.5"}},
+                      BadMorph{"gamma_above_one", 2, {"SPHERE", "TORUS", "OUT", "--gamma", "1e9"}},
+                      BadMorph{"too_many_frames", 2, {"SPHERE", "TORUS", "OUT", "--frames", "100001"}},
+                      BadMorph{"too_many_steps", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1000", "--steps-per-frame", "2000"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
-// lbmshape started in the background, to be interrupted.
-pid_t spawnLbmshape(std::vector<std::string> args)
-{
-  args.insert(args.begin(), testing::lbmshapeBinary());
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  return pid;
-}
+using testing::spawnLbmshape;
 
 bool waitForFile(const fs::path& file, std::chrono::seconds limit)
 {
@@ -181,23 +174,7 @@ bool waitForFile(const fs::path& file, std::chrono::seconds limit)
   return fs::exists(file);
 }
 
-// The wait status of `pid`, killing it if it is still running after `limit`
-// (a test that fails must not hang).
-int waitForExit(pid_t pid, std::chrono::seconds limit)
-{
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  int status = 0;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      ADD_FAILURE() << "still running after " << limit.count() << " s";
-      return status;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return status;
-}
+using testing::waitForExit;
 
 // Only complete frame files, each readable; returns how many.
 int expectOnlyCompleteFrames(const fs::path& folder)
@@ -246,6 +223,37 @@ TEST_F(MorphCli, CtrlCStopsALongFrameAtOnce)
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_LT(seconds, 5.0) << "50000 steps take minutes; a batch a fraction of a second";
   EXPECT_EQ(expectOnlyCompleteFrames(out), 1);
+}
+
+// One writer per folder: a second morph into a folder that a morph is
+// writing fails at once (exit 4, naming the folder), even with --force, and
+// the first one's frames are left alone.
+TEST_F(MorphCli, ASecondMorphIntoTheSameFolderIsRefused)
+{
+  const fs::path out = folder / "frames";
+  const pid_t pid = spawnLbmshape(
+      {"-q", "morph", sphere, torus, out.string(), "--res", "48", "--frames", "400", "--format", "obj", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForFile(out / "frame_0001.obj", std::chrono::seconds(60)));
+  testing::CliResult second =
+      testing::runLbmshape({"-v", "morph", sphere, torus, out.string(), "--res", "32", "--frames", "3", "--force"});
+  kill(pid, SIGINT);
+  waitForExit(pid, std::chrono::seconds(60));
+  EXPECT_EQ(second.exitCode, 4) << second.err;
+  EXPECT_NE(second.err.find(out.string() + " is being written by another lbmshape"), std::string::npos) << second.err;
+  EXPECT_EQ(second.err.find("sdf"), std::string::npos) << "refused before any work: " << second.err;
+  EXPECT_GE(expectOnlyCompleteFrames(out), 2);
+}
+
+// A folder that cannot be made is an output error before any work.
+TEST_F(MorphCli, AFolderThatCannotBeMadeIsRefusedBeforeAnyWork)
+{
+  std::ofstream(folder / "file.txt") << "not a folder";
+  const fs::path out = folder / "file.txt" / "frames";
+  testing::CliResult r = testing::runLbmshape({"-v", "morph", sphere, torus, out.string(), "--res", "32", "--frames", "3"});
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_NE(r.err.find("is not a folder"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("sdf"), std::string::npos) << "refused before any work: " << r.err;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@ lbmshape_test(cli_tests
   ${CMAKE_CURRENT_LIST_DIR}/morph_align_and_convergence_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/progress_cli_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/signals_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_empty_frames_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/usage_errors_test.cpp
 )

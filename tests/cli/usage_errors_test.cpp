@@ -43,13 +43,19 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"larger_than_the_device", {"bench", "--size", "400,400,400"}, "does not fit"},
                       UsageCase{"paper_and_size", {"bench", "--paper", "--size", "8,8,8"}, "--paper"},
                       UsageCase{"no_steps", {"bench", "--steps", "0", "--size", "8,8,8"}, "--steps"},
+                      UsageCase{"gamma_above_one", {"bench", "--gamma", "1.5", "--size", "8,8,8"}, "above 1"},
+                      UsageCase{"denoise_gamma_above_one", {"denoise", "in.obj", "out.glb", "--gamma", "1e9"}, "--gamma = 1e+09 is above 1"},
+                      UsageCase{"denoise_too_many_steps", {"denoise", "in.obj", "out.glb", "--steps", "1000001"}, "--steps must be from 0 to 1000000"},
+                      UsageCase{"compare_too_many_samples", {"compare", "a.obj", "b.obj", "--samples", "4000000000"}, "--samples must be from 1 to 10000000"},
                       UsageCase{"half_width_without_band", {"bench", "--half-width", "4", "--size", "8,8,8"}, "--band"},
                       UsageCase{"band_half_width_zero", {"bench", "--band", "--half-width", "0.5", "--size", "16,16,16"}, "--half-width"},
                       UsageCase{"band_half_width_huge", {"bench", "--band", "--half-width", "65", "--size", "16,16,16"}, "--half-width"},
                       UsageCase{"band_and_paper", {"bench", "--band", "--paper"}, "--paper"},
                       UsageCase{"unknown_device", {"--device", "no-such-gpu", "info"}, "no-such-gpu"},
                       UsageCase{"unknown_option", {"bench", "--frobnicate"}, "frobnicate"},
-                      UsageCase{"no_command", {}, "subcommand"}),
+                      UsageCase{"no_command", {}, "subcommand"},
+                      UsageCase{"unknown_command", {"frobnicate", "a.obj"}, "unknown command 'frobnicate'; the commands are denoise, morph"},
+                      UsageCase{"unknown_command_after_options", {"-v", "--device", "0", "smooth"}, "unknown command 'smooth'"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CommandLine, HelpAndVersionSucceed)

@@ -2,6 +2,9 @@
 // command line: exit code, stdout and stderr.
 #pragma once
 
+#include <sys/types.h>
+
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,15 @@ CliResult runLbmshape(const std::vector<std::string>& arguments);
 // The same under an address-space limit (ulimit -v), as on a machine with
 // that much memory: for the tests of failing well when memory runs out.
 CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std::string>& arguments);
+
+// lbmshape started in the background, its stdout and stderr sent to
+// `logFile` (or /dev/null), for the tests that signal it; -1 if it did not
+// start.
+pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFile = "/dev/null");
+
+// The wait status of `pid`; a test failure, and the process killed, if it
+// still runs after `limit` (a failing test must not hang).
+int waitForExit(pid_t pid, std::chrono::milliseconds limit);
 
 // Path of the lbmshape binary under test.
 std::string lbmshapeBinary();

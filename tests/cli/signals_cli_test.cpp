@@ -1,0 +1,117 @@
+// SIGTERM (kill, timeout, a batch scheduler) and SIGHUP (a closed terminal)
+// stop lbmshape as Ctrl-C does: at a random moment of a morph or a denoise,
+// the process ends with 128 + the signal's number (or finished first, or
+// died of the signal before its handler was set), and the folder holds only
+// complete files: no hidden temporary file, no partial mesh.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <fstream>
+#include <random>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "support/cli_runner.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SignalCase {
+  const char* name;
+  int signal;
+  bool morph;
+};
+
+void PrintTo(const SignalCase& c, std::ostream* os) { *os << c.name; }
+
+class StopSignal : public ::testing::TestWithParam<SignalCase> {};
+
+// Every file below `folder`, other than the inputs, is a complete mesh.
+void expectOnlyCompleteFiles(const fs::path& folder, int attempt)
+{
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "a.obj" || name == "b.obj" || entry.is_directory()) continue;
+    EXPECT_NE(name[0], '.') << "attempt " << attempt << ": a temporary file was left: " << entry.path();
+    EXPECT_NO_THROW(readMesh(entry.path())) << "attempt " << attempt << ": " << entry.path();
+  }
+}
+
+TEST_P(StopSignal, LeavesOnlyCompleteFilesAndSaysWhichSignal)
+{
+  const SignalCase& c = GetParam();
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  std::mt19937 random(uint32_t(c.signal * 7 + c.morph));  // the same moments on every run of the suite
+  std::uniform_int_distribution<int> delayMs(0, 600);
+  int handled = 0;
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    const fs::path out = folder / ("out" + std::to_string(attempt));
+    std::vector<std::string> args =
+        c.morph ? std::vector<std::string>{"morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                           out.string(), "--res", "40", "--frames", "60", "--format", "obj"}
+                : std::vector<std::string>{"denoise", (folder / "a.obj").string(), (out.string() + ".glb"),
+                                           "--res", "64", "--steps", "60"};
+    const pid_t pid = testing::spawnLbmshape(args);
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(delayMs(random)));
+    kill(pid, c.signal);
+    const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+    if (WIFSIGNALED(status)) {
+      EXPECT_EQ(WTERMSIG(status), c.signal) << "attempt " << attempt << ": only before the handler is set";
+    } else {
+      ASSERT_TRUE(WIFEXITED(status));
+      const int code = WEXITSTATUS(status);
+      EXPECT_TRUE(code == 0 || code == 128 + c.signal) << "attempt " << attempt << ": exit " << code;
+      handled += code == 128 + c.signal;
+    }
+    expectOnlyCompleteFiles(folder.path(), attempt);
+  }
+  EXPECT_GE(handled, 5) << "most signals should land while the job runs";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, StopSignal,
+                         ::testing::Values(SignalCase{"sigterm_morph", SIGTERM, true},
+                                           SignalCase{"sighup_morph", SIGHUP, true},
+                                           SignalCase{"sigterm_denoise", SIGTERM, false},
+                                           SignalCase{"sighup_denoise", SIGHUP, false}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// What the message says matches what the folder holds.
+TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  const fs::path out = folder / "frames", log = folder / "stderr.txt";
+  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                            out.string(), "--res", "48", "--frames", "400", "--format", "obj",
+                                            "--no-animation"},
+                                           log.string());
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "frame_0004.obj") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGTERM);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(out)) frames += entry.path().extension() == ".obj";
+  std::ifstream in(log);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("terminated (SIGTERM): " + std::to_string(frames) + " complete frames"), std::string::npos)
+      << frames << " frames; " << message;
+}
+
+}  // namespace
+}  // namespace lbmshape

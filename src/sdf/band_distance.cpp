@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 
+#include "core/interrupt.hpp"
 #include "sdf/cell_space.hpp"
 
 namespace lbmshape {
@@ -20,6 +21,7 @@ size_t exactBandDistancesIn(const Cells& cells, const TriangleBvh& bvh, const Gr
   size_t written = 0;
 #pragma omp parallel for schedule(dynamic, 4) reduction(+ : written)
   for (size_t b = 0; b < cells.blockCount(); ++b) {
+    if (interrupt::requested()) continue;  // the caller stops after the loop
     glm::ivec3 lo, hi;
     cells.blockRange(b, lo, hi);
     if (progress) progress->advance();
@@ -129,6 +131,7 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
   const double halfDiagonal = 0.5 * (brickEdge - 1) * std::sqrt(3.0) * frame.voxel;
 #pragma omp parallel for schedule(dynamic, 256)
   for (size_t t = 0; t < count; ++t) {
+    if (interrupt::requested()) continue;  // the caller stops after the loop
     if (progress && t % 256 == 0) progress->advance(256);
     const uint32_t triangle = uint32_t(t);
     const TriangleReach reach(bvh, frame, triangle, bandVoxels);

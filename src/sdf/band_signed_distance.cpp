@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/log.hpp"
 #include "core/stopwatch.hpp"
 #include "sdf/band_distance.hpp"
@@ -33,6 +34,7 @@ std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& fr
   std::vector<uint8_t> near(grid.cells(), 0);
 #pragma omp parallel for schedule(dynamic, 64)
   for (size_t b = 0; b < grid.cells(); ++b) {
+    if (b % 256 == 0 && interrupt::requested()) continue;  // the caller stops after the loop
     const glm::ivec3 brick(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
     const glm::dvec3 first = glm::dvec3(brickEdge * brick);
     if (bvh.closest(frame.toWorld(first + 0.5 * (brickEdge - 1)), brickReach).triangle == TriangleBvh::kNoTriangle)
@@ -60,6 +62,7 @@ std::vector<float> bandDistances(const TriangleBvh& bvh, const GridFrame& frame,
   Stopwatch exact;
   s.bandCells = exactBandDistances(bvh, frame, cells, exactVoxels, distance, nearest, progress, 0.4);
   s.bandMs = exact.ms();
+  interrupt::check("nothing was written");
   if (progress) progress->beginPart("far field", 1.0, 0.3);
   Stopwatch propagated;
   s.farCells = propagateFarField(bvh, frame, cells, distance, nearest, maxVoxels);
@@ -160,6 +163,7 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   const TriangleBvh bvh(mesh);
   const std::shared_ptr<const BrickSet> bricks = given ? given : bandBricks(bvh, frame, options.halfWidth + 2.0);
   s.bvhMs = stage.ms();
+  interrupt::check("nothing was written");
   if (options.checkBricks) options.checkBricks(*bricks);
 
   stage.restart();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/interrupt.hpp"
 #include "sdf/cell_space.hpp"
 
 namespace lbmshape {
@@ -93,7 +94,7 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
     std::vector<Push> local;
 #pragma omp for schedule(dynamic, 1024) nowait
     for (size_t i = 0; i < cells; ++i) {
-      if (state[i] != kSettled) continue;
+      if (state[i] != kSettled || (i % 4096 == 0 && interrupt::requested())) continue;
       const glm::ivec3 c = space.coords(i);
       bool open = false;
       space.forEachNeighbour(i, c, [&](size_t j, const glm::ivec3&) { open = open || state[j] == kPending; });
@@ -117,6 +118,7 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
   const size_t lastBucket = bounded ? size_t(maxVoxels / kBucketWidth) : SIZE_MAX;
   for (size_t b = 0; b < buckets.size() && b <= lastBucket; ++b) {
     while (!buckets[b].empty()) {
+      interrupt::check("nothing was written");  // a round lasts a fraction of a second
       // Settle the bucket's pending cells whose best offer still falls in it.
       batch.clear();
       const std::vector<uint32_t>& entries = buckets[b];

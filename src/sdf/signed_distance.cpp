@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/stopwatch.hpp"
 #include "sdf/band_distance.hpp"
 #include "sdf/far_field.hpp"
@@ -57,6 +58,7 @@ Volume signedDistance(const TriangleMesh& mesh, const GridFrame& frame, const Si
   std::vector<uint32_t> nearest(s.cells, TriangleBvh::kNoTriangle);
   s.bandCells = exactBandDistances(bvh, frame, options.bandVoxels, distance, nearest, options.progress, 0.37);
   s.bandMs = stage.ms();
+  interrupt::check("nothing was written");
 
   // The sign needs only to know which cells are more than a voxel from the
   // surface, which the band already tells (the rest are still infinite).

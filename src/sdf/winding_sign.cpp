@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
 #include "sdf/cell_space.hpp"
 
 namespace lbmshape {
@@ -70,6 +71,7 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   auto flood = [&](size_t seed) {
     queue.push_back(uint32_t(seed));
     while (head < queue.size()) {
+      if (head % 65536 == 0) interrupt::check("nothing was written");
       const size_t i = queue[head++];
       const glm::ivec3 c = cells.coords(i);
       const float widened = radius[i] + growth[cells.blockOf(i)];

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <thread>
@@ -111,6 +112,35 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
   const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(message.find("terminated (SIGTERM): " + std::to_string(frames) + " complete frames"), std::string::npos)
       << frames << " frames; " << message;
+}
+
+// A stop is honoured inside the signed distance too, between chunks of its
+// work, not only when the stage ends: stopped during its first part (the
+// exact band), a denoise never starts the next (the far field).
+TEST(StopSignal, TheSignedDistanceStopsWithinItsPart)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(6), folder / "a.obj");
+  const fs::path log = folder / "stderr.txt";
+  setenv("LBMSHAPE_PROGRESS_MS", "0", 1);  // every part of the stage says when it starts
+  const pid_t pid = testing::spawnLbmshape(
+      {"denoise", (folder / "a.obj").string(), (folder / "out.glb").string(), "--res", "640"}, log.string());
+  unsetenv("LBMSHAPE_PROGRESS_MS");
+  ASSERT_GT(pid, 0);
+  auto text = [&] {
+    std::ifstream in(log);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (text().find("(exact band)") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(pid, SIGTERM);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(WIFEXITED(status)) << text();
+  EXPECT_EQ(WEXITSTATUS(status), 143) << text();
+  EXPECT_EQ(text().find("(far field)"), std::string::npos) << "it went on to the next part: " << text();
+  EXPECT_NE(text().find("terminated (SIGTERM): nothing was written"), std::string::npos) << text();
+  EXPECT_FALSE(fs::exists(folder / "out.glb"));
 }
 
 }  // namespace

@@ -166,12 +166,12 @@ private:
   {
     const int mode = modeOf(primitive);
     if (!isTriangles(mode)) {
-      log::verbose("reading " + source_.name + ": skipped " + name + ": points or lines, not triangles");
+      log::warning("reading " + source_.name + ": skipped " + name + ": points or lines, not triangles");
       return;
     }
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
-      log::verbose("reading " + source_.name + ": skipped " + name + ": it has no POSITION attribute");
+      log::warning("reading " + source_.name + ": skipped " + name + ": it has no POSITION attribute");
       return;
     }
     const std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");

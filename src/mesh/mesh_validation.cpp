@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -22,6 +23,45 @@ std::string coordinates(const glm::dvec3& p)
   std::ostringstream s;
   s << '(' << p.x << ", " << p.y << ", " << p.z << ')';
   return s.str();
+}
+
+// A vertex far outside the rest of the mesh (a stray 1e30 in an export)
+// would stretch the grid until the rest is a speck in one voxel, and the
+// result would be empty or meaningless with nothing said. The rest's extent
+// is measured without the outermost vertices (a five-hundredth at each end
+// of each axis, at least four: a stray triangle's corners): when the whole
+// mesh spans more than a thousand times that, the vertex farthest out is
+// refused, by number.
+void refuseStrayVertices(const TriangleMesh& mesh, const std::string& prefix)
+{
+  std::vector<uint8_t> used(mesh.positions.size(), 0);
+  for (const auto& t : mesh.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  std::vector<uint32_t> vertices;
+  for (uint32_t v = 0; v < used.size(); ++v)
+    if (used[v]) vertices.push_back(v);
+  if (vertices.size() < 8) return;  // too few to tell a stray vertex from the shape
+  const size_t outermost = std::max<size_t>(4, vertices.size() / 500);
+  glm::dvec3 lo, hi;
+  std::vector<double> values(vertices.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (size_t k = 0; k < vertices.size(); ++k) values[k] = mesh.positions[vertices[k]][axis];
+    std::nth_element(values.begin(), values.begin() + ptrdiff_t(outermost), values.end());
+    lo[axis] = values[outermost];
+    std::nth_element(values.begin(), values.end() - 1 - ptrdiff_t(outermost), values.end());
+    hi[axis] = values[values.size() - 1 - outermost];
+  }
+  const double rest = glm::length(hi - lo);
+  const Bounds whole = bounds(mesh);
+  if (!(rest > 0.0) || whole.diagonal() <= 1000.0 * rest) return;
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  uint32_t farthest = vertices.front();
+  for (uint32_t v : vertices)
+    if (glm::length(mesh.positions[v] - centre) > glm::length(mesh.positions[farthest] - centre)) farthest = v;
+  std::ostringstream s;
+  s << prefix << "vertex " << farthest + 1 << " at " << coordinates(mesh.positions[farthest]) << " lies "
+    << glm::length(mesh.positions[farthest] - centre) << " from the rest of the mesh, which spans " << rest
+    << ": a grid around both would hold the rest in less than a voxel; remove the stray vertex";
+  throw InputError(s.str());
 }
 
 }  // namespace
@@ -50,8 +90,10 @@ void validateInputMesh(TriangleMesh& mesh, const std::string& name)
   if (mesh.triangles.empty())
     throw InputError(prefix + "all " + std::to_string(before) + " triangles are degenerate (zero area)");
   if (mesh.triangles.size() < before)
-    log::verbose(name + ": dropped " + std::to_string(before - mesh.triangles.size()) +
+    log::warning(name + ": dropped " + std::to_string(before - mesh.triangles.size()) +
                  " degenerate (zero-area) triangles of " + std::to_string(before));
+
+  refuseStrayVertices(mesh, prefix);
 
   if (mesh.triangles.size() == 1) throw InputError(prefix + "it is a single triangle, which encloses no volume");
   const Bounds box = bounds(mesh);

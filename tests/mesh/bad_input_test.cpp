@@ -206,6 +206,41 @@ TEST(BadInputMessages, SayWhatIsWrong)
   EXPECT_NE(messageOf([&] { writeMesh(testing::icosphere(0), folder / "out.fbx"); }).find(".fbx"), std::string::npos);
 }
 
+// One stray vertex far from the rest would shrink the rest into less than a
+// voxel of any grid: refused, by number; two parts far apart are a mesh.
+TEST(BadInputMessages, AStrayVertexFarFromTheRestIsNamed)
+{
+  testing::ScratchFolder folder;
+  auto textOf = [](const TriangleMesh& mesh) {
+    std::string text;
+    for (const auto& p : mesh.positions)
+      text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    for (const auto& t : mesh.triangles)
+      text += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
+    return text;
+  };
+  TriangleMesh stray = testing::icosphere(3);
+  const size_t sphereVertices = stray.positions.size();
+  // A triangle of its own, far out (one joined to the sphere would be a
+  // sliver, dropped as degenerate).
+  stray.positions.insert(stray.positions.end(), {{1e30, 0.0, 0.0}, {1e30, 1e29, 0.0}, {1e30, 0.0, 1e29}});
+  stray.triangles.push_back({uint32_t(sphereVertices), uint32_t(sphereVertices + 1), uint32_t(sphereVertices + 2)});
+  try {
+    readMesh(objFile(folder.path(), textOf(stray)));
+    ADD_FAILURE() << "a stray vertex at 1e30 was read";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("vertex " + std::to_string(sphereVertices + 2) + " at (1e+30, 1e+29, 0)"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("from the rest of the mesh"), std::string::npos) << message;
+  }
+
+  TriangleMesh twoParts = testing::icosphere(3), far = testing::icosphere(3);
+  for (const auto& p : far.positions) twoParts.positions.push_back(p + glm::dvec3(300.0, 0.0, 0.0));
+  for (const auto& t : far.triangles) twoParts.triangles.push_back(t + uint32_t(testing::icosphere(3).positions.size()));
+  EXPECT_EQ(readMesh(objFile(folder.path(), textOf(twoParts))).triangleCount(), 2 * far.triangleCount());
+}
+
 TEST(FailedWrite, LeavesThePreviousFileAlone)
 {
   testing::ScratchFolder folder;

@@ -7,6 +7,7 @@
 #include "sdf/band_signed_distance.hpp"
 #include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
+#include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 namespace {
@@ -88,21 +89,9 @@ public:
         bricks->activate(b.x, b.y, b.z);
       }
       device.checkBandFits(*bricks, false, true);
+      addBricksBetween(source, target, frame, *bricks);
+      device.checkBandFits(*bricks, false, true);
       computeFields(source, target, bricks, progress);
-      // Bricks between the surfaces: beyond both bands, on different sides.
-      const Extent3 grid = bricks->bricks();
-      bool swept = false;
-      for (size_t b = 0; b < grid.cells(); ++b) {
-        const glm::ivec3 brick(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
-        if (bricks->slot(brick.x, brick.y, brick.z) == noBrick && source_.farSides()[b] != target_.farSides()[b]) {
-          bricks->activate(brick.x, brick.y, brick.z);
-          swept = true;
-        }
-      }
-      if (swept) {
-        device.checkBandFits(*bricks, false, true);
-        computeFields(source, target, bricks, progress);
-      }
     });
   }
 
@@ -152,6 +141,43 @@ public:
   }
 
 private:
+  // The bricks between the two surfaces: outside both bands, and on
+  // different sides of the two. No surface comes within W + 2 voxels of an
+  // inactive brick, so a face-connected region of them is on one side of
+  // each mesh (as markFarSides assumes too): one winding number of each mesh
+  // at one brick of the region decides it all.
+  static void addBricksBetween(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame,
+                               BrickSet& bricks)
+  {
+    const TriangleBvh sourceTree(source), targetTree(target);
+    const Extent3 grid = bricks.bricks();
+    std::vector<uint8_t> seen(grid.cells(), 0), between(grid.cells(), 0);
+    std::vector<glm::ivec3> region;
+    const glm::ivec3 steps[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int z = 0; z < grid.nz; ++z)
+      for (int y = 0; y < grid.ny; ++y)
+        for (int x = 0; x < grid.nx; ++x) {
+          if (seen[grid.index(x, y, z)] || bricks.slot(x, y, z) != noBrick) continue;
+          const glm::dvec3 centre = frame.toWorld(glm::dvec3(brickEdge * glm::ivec3(x, y, z)) + 0.5 * (brickEdge - 1));
+          const uint8_t differ = (sourceTree.windingNumber(centre) > 0.5) != (targetTree.windingNumber(centre) > 0.5);
+          region.assign(1, glm::ivec3(x, y, z));
+          seen[grid.index(x, y, z)] = 1;
+          for (size_t k = 0; k < region.size(); ++k) {
+            const glm::ivec3 b = region[k];
+            between[grid.index(b.x, b.y, b.z)] = differ;
+            for (const glm::ivec3& d : steps) {
+              const glm::ivec3 n = b + d;
+              if (!grid.contains(n.x, n.y, n.z) || seen[grid.index(n.x, n.y, n.z)] || bricks.slot(n.x, n.y, n.z) != noBrick)
+                continue;
+              seen[grid.index(n.x, n.y, n.z)] = 1;
+              region.push_back(n);
+            }
+          }
+        }
+    for (size_t b = 0; b < grid.cells(); ++b)
+      if (between[b]) bricks.activate(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
+  }
+
   void computeFields(const TriangleMesh& source, const TriangleMesh& target, std::shared_ptr<const BrickSet> bricks,
                      Progress& progress)
   {

@@ -1,6 +1,10 @@
 #include "pipeline/compute_device.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.hpp"
+#include "core/host_memory.hpp"
 #include "gpu/gpu_context.hpp"
 #include "gpu/vulkan_instance.hpp"
 #include "lbm/band_reference_solver.hpp"
@@ -38,15 +42,44 @@ gpu::GpuContext* ComputeDevice::gpu() const
 
 std::string ComputeDevice::name() const { return isReference() ? "reference (CPU)" : description().name; }
 
+namespace {
+
+// Host bytes a cell of the reference solvers needs, with what the job holds
+// beside them: the grid's signed distance stage keeps about 30 B a cell at
+// its peak (distance, nearest triangle, the far field's offers and lists,
+// the sign's values), the grid solver two copies of 19 fp32 populations and
+// the field, the band solver two copies of four moments and the field.
+constexpr double gridReferenceBytesPerCell = 30 + 2 * 19 * 4 + 4;
+constexpr double bandReferenceBytesPerCell = 30 + 2 * 16 + 4 + 1;
+
+// The longest side a grid would need to shrink to, for `needed` to come
+// down to `allowed`, when the cells grow as the side to the power `power`.
+std::string smallerGrid(const Extent3& e, double needed, double allowed, double power)
+{
+  const int longest = std::max({e.nx, e.ny, e.nz});
+  const int fits = int(std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power)));
+  return "a grid of about " + std::to_string(fits) + " cells along its longest side (--res " + std::to_string(fits) +
+         ") would fit";
+}
+
+}  // namespace
+
 void ComputeDevice::checkFits(const Extent3& extent) const
 {
   LatticeLayout layout = latticeLayout(extent);
-  if (!isReference()) checkFitsDevice(layout, description());
+  if (!isReference()) {
+    checkFitsDevice(layout, description());
+    return;
+  }
+  const double needed = gridReferenceBytesPerCell * double(extent.cells());
+  if (needed > double(hostMemoryBytes()))
+    checkHostMemory(uint64_t(needed), "the reference solver's " + extent.toString() + " grid",
+                    smallerGrid(extent, needed, double(hostMemoryBytes()), 3.0));
 }
 
 std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) const
 {
-  checkFits(extent);
+  if (!isReference()) checkFitsDevice(latticeLayout(extent), description());
   if (!isReference()) return std::make_unique<VulkanSolver>(*gpu(), extent);
   return std::make_unique<ReferenceSolver>(extent);
 }
@@ -59,7 +92,16 @@ std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const 
 
 void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const
 {
-  if (!isReference()) BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
+  if (!isReference()) {
+    BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
+    return;
+  }
+  const double needed = (bandReferenceBytesPerCell + (perCellOmega ? 4 : 0) + (source ? 4 : 0)) *
+                        double(bricks.storedCells());
+  if (needed > double(hostMemoryBytes()))
+    checkHostMemory(uint64_t(needed),
+                    "the reference solver's narrow band of " + std::to_string(bricks.storedCells()) + " cells",
+                    smallerGrid(bricks.cells(), needed, double(hostMemoryBytes()), 2.0));
 }
 
 void ComputeDevice::requireCleanValidation() const

@@ -38,7 +38,8 @@ public:
   // A solver for a lattice of this size; throws UsageError when it does not
   // fit the device, before allocating anything.
   std::unique_ptr<LatticeSolver> makeSolver(const Extent3& extent) const;
-  // The same check alone, for validating a job before its expensive stages.
+  // The same check alone, for validating a job before its expensive stages;
+  // for the reference solver, against the host's memory (DeviceError).
   void checkFits(const Extent3& extent) const;
 
   // A solver for the narrow band on these bricks.

@@ -108,6 +108,28 @@ TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
   }
 }
 
+// The CPU reference solver's memory is the host's: a job it cannot hold is
+// refused before any allocation, with what it needs and what grid would
+// fit, under an address-space limit as on a small machine.
+TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  const std::string a = (folder / "a.obj").string();
+  for (std::vector<std::string> args :
+       {std::vector<std::string>{"--device", "reference", "denoise", a, (folder / "out.glb").string(), "--res", "400", "--dense"},
+        {"--device", "reference", "denoise", a, (folder / "out.glb").string(), "--res", "1000"},
+        {"--device", "reference", "morph", a, a, (folder / "frames").string(), "--res", "400"}}) {
+    const auto result = testing::runLbmshapeWithin(1000, args);
+    EXPECT_EQ(result.exitCode, 5) << args[4] << "\n" << result.err;
+    const auto lines = testing::nonEmptyLines(result.err);
+    ASSERT_EQ(lines.size(), 1u) << result.err;
+    EXPECT_NE(lines[0].find("needs about"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find("would fit"), std::string::npos) << lines[0];
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.obj"}) << "nothing written";
+  }
+}
+
 TEST(StandardOutput, ResultsThatCannotBeWrittenAreAnOutputError)
 {
   testing::ScratchFolder folder;

@@ -1,0 +1,62 @@
+#include "core/host_memory.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace lbmshape {
+namespace {
+
+// The cgroup (v2) limit of this process, if any.
+uint64_t cgroupLimit()
+{
+  std::ifstream file("/sys/fs/cgroup/memory.max");
+  uint64_t limit = 0;
+  if (file >> limit && limit > 0) return limit;  // "max" reads as no number
+  return UINT64_MAX;
+}
+
+// Bytes of address space this process maps now (/proc/self/statm's first field).
+uint64_t mappedBytes()
+{
+  std::ifstream file("/proc/self/statm");
+  uint64_t pages = 0;
+  if (!(file >> pages)) return 0;
+  return pages * uint64_t(sysconf(_SC_PAGE_SIZE));
+}
+
+std::string mebibytes(uint64_t bytes)
+{
+  std::ostringstream s;
+  s << (bytes >> 20) << " MiB";
+  return s.str();
+}
+
+}  // namespace
+
+uint64_t hostMemoryBytes()
+{
+  uint64_t bytes = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
+  bytes = std::min(bytes, cgroupLimit());
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const uint64_t mapped = mappedBytes();
+    bytes = std::min<uint64_t>(bytes, limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 0);
+  }
+  return bytes;
+}
+
+void checkHostMemory(uint64_t neededBytes, const std::string& what, const std::string& smaller)
+{
+  const uint64_t allowed = hostMemoryBytes();
+  if (neededBytes <= allowed) return;
+  throw DeviceError(what + " needs about " + mebibytes(neededBytes) + " but this machine allows " + mebibytes(allowed) +
+                    "; " + smaller);
+}
+
+}  // namespace lbmshape

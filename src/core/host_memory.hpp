@@ -1,0 +1,20 @@
+// What this process may still allocate on the host: the machine's physical
+// memory, less under a cgroup's memory.max (a container, a batch job's
+// limit) or an address-space limit (ulimit -v, less what is mapped
+// already). For refusing a job that cannot fit before it allocates, as the
+// device checks do for device memory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace lbmshape {
+
+uint64_t hostMemoryBytes();
+
+// Throws DeviceError when `neededBytes` exceed hostMemoryBytes(): "`what`
+// needs about N MiB but this machine allows M MiB; `smaller`", where
+// `smaller` says what would fit.
+void checkHostMemory(uint64_t neededBytes, const std::string& what, const std::string& smaller);
+
+}  // namespace lbmshape

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 
 namespace lbmshape {
 
@@ -21,7 +22,10 @@ FolderLock::FolderLock(const std::filesystem::path& folder)
     fd_ = -1;
     if (error == EWOULDBLOCK)
       throw OutputError(folder.string() + " is being written by another lbmshape; wait for it, or choose another folder");
-    throw OutputError("cannot lock the folder " + folder.string() + ": " + std::strerror(error));
+    // A file system without locks (some network mounts) only loses the
+    // guard against a second writer; the morph itself can go on.
+    log::verbose("cannot lock the folder " + folder.string() + " (" + std::strerror(error) +
+                 "): nothing stops a second lbmshape writing into it");
   }
 }
 

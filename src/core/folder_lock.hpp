@@ -12,7 +12,8 @@ namespace lbmshape {
 class FolderLock {
 public:
   // Throws OutputError naming the folder when another process holds it, or
-  // when it cannot be opened.
+  // when it cannot be opened; on a file system without locks it goes on
+  // unlocked.
   explicit FolderLock(const std::filesystem::path& folder);
   ~FolderLock();
 

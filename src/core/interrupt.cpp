@@ -40,7 +40,13 @@ void installHandler()
   action.sa_handler = onSignal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;  // system calls go on after the first signal; the flag is checked between batches
-  for (int signal : handled) sigaction(signal, &action, nullptr);
+  for (int signal : handled) {
+    // A signal the parent ignores stays ignored: `nohup lbmshape ...` asks
+    // for a job that outlives its terminal.
+    struct sigaction current = {};
+    if (sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+    sigaction(signal, &action, nullptr);
+  }
 }
 
 bool requested() { return received != 0; }

@@ -143,5 +143,31 @@ TEST(StopSignal, TheSignedDistanceStopsWithinItsPart)
   EXPECT_FALSE(fs::exists(folder / "out.glb"));
 }
 
+// A signal the parent ignores stays ignored: under `nohup` a hang-up must
+// not stop the job.
+TEST(StopSignal, AnIgnoredHangUpStaysIgnored)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  const fs::path out = folder / "frames";
+  struct sigaction ignore = {}, previous = {};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGHUP, &ignore, &previous);  // inherited by the child, as nohup does
+  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                            out.string(), "--res", "32", "--frames", "12", "--format", "obj",
+                                            "--no-animation"});
+  sigaction(SIGHUP, &previous, nullptr);
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "frame_0001.obj") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGHUP);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the hang-up was ignored and the morph finished";
+  EXPECT_TRUE(fs::exists(out / "frame_0011.obj"));
+}
+
 }  // namespace
 }  // namespace lbmshape

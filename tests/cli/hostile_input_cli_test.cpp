@@ -30,6 +30,7 @@ class HostileFileCli : public ::testing::TestWithParam<MeshFileCase> {
 protected:
   void SetUp() override
   {
+    LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
     input_ = folder_ / (GetParam().name + GetParam().extension);
     writeBytes(input_, GetParam().bytes);
     writeMesh(testing::box({0, 0, 0}, {1, 1, 1}), folder_ / "cube.obj");
@@ -66,6 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileFileCli, ::testing::ValuesIn(testing::hos
 
 TEST(MemoryPressure, CompareEndsWithItsResultOrOutOfMemoryNeverASignal)
 {
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(6), folder / "a.obj");
   writeMesh(testing::icosphere(6, 1.01), folder / "b.obj");
@@ -82,6 +84,7 @@ TEST(MemoryPressure, CompareEndsWithItsResultOrOutOfMemoryNeverASignal)
 
 TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
 {
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
@@ -113,6 +116,7 @@ TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
 // fit, under an address-space limit as on a small machine.
 TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
 {
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "a.obj");
   const std::string a = (folder / "a.obj").string();

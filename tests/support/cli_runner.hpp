@@ -22,6 +22,21 @@ CliResult runLbmshape(const std::vector<std::string>& arguments);
 // that much memory: for the tests of failing well when memory runs out.
 CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std::string>& arguments);
 
+// False in a build with AddressSanitizer, which reserves terabytes of
+// address space for its shadow memory up front: no lbmshape of that build
+// starts under an address-space limit, so the tests that use one skip.
+constexpr bool addressSpaceLimitsWork()
+{
+#if defined(__SANITIZE_ADDRESS__)
+  return false;
+#else
+  return true;
+#endif
+}
+#define LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS()                                                          \
+  if (!::lbmshape::testing::addressSpaceLimitsWork())                                                         \
+  GTEST_SKIP() << "AddressSanitizer reserves its shadow memory as address space: ulimit -v cannot apply here"
+
 // lbmshape started in the background, its stdout and stderr sent to
 // `logFile` (or /dev/null), for the tests that signal it; -1 if it did not
 // start.

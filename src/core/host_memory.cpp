@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 
 #include "core/error.hpp"
+#include "core/memory_sizes.hpp"
 
 namespace lbmshape {
 namespace {
@@ -30,13 +30,6 @@ uint64_t mappedBytes()
   return pages * uint64_t(sysconf(_SC_PAGE_SIZE));
 }
 
-std::string mebibytes(uint64_t bytes)
-{
-  std::ostringstream s;
-  s << (bytes >> 20) << " MiB";
-  return s.str();
-}
-
 }  // namespace
 
 uint64_t hostMemoryBytes()
@@ -51,12 +44,12 @@ uint64_t hostMemoryBytes()
   return bytes;
 }
 
-void checkHostMemory(uint64_t neededBytes, const std::string& what, const std::string& smaller)
+void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power)
 {
-  const uint64_t allowed = hostMemoryBytes();
+  const double allowed = double(hostMemoryBytes());
   if (neededBytes <= allowed) return;
-  throw DeviceError(what + " needs about " + mebibytes(neededBytes) + " but this machine allows " + mebibytes(allowed) +
-                    "; " + smaller);
+  throw DeviceError(what + " needs about " + mebibytes(uint64_t(neededBytes)) + " but this machine allows " +
+                    mebibytes(uint64_t(allowed)) + "; " + gridThatWouldFit(extent, neededBytes, allowed, power));
 }
 
 }  // namespace lbmshape

@@ -8,13 +8,16 @@
 #include <cstdint>
 #include <string>
 
+#include "core/extent.hpp"
+
 namespace lbmshape {
 
 uint64_t hostMemoryBytes();
 
 // Throws DeviceError when `neededBytes` exceed hostMemoryBytes(): "`what`
-// needs about N MiB but this machine allows M MiB; `smaller`", where
-// `smaller` says what would fit.
-void checkHostMemory(uint64_t neededBytes, const std::string& what, const std::string& smaller);
+// needs about N MiB but this machine allows M MiB; a grid of about ...
+// would fit" (gridThatWouldFit, for a job on `extent` whose size grows as
+// its side to the power `power`).
+void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power);
 
 }  // namespace lbmshape

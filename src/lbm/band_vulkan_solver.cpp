@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstring>
 
 #include "band_interface.h"
 #include "core/error.hpp"
+#include "core/memory_sizes.hpp"
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
-#include "lbm/lattice_memory.hpp"
 #include "lbm/relaxation.hpp"
 
 namespace lbmshape {
@@ -270,14 +269,11 @@ void BandVulkanSolver::checkFits(const BrickSet& bricks, const gpu::DeviceDescri
   // The band's cells grow with the surface's area: as the square of the
   // grid's longest side.
   const Extent3 e = bricks.cells();
-  const int longest = std::max({e.nx, e.ny, e.nz});
-  const int fits = int(std::floor(0.95 * longest * std::sqrt(double(most) / double(cells))));
   const double perCell = deviceBytesPerCell(perCellOmega, source);
   throw DeviceError("the narrow band of this " + e.toString() + " grid needs " + std::to_string(cells) + " cells (" +
                     mebibytes(uint64_t(double(cells) * perCell)) + ") but " + device.name + " holds at most " +
-                    std::to_string(most) + " (" + mebibytes(uint64_t(double(most) * perCell)) +
-                    "); a grid of about " + std::to_string(fits) + " cells along its longest side (--res " +
-                    std::to_string(fits) + ") would fit");
+                    std::to_string(most) + " (" + mebibytes(uint64_t(double(most) * perCell)) + "); " +
+                    gridThatWouldFit(e, double(cells), double(most), 2.0));
 }
 
 std::string BandVulkanSolver::backendName() const { return "vulkan band (" + r_->context.description().name + ")"; }

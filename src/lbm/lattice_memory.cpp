@@ -1,17 +1,9 @@
 #include "lbm/lattice_memory.hpp"
 
-#include <sstream>
-
 #include "core/error.hpp"
+#include "core/memory_sizes.hpp"
 
 namespace lbmshape {
-std::string mebibytes(uint64_t bytes)
-{
-  std::ostringstream s;
-  s.precision(1);
-  s << std::fixed << double(bytes) / (1024.0 * 1024.0) << " MiB";
-  return s.str();
-}
 
 void checkExtent(const Extent3& e)
 {

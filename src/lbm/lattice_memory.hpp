@@ -66,9 +66,6 @@ struct LatticeLayout {
   static constexpr uint64_t bytesPerUpdate = 19 * 4 * 2;
 };
 
-// "12.3 MiB", for messages about memory.
-std::string mebibytes(uint64_t bytes);
-
 // Throws UsageError if a dimension is not positive.
 void checkExtent(const Extent3& extent);
 

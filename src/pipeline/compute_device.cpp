@@ -1,8 +1,5 @@
 #include "pipeline/compute_device.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "core/error.hpp"
 #include "core/host_memory.hpp"
 #include "gpu/gpu_context.hpp"
@@ -52,16 +49,6 @@ namespace {
 constexpr double gridReferenceBytesPerCell = 30 + 2 * 19 * 4 + 4;
 constexpr double bandReferenceBytesPerCell = 30 + 2 * 16 + 4 + 1;
 
-// The longest side a grid would need to shrink to, for `needed` to come
-// down to `allowed`, when the cells grow as the side to the power `power`.
-std::string smallerGrid(const Extent3& e, double needed, double allowed, double power)
-{
-  const int longest = std::max({e.nx, e.ny, e.nz});
-  const int fits = int(std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power)));
-  return "a grid of about " + std::to_string(fits) + " cells along its longest side (--res " + std::to_string(fits) +
-         ") would fit";
-}
-
 }  // namespace
 
 void ComputeDevice::checkFits(const Extent3& extent) const
@@ -71,10 +58,8 @@ void ComputeDevice::checkFits(const Extent3& extent) const
     checkFitsDevice(layout, description());
     return;
   }
-  const double needed = gridReferenceBytesPerCell * double(extent.cells());
-  if (needed > double(hostMemoryBytes()))
-    checkHostMemory(uint64_t(needed), "the reference solver's " + extent.toString() + " grid",
-                    smallerGrid(extent, needed, double(hostMemoryBytes()), 3.0));
+  checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()), "the reference solver's " + extent.toString() + " grid",
+                  extent, 3.0);
 }
 
 std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) const
@@ -96,12 +81,9 @@ void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, boo
     BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
     return;
   }
-  const double needed = (bandReferenceBytesPerCell + (perCellOmega ? 4 : 0) + (source ? 4 : 0)) *
-                        double(bricks.storedCells());
-  if (needed > double(hostMemoryBytes()))
-    checkHostMemory(uint64_t(needed),
-                    "the reference solver's narrow band of " + std::to_string(bricks.storedCells()) + " cells",
-                    smallerGrid(bricks.cells(), needed, double(hostMemoryBytes()), 2.0));
+  checkHostMemory((bandReferenceBytesPerCell + (perCellOmega ? 4 : 0) + (source ? 4 : 0)) * double(bricks.storedCells()),
+                  "the reference solver's narrow band of " + std::to_string(bricks.storedCells()) + " cells",
+                  bricks.cells(), 2.0);
 }
 
 void ComputeDevice::requireCleanValidation() const

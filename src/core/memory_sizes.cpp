@@ -1,0 +1,25 @@
+#include "core/memory_sizes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lbmshape {
+
+std::string mebibytes(uint64_t bytes)
+{
+  std::ostringstream s;
+  s.precision(1);
+  s << std::fixed << double(bytes) / (1024.0 * 1024.0) << " MiB";
+  return s.str();
+}
+
+std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power)
+{
+  const int longest = std::max({extent.nx, extent.ny, extent.nz});
+  const int fits = int(std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power)));
+  return "a grid of about " + std::to_string(fits) + " cells along its longest side (--res " + std::to_string(fits) +
+         ") would fit";
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,21 @@
+// Words for memory in the messages that refuse a job too large for a device
+// or the host: one format for the sizes, one rule for the grid that would fit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/extent.hpp"
+
+namespace lbmshape {
+
+// "12.3 MiB".
+std::string mebibytes(uint64_t bytes);
+
+// "a grid of about N cells along its longest side (--res N) would fit", for
+// a job on `extent` that needs `needed` where `allowed` is available, its
+// size growing as the grid's side to the power `power` (3 for a grid, 2 for
+// a band, which follows the surface's area); with a 5 % margin.
+std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power);
+
+}  // namespace lbmshape

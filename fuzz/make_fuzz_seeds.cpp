@@ -22,7 +22,7 @@ int main(int argc, char** argv)
       if (c.large) continue;
       const fs::path target = folder / c.extension.substr(1);
       fs::create_directories(target);
-      std::ofstream(target / (c.name + c.extension), std::ios::binary) << c.bytes;
+      std::ofstream(target / (c.name + c.extension), std::ios::binary) << c.bytes();
       ++written;
     }
   std::cout << "wrote " << written << " seed files into " << folder << "\n";

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the mesh readers' libFuzzer targets (clang, AddressSanitizer and
-# UndefinedBehaviorSanitizer) into build-fuzz/ and runs each one for the
-# given number of seconds (default 30), starting from a seed corpus of
+# UndefinedBehaviorSanitizer; the fuzz preset of CMakePresets.json) into
+# build-fuzz/, runs the readers' unit tests in that build with leak checking
+# on (the fuzz test preset), then runs each fuzz target for the given number
+# of seconds (default 30), starting from a seed corpus of
 # well-formed and hostile files (fuzz/make_fuzz_seeds.cpp). The corpus each
 # run grows is kept in build-fuzz/corpus/ for the next run; a finding is
 # written to build-fuzz/findings/ and fails the script.
@@ -14,9 +16,12 @@ shift || true
 formats=("$@")
 [[ ${#formats[@]} -gt 0 ]] || formats=(obj ply off stl gltf glb)
 
-scripts/install-deps.sh --with-fuzz-tools
-cmake -S . -B build-fuzz -DLBMSHAPE_FUZZERS=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build-fuzz -j2 >/dev/null
+scripts/install-deps.sh --with-fuzz-tools --with-test-tools
+scripts/install-gltf-validator.sh
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz >/dev/null
+echo "reader tests under AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer"
+ctest --preset fuzz
 build-fuzz/make_fuzz_seeds build-fuzz/seeds >/dev/null
 mkdir -p build-fuzz/findings
 

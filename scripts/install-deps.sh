@@ -13,13 +13,15 @@ packages=(
 # The Khronos glTF-Validator runs on Node. A machine may already have Node
 # with its own npm from elsewhere (then Debian's npm package conflicts), so
 # what counts is that both commands exist.
-if [[ "${1:-}" == "--with-test-tools" ]] && ! { command -v node && command -v npm; } >/dev/null; then
-  packages+=(nodejs npm)
-fi
-# The fuzz targets (scripts/fuzz.sh) need clang with libFuzzer and the sanitizers.
-if [[ "${1:-}" == "--with-fuzz-tools" ]]; then
-  packages+=(clang libclang-rt-14-dev)
-fi
+# The fuzz targets and sanitizer builds (scripts/fuzz.sh, the asan preset)
+# need clang with libFuzzer and the sanitizers.
+for option in "$@"; do
+  case $option in
+    --with-test-tools) { command -v node && command -v npm; } >/dev/null || packages+=(nodejs npm) ;;
+    --with-fuzz-tools) packages+=(clang libclang-rt-14-dev) ;;
+    *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

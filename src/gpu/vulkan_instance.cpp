@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "gpu/driver_modules.hpp"
 
 namespace lbmshape::gpu {
 namespace {
@@ -111,6 +112,7 @@ VulkanInstance::VulkanInstance(bool validation)
     devices_.push_back(describe(physical[i], i));
     physicalDevices_.push_back(std::move(physical[i]));
   }
+  keepDriverModulesLoadedForLeakReports();
 }
 
 }  // namespace lbmshape::gpu

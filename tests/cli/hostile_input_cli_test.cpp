@@ -32,7 +32,7 @@ protected:
   {
     LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
     input_ = folder_ / (GetParam().name + GetParam().extension);
-    writeBytes(input_, GetParam().bytes);
+    writeBytes(input_, GetParam().bytes());
     writeMesh(testing::box({0, 0, 0}, {1, 1, 1}), folder_ / "cube.obj");
     fs::create_directory(folder_ / "out");
   }

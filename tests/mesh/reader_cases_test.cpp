@@ -22,7 +22,7 @@ class WellFormedFile : public ::testing::TestWithParam<MeshFileCase> {};
 TEST_P(WellFormedFile, ReadsAsTheClosedShapeItHolds)
 {
   const MeshFileCase& c = GetParam();
-  const TriangleMesh mesh = readMesh(MeshSource{c.bytes, c.name, std::nullopt}, formatOf(c));
+  const TriangleMesh mesh = readMesh(MeshSource{c.bytes(), c.name, std::nullopt}, formatOf(c));
   // A tetrahedron (1/6) or a unit cube (1), faces outward, whatever the variant.
   const double volume = meshio::signedVolume(mesh);
   EXPECT_TRUE(std::abs(volume - 1.0 / 6.0) < 1e-6 || std::abs(volume - 1.0) < 1e-6) << "volume " << volume;
@@ -33,9 +33,9 @@ TEST_P(WellFormedFile, ReadsTheSameFromAFile)
 {
   const MeshFileCase& c = GetParam();
   testing::ScratchFolder folder;
-  meshio::writeText(folder / (c.name + c.extension), c.bytes);
+  meshio::writeText(folder / (c.name + c.extension), c.bytes());
   const TriangleMesh fromFile = readMesh(folder / (c.name + c.extension));
-  const TriangleMesh fromMemory = readMesh(MeshSource{c.bytes, c.name, std::nullopt}, formatOf(c));
+  const TriangleMesh fromMemory = readMesh(MeshSource{c.bytes(), c.name, std::nullopt}, formatOf(c));
   EXPECT_EQ(fromFile.positions, fromMemory.positions);
   EXPECT_EQ(fromFile.triangles, fromMemory.triangles);
 }
@@ -62,7 +62,7 @@ void expectRefused(const std::function<void()>& read, const std::string& name, c
 TEST_P(HostileFile, IsAnInputErrorThatSaysWhatIsWrong)
 {
   const MeshFileCase& c = GetParam();
-  expectRefused([&] { readMesh(MeshSource{c.bytes, c.name, std::nullopt}, formatOf(c)); }, c.name, c.refusal);
+  expectRefused([&] { readMesh(MeshSource{c.bytes(), c.name, std::nullopt}, formatOf(c)); }, c.name, c.refusal);
 }
 
 TEST_P(HostileFile, IsRefusedTheSameWayFromAFile)
@@ -70,7 +70,7 @@ TEST_P(HostileFile, IsRefusedTheSameWayFromAFile)
   const MeshFileCase& c = GetParam();
   testing::ScratchFolder folder;
   const auto path = folder / (c.name + c.extension);
-  meshio::writeText(path, c.bytes);
+  meshio::writeText(path, c.bytes());
   expectRefused([&] { readMesh(path); }, path.string(), c.refusal);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{path.filename().string()}) << "nothing written";
 }

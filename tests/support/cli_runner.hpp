@@ -27,11 +27,14 @@ CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std:
 // starts under an address-space limit, so the tests that use one skip.
 constexpr bool addressSpaceLimitsWork()
 {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__)  // gcc
   return false;
-#else
-  return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+  return false;
 #endif
+#endif
+  return true;
 }
 #define LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS()                                                          \
   if (!::lbmshape::testing::addressSpaceLimitsWork())                                                         \

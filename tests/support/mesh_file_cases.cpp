@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -261,7 +262,7 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
       {"obj_line_continuations_and_comments", ".obj",
        "# a tetrahedron\nv 0 0 0 # the origin\nv 1 0 \\\n  0\nv 0 1 0\nv 0 0 1\nf 1 3 2 # base\nf 1 2 \\\n4\nf 1 4 3\nf 2 3 4\n",
        "", false},
-      {"obj_fan_of_one_repeated_vertex", ".obj", tetraObj + "f 1" + repeat(" 1", 200000) + "\n", "", true},
+      {"obj_fan_of_one_repeated_vertex", ".obj", [] { return tetraObj + "f 1" + repeat(" 1", 200000) + "\n"; }, "", true},
       {"ply_ascii_tetra", ".ply", plyAsciiTetra(tetraPlyFaces), "", false},
       {"ply_binary_little_endian_mixed_types", ".ply", plyBinaryTetra(false), "", false},
       {"ply_binary_big_endian_mixed_types", ".ply", plyBinaryTetra(true), "", false},
@@ -306,7 +307,7 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
          g.json["nodes"] = {{{"translation", {5, 0, 0}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {0, 2, 0}}}};
        }).glb(),
        "", false},
-      {"gltf_node_chain_100000_deep", ".gltf", nodeChain(100000).gltf(), "", true},
+      {"gltf_node_chain_100000_deep", ".gltf", [] { return nodeChain(100000).gltf(); }, "", true},
   };
   return cases;
 }
@@ -478,7 +479,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
          std::string text = Gltf::tetra().gltf();
          text.insert(1, "\"extras\":" + repeat("[", 50000) + repeat("]", 50000) + ",");
          return text;
-       }(),
+       },
        "nests more than 64 levels", true},
       {"gltf_buffer_uri_leaving_the_folder", ".gltf", Gltf::tetra().gltfWithUri("../../../../etc/passwd"),
        "leaves the glTF file's folder"},
@@ -500,7 +501,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
          for (int n = 0; n < 4000; ++n) nodes.push_back({{"mesh", 0}});
          g.json["nodes"] = nodes;
          return g.gltf();
-       }(),
+       },
        "more geometry than lbmshape reads", true},
       {"gltf_many_primitives_placed_many_times", ".gltf",
        [] {
@@ -514,7 +515,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
          g.json.erase("scenes");
          g.json.erase("scene");
          return g.gltf();
-       }(),
+       },
        "places its meshes 2000 times", true},
       {"gltf_two_buffers_on_one_file", ".gltf",
        [] {
@@ -553,7 +554,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
          std::string text = Gltf::tetra().gltf();
          text.insert(1, "\"extras\":[" + repeat("0,", 3000000) + "0],");
          return text;
-       }(),
+       },
        "more than a glTF file of this size needs", true},
       {"gltf_malformed_json", ".gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [", "JSON is malformed"},
       {"gltf_empty", ".gltf", "", "empty"},
@@ -571,6 +572,27 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "reads past the end of buffer view"},
   };
   return cases;
+}
+
+MeshFileCase::MeshFileCase(std::string name, std::string extension, std::string bytes, std::string refusal, bool large)
+    : name(std::move(name)), extension(std::move(extension)), refusal(std::move(refusal)), large(large),
+      bytes_(std::make_shared<Bytes>(Bytes{nullptr, std::move(bytes), true}))
+{
+}
+
+MeshFileCase::MeshFileCase(std::string name, std::string extension, Maker makeBytes, std::string refusal, bool large)
+    : name(std::move(name)), extension(std::move(extension)), refusal(std::move(refusal)), large(large),
+      bytes_(std::make_shared<Bytes>(Bytes{std::move(makeBytes), {}, false}))
+{
+}
+
+const std::string& MeshFileCase::bytes() const
+{
+  if (!bytes_->done) {
+    bytes_->made = bytes_->make();
+    bytes_->done = true;
+  }
+  return bytes_->made;
 }
 
 }  // namespace lbmshape::testing

@@ -1,9 +1,11 @@
 #include "lbm/relaxation.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "core/parameter_bounds.hpp"
 #include "lbm/d3q19.hpp"
 
@@ -35,6 +37,27 @@ void checkGamma(double gamma, const char* what)
             << " where the scheme is unstable; use at least 1e-7";
     throw UsageError(message.str());
   }
+}
+
+double startUpError(double gamma, long steps)
+{
+  const double tau = tauFromGamma(gamma);
+  const double decayed = std::pow(1.0 - 1.0 / tau, double(steps));
+  return (d3q19::soundSpeedSquared - 2.0 * gamma) * tau * (1.0 - decayed) / (2.0 * gamma * double(steps));
+}
+
+void warnIfInaccurate(double gamma, long steps, const char* what)
+{
+  if (steps < 1) return;
+  const double error = startUpError(gamma, steps);
+  if (std::abs(error) <= accurateStartUpError) return;
+  std::ostringstream message;
+  message << what << " = " << gamma << " over " << steps << (steps == 1 ? " step" : " steps") << " smooths "
+          << std::fixed << std::setprecision(1) << std::abs(error) * 100.0 << (error < 0 ? " % less" : " % more")
+          << " than the diffusion equation (2*gamma*steps) because every run starts in equilibrium; "
+          << (error < 0 ? "more steps at a smaller --gamma" : "more steps, or a --gamma nearer 1/6,") << " stay within "
+          << int(accurateStartUpError * 100) << " % (docs/lattice-theory.md, \"The first steps\")";
+  log::warning(message.str());
 }
 
 }  // namespace lbmshape::relaxation

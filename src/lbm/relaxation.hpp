@@ -20,4 +20,21 @@ inline double omegaFromGamma(double gamma) { return 1.0 / tauFromGamma(gamma); }
 // lattice to diffuse (core/parameter_bounds.hpp). `what` names the option.
 void checkGamma(double gamma, const char* what = "gamma");
 
+// How far `steps` steps started in equilibrium (f_i = w_i X, as every run
+// starts) miss the smoothing of the diffusion equation, as a fraction of it:
+// the variance of any pulse grows by 2 gamma n (1 + startUpError). The first
+// step always spreads by 1/3 voxel^2, whatever tau is, and the excess over
+// 2 gamma decays like (1 - 1/tau)^t (docs/lattice-theory.md derives it):
+//     startUpError = (1/3 - 2 gamma) tau (1 - (1 - 1/tau)^n) / (2 gamma n).
+// Negative: less smoothing than gamma * n promises (gamma above 1/6).
+double startUpError(double gamma, long steps);
+
+// Beyond this |startUpError| the commands warn that the run is outside the
+// range where the scheme follows the diffusion equation it stands for.
+inline constexpr double accurateStartUpError = 0.10;
+
+// That warning, on stderr, naming the option and what to change; silent
+// inside the accurate range.
+void warnIfInaccurate(double gamma, long steps, const char* what);
+
 }  // namespace lbmshape::relaxation

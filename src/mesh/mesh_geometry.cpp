@@ -32,6 +32,13 @@ std::vector<glm::dvec3> areaWeightedNormals(const TriangleMesh& mesh)
   return normals;
 }
 
+double surfaceArea(const TriangleMesh& mesh)
+{
+  double twice = 0.0;
+  for (const auto& t : mesh.triangles) twice += glm::length(triangleAreaVector(mesh, t));
+  return twice / 2.0;
+}
+
 double meanEdgeLength(const TriangleMesh& mesh)
 {
   if (mesh.triangles.empty()) return 0.0;

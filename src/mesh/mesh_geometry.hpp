@@ -25,6 +25,9 @@ bool isDegenerate(const TriangleMesh& mesh, const glm::uvec3& triangle);
 // area uses, or whose triangles' normals cancel out.
 std::vector<glm::dvec3> areaWeightedNormals(const TriangleMesh& mesh);
 
+// The sum of the triangles' areas.
+double surfaceArea(const TriangleMesh& mesh);
+
 // The mean length of the three edges of every triangle (an edge two
 // triangles share counts twice, a boundary edge once). 0 without triangles.
 double meanEdgeLength(const TriangleMesh& mesh);

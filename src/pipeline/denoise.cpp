@@ -215,6 +215,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
   checkDenoiseOptions(o);
+  relaxation::warnIfInaccurate(o.gamma, o.steps, "--gamma");
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output);
   StageClock clock;

@@ -14,9 +14,10 @@ namespace {
 constexpr size_t queueCapacity = 2;
 }
 
-FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount)
+FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
+                         Keep keep)
     : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
-      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size())))
+      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep)
 {
   thread_ = std::thread([this] { run(); });
 }
@@ -72,7 +73,7 @@ int FrameWriter::stop()
   queue_.clear();
   changed_.notify_all();
   changed_.wait(lock, [&] { return !busy_; });
-  return int(meshes_.size());
+  return written_;
 }
 double FrameWriter::extractMs() const
 {
@@ -123,7 +124,11 @@ void FrameWriter::run()
       previousField = job.second;
       std::lock_guard lock(mutex_);
       if (empty) emptyFrames_.push_back(job.first);
-      meshes_.push_back(std::move(mesh));
+      if (keep_ == Keep::LastFrame && !meshes_.empty())
+        meshes_.back() = std::move(mesh);
+      else
+        meshes_.push_back(std::move(mesh));
+      ++written_;
       extractMs_ += extractMs;
       writeMs_ += writeMs;
       busy_ = false;

@@ -26,8 +26,13 @@ using FrameField = std::variant<std::shared_ptr<const Volume>, std::shared_ptr<c
 
 class FrameWriter {
 public:
+  // Which meshes stay in memory once written: every frame's (for the
+  // animation, which holds them all), or only the latest (which the next
+  // frame repeats when its field is the same, and the morph's figures use).
+  enum class Keep { EveryFrame, LastFrame };
+
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
-  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount);
+  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep);
   ~FrameWriter();  // stops the thread; frames still queued are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -40,8 +45,9 @@ public:
   // milliseconds it waited. Rethrows an error of the writer thread.
   double push(int index, FrameField field);
 
-  // Waits until every queued frame is written; returns the meshes in frame
-  // order. Rethrows an error of the writer thread.
+  // Waits until every queued frame is written; returns the meshes kept, in
+  // frame order (with Keep::LastFrame, the last one alone). Rethrows an error
+  // of the writer thread.
   std::vector<TriangleMesh> finish();
 
   // A frame may have no surface where the shape passes through nothing on
@@ -66,6 +72,7 @@ private:
   std::string extension_;
   int frameCount_;
   int digits_;
+  Keep keep_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
@@ -74,6 +81,7 @@ private:
   bool busy_ = false;
   std::exception_ptr error_;
   std::vector<TriangleMesh> meshes_;
+  int written_ = 0;
   std::vector<int> emptyFrames_;
   double extractMs_ = 0.0, writeMs_ = 0.0;
   std::thread thread_;

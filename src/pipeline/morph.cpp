@@ -21,6 +21,7 @@
 #include "mesh/gltf_animation.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "pipeline/animation_memory.hpp"
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/morph_lattice.hpp"
@@ -220,7 +221,9 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!o.band || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, device, clock);
+  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, device, clock, [&] {
+    if (o.animation) checkAnimationFits(source, target, frame.voxel, o.frames);
+  });
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
   FolderIfLeftEmpty newFolder(folder);
@@ -230,7 +233,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   lattice->start(device, o, clock);
   SteppingSolver& solver = lattice->solver();
 
-  FrameWriter writer(frame, folder, "." + o.format, o.frames);
+  FrameWriter writer(frame, folder, "." + o.format, o.frames,
+                     o.animation ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame);
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
@@ -282,7 +286,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   StageClock::report("write", writer.writeMs());
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
-  interrupt::check(std::to_string(meshes.size()) + " complete frames in " + folder.string());
+  interrupt::check(std::to_string(o.frames) + " complete frames in " + folder.string());
   if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb"); });
   device.requireCleanValidation();
 

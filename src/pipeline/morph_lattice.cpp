@@ -14,9 +14,11 @@ namespace {
 
 class GridMorph final : public MorphLattice {
 public:
-  GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock)
+  GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock,
+            const std::function<void()>& beforeDistances)
       : frame_(frame)
   {
+    beforeDistances();
     source_ = clock.time("sdf", [&](Progress& p) { return signedDistance(source, frame, {.progress = &p}); });
     target_ = clock.time("sdf", [&](Progress& p) { return signedDistance(target, frame, {.progress = &p}); });
   }
@@ -75,7 +77,7 @@ private:
 class BandMorph final : public MorphLattice {
 public:
   BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, const MorphOptions& o,
-            const ComputeDevice& device, StageClock& clock)
+            const ComputeDevice& device, StageClock& clock, const std::function<void()>& beforeDistances)
       : frame_(frame)
   {
     const auto schedule = frameSchedule(o);
@@ -91,6 +93,7 @@ public:
       device.checkBandFits(*bricks, false, true);
       addBricksBetween(source, target, frame, *bricks);
       device.checkBandFits(*bricks, false, true);
+      beforeDistances();
       computeFields(source, target, bricks, progress);
     });
   }
@@ -209,10 +212,12 @@ private:
 
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options,
-                                               const ComputeDevice& device, StageClock& clock)
+                                               const ComputeDevice& device, StageClock& clock,
+                                               const std::function<void()>& beforeDistances)
 {
-  if (!options.band || options.noise.amplitude > 0.0) return std::make_unique<GridMorph>(source, target, frame, clock);
-  return std::make_unique<BandMorph>(source, target, frame, options, device, clock);
+  if (!options.band || options.noise.amplitude > 0.0)
+    return std::make_unique<GridMorph>(source, target, frame, clock, beforeDistances);
+  return std::make_unique<BandMorph>(source, target, frame, options, device, clock, beforeDistances);
 }
 
 }  // namespace lbmshape

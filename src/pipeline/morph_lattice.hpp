@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -43,9 +44,12 @@ public:
 // amplitude is a fraction of the field's largest value over the whole
 // grid), else the grid. Computes both signed distance fields, as the "sdf"
 // stage of `clock`; a band that would not fit `device` is refused as soon
-// as its bricks are known.
+// as its bricks are known. `beforeDistances` runs once the lattice is known
+// to fit and before the distances: the morph's other checks go there, so
+// that a job too large for the device says so first.
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options,
-                                               const ComputeDevice& device, StageClock& clock);
+                                               const ComputeDevice& device, StageClock& clock,
+                                               const std::function<void()>& beforeDistances);
 
 }  // namespace lbmshape

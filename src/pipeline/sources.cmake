@@ -1,4 +1,5 @@
 target_sources(lbmshape_lib PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/animation_memory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/compute_device.cpp
   ${CMAKE_CURRENT_LIST_DIR}/denoise.cpp
   ${CMAKE_CURRENT_LIST_DIR}/field_noise.cpp

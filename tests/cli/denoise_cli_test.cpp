@@ -197,6 +197,27 @@ TEST(DenoiseCli, ABandTooLargeForTheDeviceIsRefusedBeforeItsDistances)
 
 // Writing over the input mesh, by its own path or through a link, is
 // refused before any work unless asked for with --force.
+TEST(DenoiseCli, WarnsOnlyWhenGammaAndStepsAreOutsideTheAccurateRange)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const std::string output = (folder.path() / "out.glb").string();
+  const testing::CliResult defaults = testing::runLbmshape({"denoise", input, output, "--res", "24", "--force"});
+  ASSERT_EQ(defaults.exitCode, 0) << defaults.err;
+  EXPECT_EQ(defaults.err.find("warning"), std::string::npos) << defaults.err;
+
+  const testing::CliResult fewSteps =
+      testing::runLbmshape({"denoise", input, output, "--res", "24", "--gamma", "1", "--steps", "3", "--force"});
+  ASSERT_EQ(fewSteps.exitCode, 0) << fewSteps.err;
+  std::vector<std::string> warnings;
+  for (const std::string& line : testing::nonEmptyLines(fewSteps.err))
+    if (line.rfind("lbmshape: warning: ", 0) == 0) warnings.push_back(line);
+  ASSERT_EQ(warnings.size(), 1u) << fewSteps.err;
+  EXPECT_NE(warnings[0].find("--gamma = 1 over 3 steps smooths 61.8 % less than the diffusion equation"), std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("more steps at a smaller --gamma"), std::string::npos) << warnings[0];
+}
+
 TEST(DenoiseCli, TheOutputIsNotTheInputUnlessForced)
 {
   testing::ScratchFolder folder;

@@ -134,6 +134,24 @@ TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
   }
 }
 
+TEST(MemoryPressure, AnAnimationThatCannotFitIsRefusedBeforeAnyWorkSayingWhatWould)
+{
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
+  // 100,000 frames of a sphere 90 voxels across: hundreds of GB of meshes.
+  const auto result = testing::runLbmshapeWithin(
+      1000, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(), (folder / "frames").string(), "--res",
+             "96", "--frames", "100000"});
+  EXPECT_EQ(result.exitCode, 5) << result.err;
+  const auto lines = testing::nonEmptyLines(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("the 100000 frames of morph.glb need about"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("frames would fit, or give --no-animation"), std::string::npos) << lines[0];
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"a.obj", "b.obj"})) << "nothing written";
+}
+
 TEST(StandardOutput, ResultsThatCannotBeWrittenAreAnOutputError)
 {
   testing::ScratchFolder folder;

@@ -16,7 +16,7 @@ std::string fitError(const Extent3& extent, const gpu::DeviceDescription& device
 {
   try {
     checkFitsDevice(latticeLayout(extent), device);
-  } catch (const UsageError& e) {
+  } catch (const DeviceError& e) {
     return e.what();
   }
   return "";

@@ -1,4 +1,5 @@
 lbmshape_test(pipeline_tests
+  ${CMAKE_CURRENT_LIST_DIR}/animation_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_denoise_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_morph_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/denoise_test.cpp

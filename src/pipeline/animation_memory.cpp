@@ -1,0 +1,37 @@
+#include "pipeline/animation_memory.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/host_memory.hpp"
+#include "core/memory_sizes.hpp"
+#include "mesh/mesh_geometry.hpp"
+
+namespace lbmshape {
+namespace {
+
+// The shapes in between may have more area than either end.
+constexpr double areaMargin = 1.5;
+
+}  // namespace
+
+double animationBytes(double areaInVoxels, int frames)
+{
+  return areaMargin * areaInVoxels * trianglesPerVoxelArea * animationBytesPerTriangle * double(frames);
+}
+
+void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames)
+{
+  const double area = std::max(surfaceArea(source), surfaceArea(target)) / (voxel * voxel);
+  const double needed = animationBytes(area, frames);
+  const double allowed = double(hostMemoryBytes());
+  if (needed <= allowed) return;
+  const int fit = int(std::floor(allowed / animationBytes(area, 1) * 0.95));
+  throw DeviceError("the " + std::to_string(frames) + " frames of morph.glb need about " + mebibytes(uint64_t(needed)) +
+                    " but this machine allows " + mebibytes(uint64_t(allowed)) + "; " +
+                    (fit >= 2 ? "about " + std::to_string(fit) + " frames would fit" : "not even 2 frames would fit") +
+                    ", or give --no-animation (the frame files alone need no more memory than one frame)");
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,34 @@
+// The morph keeps every frame's mesh in memory for morph.glb, which is written
+// after the last frame: at a fine grid and many frames that is more than the
+// lattice. This estimates it from the shapes before any work, and refuses a
+// morph whose animation cannot fit, saying how many frames would.
+#pragma once
+
+#include <cstdint>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// Marching cubes cuts a surface into about this many triangles per voxel^2
+// of its area (tests/pipeline/animation_memory_test.cpp measures it on a
+// sphere and a torus).
+inline constexpr double trianglesPerVoxelArea = 3.0;
+// Per triangle of every frame: the mesh kept (positions, triangles) and the
+// glTF buffers built from it (positions, normals, indices); measured as the
+// peak RSS of a morph with the animation less that of one without, over the
+// triangles of all its frames (docs/morphing.md).
+inline constexpr double animationBytesPerTriangle = 60.0;  // 57 measured at --res 128, 48 frames
+
+// Host bytes of an animation of `frames` frames of a surface of
+// `areaInVoxels` (voxel side = 1): the frames' meshes and morph.glb's
+// buffers while it is assembled.
+double animationBytes(double areaInVoxels, int frames);
+
+// Throws DeviceError (exit 5) when animationBytes for the larger of the two
+// shapes' areas, at this voxel size, exceeds what the host allows: "the N
+// frames of morph.glb need about X MiB but this machine allows Y MiB; about
+// K frames would fit, or give --no-animation".
+void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames);
+
+}  // namespace lbmshape

@@ -1,0 +1,52 @@
+// The morph refuses an animation that cannot fit in memory before any work,
+// from an estimate of its triangles (pipeline/animation_memory): marching
+// cubes must cut a surface into about trianglesPerVoxelArea triangles per
+// voxel^2, whatever the shape and its size.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_geometry.hpp"
+#include "pipeline/animation_memory.hpp"
+#include "support/implicit_fields.hpp"
+#include "surface/marching_cubes.hpp"
+
+namespace lbmshape {
+namespace {
+
+struct Shape {
+  const char* name;
+  testing::ImplicitFunction sdf;
+  double exactArea;  // voxels^2
+};
+
+TEST(AnimationMemory, MarchingCubesMakesTheTrianglesPerVoxelAreaTheEstimateAssumes)
+{
+  constexpr double pi = std::numbers::pi;
+  const glm::dvec3 centre(32.3, 32.6, 32.1);
+  const Shape shapes[] = {
+      {"sphere of radius 6", [&](const glm::dvec3& p) { return testing::sphereSdf(p, centre, 6.0); }, 4 * pi * 36.0},
+      {"sphere of radius 25", [&](const glm::dvec3& p) { return testing::sphereSdf(p, centre, 25.0); }, 4 * pi * 625.0},
+      {"torus 20 x 6", [&](const glm::dvec3& p) { return testing::torusSdf(p, centre, 20.0, 6.0); },
+       4 * pi * pi * 20.0 * 6.0},
+  };
+  const GridFrame frame = testing::cubicFrame({65, 65, 65});
+  for (const Shape& shape : shapes) {
+    const TriangleMesh mesh = extractSurface(testing::sampleImplicit(frame, shape.sdf), frame);
+    EXPECT_NEAR(surfaceArea(mesh) / shape.exactArea, 1.0, 0.03) << shape.name << ": the area itself";
+    const double perVoxelArea = double(mesh.triangleCount()) / shape.exactArea;
+    EXPECT_NEAR(perVoxelArea / trianglesPerVoxelArea, 1.0, 0.15) << shape.name << ": " << perVoxelArea;
+  }
+}
+
+TEST(AnimationMemory, GrowsWithFramesAndArea)
+{
+  EXPECT_DOUBLE_EQ(animationBytes(1000.0, 20), 2.0 * animationBytes(1000.0, 10));
+  EXPECT_DOUBLE_EQ(animationBytes(2000.0, 10), 2.0 * animationBytes(1000.0, 10));
+  EXPECT_GT(animationBytes(1000.0, 1), 1000.0 * trianglesPerVoxelArea * animationBytesPerTriangle)
+      << "with a margin for the shapes in between";
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -10,3 +10,4 @@ lbmshape_test(cli_tests
   ${CMAKE_CURRENT_LIST_DIR}/morph_empty_frames_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/usage_errors_test.cpp
 )
+add_dependencies(cli_tests lbmshape)  # they run the binary

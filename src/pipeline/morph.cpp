@@ -239,7 +239,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
   const std::function<std::string()> whatWasDone = [&] {
-    return std::to_string(writer.stop()) + " complete frames in " + folder.string();
+    return std::to_string(writer.stop()) + " complete frames in " + folder.string() + " (at step " +
+           std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.back()) + ")";
   };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;

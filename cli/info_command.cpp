@@ -2,19 +2,12 @@
 
 #include <iomanip>
 #include <iostream>
-#include <sstream>
 
+#include "core/memory_sizes.hpp"
 #include "gpu/vulkan_instance.hpp"
 
 namespace lbmshape::cli {
 namespace {
-
-std::string mebibytes(uint64_t bytes)
-{
-  std::ostringstream s;
-  s << bytes / (1024 * 1024) << " MiB";
-  return s.str();
-}
 
 nlohmann::json describe(const gpu::DeviceDescription& d, bool selected)
 {

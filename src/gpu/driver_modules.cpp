@@ -3,20 +3,13 @@
 #include <dlfcn.h>
 #include <link.h>
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LBMSHAPE_LEAK_CHECKED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define LBMSHAPE_LEAK_CHECKED 1
-#endif
+#include "core/address_sanitizer.hpp"
 
 namespace lbmshape::gpu {
 
 void keepDriverModulesLoadedForLeakReports()
 {
-#ifdef LBMSHAPE_LEAK_CHECKED
+  if (!builtWithAddressSanitizer) return;
   // RTLD_NOLOAD only marks modules already loaded; a second dlopen with
   // RTLD_NODELETE makes the loader's later dlclose leave them mapped.
   dl_iterate_phdr(
@@ -25,7 +18,6 @@ void keepDriverModulesLoadedForLeakReports()
         return 0;
       },
       nullptr);
-#endif
 }
 
 }  // namespace lbmshape::gpu

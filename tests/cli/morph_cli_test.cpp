@@ -166,13 +166,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 using testing::spawnLbmshape;
 
-bool waitForFile(const fs::path& file, std::chrono::seconds limit)
-{
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!fs::exists(file) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  return fs::exists(file);
-}
+using testing::waitForFile;
 
 using testing::waitForExit;
 

@@ -99,9 +99,7 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
                                             "--no-animation"},
                                            log.string());
   ASSERT_GT(pid, 0);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "frame_0004.obj") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  testing::waitForFile(out / "frame_0004.obj", std::chrono::seconds(60));
   kill(pid, SIGTERM);
   const int status = testing::waitForExit(pid, std::chrono::seconds(30));
   ASSERT_TRUE(WIFEXITED(status));
@@ -159,9 +157,7 @@ TEST(StopSignal, AnIgnoredHangUpStaysIgnored)
                                             "--no-animation"});
   sigaction(SIGHUP, &previous, nullptr);
   ASSERT_GT(pid, 0);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "frame_0001.obj") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  testing::waitForFile(out / "frame_0001.obj", std::chrono::seconds(60));
   kill(pid, SIGHUP);
   const int status = testing::waitForExit(pid, std::chrono::seconds(60));
   ASSERT_TRUE(WIFEXITED(status));

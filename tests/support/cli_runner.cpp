@@ -110,4 +110,12 @@ int waitForExit(pid_t pid, std::chrono::milliseconds limit)
   return status;
 }
 
+bool waitForFile(const std::filesystem::path& file, std::chrono::milliseconds limit)
+{
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!std::filesystem::exists(file) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return std::filesystem::exists(file);
+}
+
 }  // namespace lbmshape::testing

@@ -5,8 +5,11 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include "core/address_sanitizer.hpp"
 
 namespace lbmshape::testing {
 
@@ -25,17 +28,7 @@ CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std:
 // False in a build with AddressSanitizer, which reserves terabytes of
 // address space for its shadow memory up front: no lbmshape of that build
 // starts under an address-space limit, so the tests that use one skip.
-constexpr bool addressSpaceLimitsWork()
-{
-#if defined(__SANITIZE_ADDRESS__)  // gcc
-  return false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)  // clang
-  return false;
-#endif
-#endif
-  return true;
-}
+constexpr bool addressSpaceLimitsWork() { return !builtWithAddressSanitizer; }
 #define LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS()                                                          \
   if (!::lbmshape::testing::addressSpaceLimitsWork())                                                         \
   GTEST_SKIP() << "AddressSanitizer reserves its shadow memory as address space: ulimit -v cannot apply here"
@@ -48,6 +41,10 @@ pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFi
 // The wait status of `pid`; a test failure, and the process killed, if it
 // still runs after `limit` (a failing test must not hang).
 int waitForExit(pid_t pid, std::chrono::milliseconds limit);
+
+// Waits until `file` exists (a spawned lbmshape has written that far), at
+// most `limit`; whether it exists.
+bool waitForFile(const std::filesystem::path& file, std::chrono::milliseconds limit);
 
 // Path of the lbmshape binary under test.
 std::string lbmshapeBinary();

@@ -12,8 +12,9 @@
 namespace lbmshape {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr uint32_t kLeafSize = 4;
+// Named apart from triangle_bvh.cpp's constants: the two share a unity file.
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+constexpr uint32_t kEdgesPerLeaf = 4;
 
 struct PositionHash {
   size_t operator()(const glm::dvec3& p) const
@@ -89,14 +90,14 @@ void WindingGradientBound::build()
     tasks.pop_back();
     const uint32_t index = uint32_t(nodes_.size());
     if (task.parent != kNone) nodes_[task.parent].first = index;
-    Node node{glm::dvec3(kInfinity), glm::dvec3(-kInfinity), 0.0, task.begin, task.end - task.begin};
+    Node node{glm::dvec3(kUnbounded), glm::dvec3(-kUnbounded), 0.0, task.begin, task.end - task.begin};
     for (uint32_t i = task.begin; i < task.end; ++i) {
       node.lo = glm::min(node.lo, glm::min(edges_[i].a, edges_[i].b));
       node.hi = glm::max(node.hi, glm::max(edges_[i].a, edges_[i].b));
       node.weight += edges_[i].weight;
     }
     nodes_.push_back(node);
-    if (node.count <= kLeafSize) continue;
+    if (node.count <= kEdgesPerLeaf) continue;
     // Median split on the longest side: halves the count, so the depth is logarithmic.
     const glm::dvec3 size = node.hi - node.lo;
     const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
@@ -130,7 +131,7 @@ double WindingGradientBound::over(const glm::dvec3& lo, const glm::dvec3& hi, do
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Edge& e = edges_[i];
         const double d2 = boxBoxDistance2(lo, hi, glm::min(e.a, e.b), glm::max(e.a, e.b));
-        if (!(d2 > 0.0)) return kInfinity;
+        if (!(d2 > 0.0)) return kUnbounded;
         sum += scale * e.weight / d2;
       }
     } else {

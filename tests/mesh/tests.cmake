@@ -11,8 +11,6 @@ lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/round_trip_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_reading_test.cpp
 )
-if(NOT LBMSHAPE_READERS_ONLY)  # the sanitized readers build runs the core reader tests only
-  lbmshape_shared_asset_test(mesh_shared_asset_tests
-    ${CMAKE_CURRENT_LIST_DIR}/shared_meshes_test.cpp
-  )
-endif()
+lbmshape_shared_asset_test(mesh_shared_asset_tests
+  ${CMAKE_CURRENT_LIST_DIR}/shared_meshes_test.cpp
+)

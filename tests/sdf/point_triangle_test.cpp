@@ -14,12 +14,6 @@
 namespace lbmshape {
 namespace {
 
-glm::dvec3 randomPoint(std::mt19937& rng, double scale)
-{
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return {u(rng), u(rng), u(rng)};
-}
-
 TriangleMesh single(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
   TriangleMesh mesh;
@@ -35,7 +29,7 @@ void expectMatchesOracle(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
 {
   const TriangleMesh mesh = single(a, b, c);
   for (int k = 0; k < 200; ++k) {
-    const glm::dvec3 p = randomPoint(rng, 2.0);
+    const glm::dvec3 p = testing::sdf::randomPoint(rng, 2.0);
     const glm::dvec3 q = closestPointOnTriangle(p, a, b, c);
     ASSERT_NEAR(glm::length(q - p), testing::sdf::bruteForceDistance(mesh, p), tolerance)
         << "triangle (" << a.x << " " << a.y << " " << a.z << ") ... point " << p.x << " " << p.y << " " << p.z;
@@ -48,7 +42,7 @@ TEST(ClosestPointOnTriangle, MatchesProjectionOracleOnRandomTriangles)
 {
   std::mt19937 rng(1);
   for (int t = 0; t < 200; ++t) {
-    const glm::dvec3 a = randomPoint(rng, 1.0), b = randomPoint(rng, 1.0), c = randomPoint(rng, 1.0);
+    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0), c = testing::sdf::randomPoint(rng, 1.0);
     expectMatchesOracle(a, b, c, rng);
   }
 }
@@ -80,7 +74,7 @@ TEST(SolidAngle, SumsToFourPiInsideAClosedSurfaceAndZeroOutside)
   const TriangleMesh sphere = testing::icosphere(2, 1.0);
   std::mt19937 rng(3);
   for (int k = 0; k < 50; ++k) {
-    const glm::dvec3 p = randomPoint(rng, 1.5);
+    const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.5);
     double sum = 0.0;
     for (const auto& t : sphere.triangles)
       sum += solidAngle(p, sphere.positions[t.x], sphere.positions[t.y], sphere.positions[t.z]);
@@ -97,8 +91,8 @@ TEST(SolidAngle, MatchesSphericalExcessOracle)
 {
   std::mt19937 rng(4);
   for (int k = 0; k < 500; ++k) {
-    const glm::dvec3 a = randomPoint(rng, 1.0), b = randomPoint(rng, 1.0), c = randomPoint(rng, 1.0);
-    const glm::dvec3 p = randomPoint(rng, 1.0);
+    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0), c = testing::sdf::randomPoint(rng, 1.0);
+    const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.0);
     EXPECT_NEAR(solidAngle(p, a, b, c) / (4.0 * std::numbers::pi),
                 testing::sdf::bruteForceWindingNumber(single(a, b, c), p), 1e-9);
   }

@@ -91,4 +91,10 @@ double bruteForceWindingNumber(const TriangleMesh& mesh, const glm::dvec3& p)
   return sum / (4.0 * std::numbers::pi);
 }
 
+glm::dvec3 randomPoint(std::mt19937& rng, double scale)
+{
+  std::uniform_real_distribution<double> u(-scale, scale);
+  return {u(rng), u(rng), u(rng)};
+}
+
 }  // namespace lbmshape::testing::sdf

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <random>
 
 #include <glm/glm.hpp>
 
@@ -20,6 +21,9 @@ TriangleMesh withHoles(const TriangleMesh& mesh, size_t count, uint32_t seed);
 // mesh: the polygon lies between this radius and the sphere's (the faces
 // sag below the sphere by at most the difference).
 double innerRadius(const TriangleMesh& sphere, const glm::dvec3& centre);
+
+// A point drawn uniformly from the cube [-scale, scale]³.
+glm::dvec3 randomPoint(std::mt19937& rng, double scale);
 
 // Oracles. Exact distance to the mesh by projection onto each triangle's
 // plane (barycentric test) or else its three edges, over all triangles.

@@ -14,12 +14,6 @@
 namespace lbmshape {
 namespace {
 
-glm::dvec3 randomPoint(std::mt19937& rng, double scale)
-{
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return {u(rng), u(rng), u(rng)};
-}
-
 // Small random triangles scattered in a cube, some of them degenerate: no
 // structure a hierarchy could lean on.
 TriangleMesh randomSoup(size_t count, uint32_t seed)
@@ -27,12 +21,12 @@ TriangleMesh randomSoup(size_t count, uint32_t seed)
   std::mt19937 rng(seed);
   TriangleMesh mesh;
   for (size_t t = 0; t < count; ++t) {
-    const glm::dvec3 c = randomPoint(rng, 1.0);
+    const glm::dvec3 c = testing::sdf::randomPoint(rng, 1.0);
     const uint32_t v = uint32_t(mesh.positions.size());
-    mesh.positions.push_back(c + randomPoint(rng, 0.1));
-    mesh.positions.push_back(t % 17 == 0 ? mesh.positions.back() : c + randomPoint(rng, 0.1));  // repeated vertex
+    mesh.positions.push_back(c + testing::sdf::randomPoint(rng, 0.1));
+    mesh.positions.push_back(t % 17 == 0 ? mesh.positions.back() : c + testing::sdf::randomPoint(rng, 0.1));  // repeated vertex
     mesh.positions.push_back(t % 13 == 0 ? 0.5 * (mesh.positions[v] + mesh.positions[v + 1])     // collinear
-                                         : c + randomPoint(rng, 0.1));
+                                         : c + testing::sdf::randomPoint(rng, 0.1));
     mesh.triangles.push_back({v, v + 1, v + 2});
   }
   return mesh;
@@ -46,7 +40,7 @@ TEST(TriangleBvh, ClosestMatchesBruteForce)
     const TriangleBvh bvh(mesh);
     std::mt19937 rng(2);
     for (int k = 0; k < 300; ++k) {
-      const glm::dvec3 p = randomPoint(rng, k % 3 == 0 ? 4.0 : 1.2);
+      const glm::dvec3 p = testing::sdf::randomPoint(rng, k % 3 == 0 ? 4.0 : 1.2);
       const TriangleBvh::Closest c = bvh.closest(p);
       ASSERT_NEAR(c.distance, testing::sdf::bruteForceDistance(mesh, p), 1e-12);
       EXPECT_NEAR(glm::length(c.point - p), c.distance, 1e-12);
@@ -68,7 +62,7 @@ TEST(TriangleBvh, BoundedSearchIsExactWithinTheBoundAndEmptyBeyondIt)
   const TriangleBvh bvh(mesh);
   std::mt19937 rng(4);
   for (int k = 0; k < 300; ++k) {
-    const glm::dvec3 p = randomPoint(rng, 1.5);
+    const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.5);
     const double exact = testing::sdf::bruteForceDistance(mesh, p);
     EXPECT_NEAR(bvh.closest(p, exact).distance, exact, 1e-12);  // a bound equal to the answer still finds it
     EXPECT_NEAR(bvh.closest(p, exact * 1.5 + 0.01).distance, exact, 1e-12);
@@ -102,7 +96,7 @@ TEST(TriangleBvh, FastWindingNumberMatchesExactAwayFromTheSurface)
     double worst = 0.0, sum = 0.0;
     int counted = 0;
     for (int k = 0; k < 400; ++k) {
-      const glm::dvec3 p = randomPoint(rng, 1.6);
+      const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.6);
       if (bvh.closest(p).distance < 0.01) continue;  // within about 1/200 of the size of the mesh
       const double error = std::abs(bvh.windingNumber(p) - bvh.exactWindingNumber(p));
       worst = std::max(worst, error);
@@ -122,7 +116,7 @@ TEST(TriangleBvh, ExactWindingNumberAgreesWithSphericalExcessOracle)
   const TriangleBvh bvh(mesh);
   std::mt19937 rng(9);
   for (int k = 0; k < 100; ++k) {
-    const glm::dvec3 p = randomPoint(rng, 1.5);
+    const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.5);
     EXPECT_NEAR(bvh.exactWindingNumber(p), testing::sdf::bruteForceWindingNumber(mesh, p), 1e-9);
   }
 }

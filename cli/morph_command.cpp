@@ -22,6 +22,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (a.stepsPerFrameGiven->count()) a.options.stepsPerFrame = a.stepsPerFrame;
   if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
+  a.options.frameFigures = common.json;  // only the JSON report shows them
   checkMorphOptions(a.options);  // before the device is opened
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
   common.report(report);
@@ -53,14 +54,16 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--cs", a->options.cs, "Morphing speed Cs of the force Cs (X_target - X)")->capture_default_str();
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
   cmd->add_option("--frames", a->options.frames, "Frames, the source and the result included")->capture_default_str();
-  a->stepsPerFrameGiven = cmd->add_option("--steps-per-frame", a->stepsPerFrame, "Lattice steps between frames (default 1)");
-  a->stepsGiven = cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames (at least 1)")
+  a->stepsPerFrameGiven = cmd->add_option("--steps-per-frame", a->stepsPerFrame,
+                                          "Lattice steps between frames, constant gamma and Cs (the paper's scheme); "
+                                          "by default the morph runs until it arrives at the target");
+  a->stepsGiven = cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames, constant gamma and Cs")
                       ->excludes(a->stepsPerFrameGiven);
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
   cmd->add_option("--tolerance", a->options.tolerance,
-                  "Converged when max |X - X_target| near the target is below this (voxels); later frames repeat it")
+                  "Converged when max |X - X_target| within a voxel of the target is below this (voxels)")
       ->capture_default_str();
   cmd->add_flag("--force", a->options.force, "Write into a folder that is not empty (replacing earlier frames)");
   cmd->add_option("--noise", a->options.noise.amplitude, "The paper's noise on the source's distance field (0.05 = 5%)")

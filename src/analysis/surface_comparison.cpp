@@ -90,7 +90,7 @@ DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target,
 SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, const ComparisonOptions& options)
 {
   // The trees validate both meshes (indices, finite positions) before any sampling.
-  const TriangleBvh treeA(a), treeB(b);
+  const TriangleBvh treeA(a, TriangleBvh::Queries::ClosestOnly), treeB(b, TriangleBvh::Queries::ClosestOnly);
   if (!hasArea(a)) throw InputError("the first surface to compare has no triangle with area");
   if (!hasArea(b)) throw InputError("the second surface to compare has no triangle with area");
   SurfaceComparison result;
@@ -101,6 +101,18 @@ SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, 
   result.rms = std::sqrt(0.5 * (result.aToB.rms * result.aToB.rms + result.bToA.rms * result.bToA.rms));
   result.meanNormalAngle = 0.5 * (result.aToB.meanNormalAngle + result.bToA.meanNormalAngle);
   return result;
+}
+
+DistanceToSurface::DistanceToSurface(const TriangleMesh& target, TriangleBvh::Build how)
+    : target_(target), tree_(target, TriangleBvh::Queries::ClosestOnly, how)
+{
+  if (!hasArea(target)) throw InputError("the surface to measure against has no triangle with area");
+}
+
+DirectedDistance DistanceToSurface::from(const TriangleMesh& source, const ComparisonOptions& options) const
+{
+  if (!hasArea(source)) throw InputError("the surface to measure has no triangle with area");
+  return measure(source, target_, tree_, options);
 }
 
 }  // namespace lbmshape

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "mesh/triangle_mesh.hpp"
+#include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 
@@ -52,5 +53,18 @@ struct SurfaceComparison {
 // same seed, so swapping a and b swaps aToB and bToA exactly. Throws InputError when a
 // mesh has no area, a bad index or a non-finite position.
 SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, const ComparisonOptions& options = {});
+
+// Distances from many surfaces to one (a morph's frames to its target): the
+// target's tree is built once. from(source) is compareSurfaces' aToB for
+// (source, target). Keeps a reference to `target`. `how`: see TriangleBvh.
+class DistanceToSurface {
+public:
+  explicit DistanceToSurface(const TriangleMesh& target, TriangleBvh::Build how = TriangleBvh::Build::Parallel);
+  DirectedDistance from(const TriangleMesh& source, const ComparisonOptions& options) const;
+
+private:
+  const TriangleMesh& target_;
+  TriangleBvh tree_;
+};
 
 }  // namespace lbmshape

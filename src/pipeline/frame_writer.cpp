@@ -15,9 +15,10 @@ constexpr size_t queueCapacity = 2;
 }
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
-                         Keep keep)
+                         Keep keep, Inspect inspect)
     : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
-      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep)
+      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
+      inspect_(std::move(inspect))
 {
   thread_ = std::thread([this] { run(); });
 }
@@ -85,6 +86,11 @@ double FrameWriter::writeMs() const
   std::lock_guard lock(mutex_);
   return writeMs_;
 }
+double FrameWriter::inspectMs() const
+{
+  std::lock_guard lock(mutex_);
+  return inspectMs_;
+}
 
 void FrameWriter::run()
 {
@@ -121,6 +127,9 @@ void FrameWriter::run()
       Stopwatch write;
       writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed);
       const double writeMs = write.ms();
+      Stopwatch inspect;
+      if (inspect_) inspect_(job.first, mesh);
+      const double inspectMs = inspect.ms();
       previousField = job.second;
       std::lock_guard lock(mutex_);
       if (empty) emptyFrames_.push_back(job.first);
@@ -131,6 +140,7 @@ void FrameWriter::run()
       ++written_;
       extractMs_ += extractMs;
       writeMs_ += writeMs;
+      inspectMs_ += inspectMs;
       busy_ = false;
     } catch (...) {
       std::lock_guard lock(mutex_);

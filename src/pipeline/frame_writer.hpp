@@ -8,6 +8,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -31,8 +32,13 @@ public:
   // frame repeats when its field is the same, and the morph's figures use).
   enum class Keep { EveryFrame, LastFrame };
 
+  // Runs on the writer's thread after frame k's file is written, with its
+  // mesh (the morph's per-frame figures).
+  using Inspect = std::function<void(int frame, const TriangleMesh& mesh)>;
+
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
-  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep);
+  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep,
+              Inspect inspect = {});
   ~FrameWriter();  // stops the thread; frames still queued are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -62,6 +68,7 @@ public:
   int stop();
   double extractMs() const;
   double writeMs() const;
+  double inspectMs() const;
 
 private:
   void run();
@@ -73,6 +80,7 @@ private:
   int frameCount_;
   int digits_;
   Keep keep_;
+  Inspect inspect_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
@@ -83,7 +91,7 @@ private:
   std::vector<TriangleMesh> meshes_;
   int written_ = 0;
   std::vector<int> emptyFrames_;
-  double extractMs_ = 0.0, writeMs_ = 0.0;
+  double extractMs_ = 0.0, writeMs_ = 0.0, inspectMs_ = 0.0;
   std::thread thread_;
 };
 

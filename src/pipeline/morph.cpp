@@ -24,7 +24,9 @@
 #include "pipeline/animation_memory.hpp"
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
+#include "pipeline/morph_frame_report.hpp"
 #include "pipeline/morph_lattice.hpp"
+#include "pipeline/morph_schedule.hpp"
 #include "pipeline/stage_clock.hpp"
 
 namespace lbmshape {
@@ -32,8 +34,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Cells within this many voxels of the target's surface decide convergence.
-constexpr float convergenceBand = 2.0f;
+// Cells within this many voxels of the target's surface decide convergence:
+// those whose values place the surface (marching cubes interpolates between
+// the cells on either side of it).
+constexpr float convergenceBand = 1.0f;
 
 const char* alignmentName(Alignment a)
 {
@@ -196,20 +200,10 @@ void checkMorphOptions(const MorphOptions& o)
   checkGridAndNoise(o.grid, o.noise);
 }
 
-std::vector<int> frameSchedule(const MorphOptions& o)
-{
-  const int intervals = o.frames - 1;
-  const long total = o.steps ? *o.steps : long(o.stepsPerFrame.value_or(1)) * intervals;
-  std::vector<int> steps(size_t(o.frames));
-  for (int k = 0; k < o.frames; ++k) steps[size_t(k)] = int(std::lround(double(total) * k / intervals));
-  return steps;
-}
-
 nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
                           const MorphOptions& o, const ComputeDevice& device)
 {
   checkMorphOptions(o);
-  const std::vector<int> schedule = frameSchedule(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
   StageClock clock;
 
@@ -221,11 +215,23 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!o.band || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 
-  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, device, clock, [&] {
+  // Before the fields are known, the longest the morph could run: no two
+  // distances on the grid differ by more than its diagonal.
+  const double gridDiagonal = std::sqrt(double(frame.extent.nx) * frame.extent.nx +
+                                        double(frame.extent.ny) * frame.extent.ny + double(frame.extent.nz) * frame.extent.nz);
+  const MorphSchedule longest = stepsGiven(o) ? MorphSchedule::fixed(o) : MorphSchedule::arriving(o, gridDiagonal);
+  const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, longest, device, clock, [&] {
     if (o.animation) checkAnimationFits(source, target, frame.voxel, o.frames);
   });
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
+  const double initialError = lattice->sourceErrorNearTarget(convergenceBand);
+  const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
+  const std::vector<int>& frameSteps = schedule.frameSteps();
+  if (!stepsGiven(o))
+    log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
+                 std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
+  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame.voxel, o.frames);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
   if (!lock) lock.emplace(folder);
@@ -234,13 +240,24 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   SteppingSolver& solver = lattice->solver();
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames,
-                     o.animation ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame);
+                     o.animation ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame,
+                     o.frameFigures ? FrameWriter::Inspect([&](int k, const TriangleMesh& mesh) { frameReport.surface(k, mesh); })
+                                    : FrameWriter::Inspect());
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
   const std::function<std::string()> whatWasDone = [&] {
     return std::to_string(writer.stop()) + " complete frames in " + folder.string() + " (at step " +
-           std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.back()) + ")";
+           std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
+  };
+  // Steps up to `step`, gamma following the schedule.
+  const auto advanceTo = [&](int step) {
+    while (solver.stepsTaken() < step) {
+      const int now = solver.stepsTaken();
+      lattice->setGamma(schedule.gammaAt(now));
+      if (now == 0 || schedule.csAt(now) != schedule.csAt(now - 1)) lattice->setMorphSpeed(schedule.csAt(now));
+      stepper.advanceTo(std::min(step, schedule.sameStepsUntil(now)), whatWasDone);
+    }
   };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
@@ -251,13 +268,15 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
     interrupt::check(whatWasDone);
     if (!convergedAt) {
       Stopwatch lbm;
-      stepper.advanceTo(schedule[size_t(k)], whatWasDone);
+      advanceTo(frameSteps[size_t(k)]);
       lbmMs += lbm.ms();
       Stopwatch download;
       current = lattice->field();
       downloadMs += download.ms();
       lastError = lattice->errorNearTarget(current, convergenceBand);
-      if (k > 0 && lastError < o.tolerance) {
+      // Only the paper's scheme stops early: a morph that arrives spreads
+      // its frames over the whole way, wherever the tolerance is reached.
+      if (stepsGiven(o) && k > 0 && lastError < o.tolerance) {
         convergedAt = solver.stepsTaken();
         if (k + 1 < o.frames)
           log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
@@ -265,6 +284,9 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                     " to " + std::to_string(o.frames - 1) + " repeat it");
       }
     }
+    const int step = solver.stepsTaken();
+    frameReport.lattice(k, step, schedule.gammaAt(std::max(step - 1, 0)), schedule.csAt(std::max(step - 1, 0)),
+                        lastError, lastError < o.tolerance);
     waitedMs += writer.push(k, current);
     if (sinceProgress.ms() > 1000.0) {
       log::info("frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " +
@@ -282,6 +304,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   clock.record("download", downloadMs);
   clock.record("extract", writer.extractMs());
   clock.record("write", writer.writeMs());
+  clock.record("frame_figures", writer.inspectMs());
   StageClock::report("lbm", lbmMs);
   StageClock::report("extract", writer.extractMs());
   StageClock::report("write", writer.writeMs());
@@ -292,8 +315,15 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   device.requireCleanValidation();
 
   newFolder.keep();
+  const bool converged = lastError < o.tolerance;
+  if (!converged && !stepsGiven(o))
+    log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (--tolerance " +
+                 std::to_string(o.tolerance) + "); where the target's distance field has kinks (sharp concave edges, thin gaps) the lattice settles a little off it; a larger --tolerance accepts that");
 
   const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
+  // Against what the grid can hold of the target, every vertex included: how
+  // far the morph is from arriving.
+  const SurfaceComparison arrival = frameReport.compareWithTargetLevel(meshes.back());
   const MeshTopology last = analyzeTopology(meshes.back());
   const int steps = solver.stepsTaken();
   const double updates = double(lattice->cells()) * steps;
@@ -302,10 +332,18 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
           {"target", targetPath.string()},
           {"folder", folder.string()},
           {"frames", o.frames},
-          {"frame_steps", schedule},
+          {"frame_steps", frameSteps},
           {"steps", steps},
+          {"schedule", {{"kind", stepsGiven(o) ? "given steps, constant gamma" : "arrive"},
+                        {"steps", schedule.totalSteps()},
+                        {"closing_from_step", schedule.annealed() ? nlohmann::json(schedule.annealFrom()) : nlohmann::json(nullptr)},
+                        {"final_gamma", schedule.gammaAt(schedule.totalSteps() - 1)},
+                        {"final_cs", schedule.csAt(schedule.totalSteps() - 1)},
+                        {"initial_error_voxels", initialError}}},
+          {"converged", converged},
           {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
           {"max_band_error_voxels", lastError},
+          {"per_frame", frameReport.toJson()},
           {"empty_frames", emptyFrames},
           {"gamma", o.gamma},
           {"cs", o.cs},
@@ -324,6 +362,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
           {"final", {{"mean_distance_to_target", final.mean},
                      {"mean_distance_to_target_voxels", final.mean / frame.voxel},
                      {"hausdorff_to_target_voxels", final.hausdorff / frame.voxel},
+                     {"mean_distance_to_target_level_voxels", arrival.mean / frame.voxel},
+                     {"hausdorff_to_target_level_voxels", arrival.hausdorff / frame.voxel},
                      {"closed_manifold", last.closedManifold},
                      {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
                      {"triangles", meshes.back().triangleCount()}}},

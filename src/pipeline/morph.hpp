@@ -26,13 +26,23 @@ struct MorphOptions {
   double cs = 0.1;                 // Cs of Eq. 22 (the paper's Fig. 8)
   double gamma = 0.05;             // voxels^2 per step (Fig. 8)
   int frames = 48;
-  std::optional<int> stepsPerFrame;  // default 1
+  // Neither given: the morph runs until it arrives at the target, gamma
+  // lowered over its second half (pipeline/morph_schedule.hpp). Either
+  // given: the paper's scheme, constant gamma for that many steps.
+  std::optional<int> stepsPerFrame;
   std::optional<int> steps;          // or the total, spread over the frames
   std::string format = "glb";      // of the frame files: glb, gltf, obj, ply, off, stl
   double fps = 24.0;               // of the animation in morph.glb
   bool animation = true;           // write morph.glb
   bool force = false;              // write into a non-empty folder
-  double tolerance = 0.1;          // converged: max |X - X_target| near the target below this (voxels)
+  // Converged: max |X - X_target| within a voxel of the target's surface
+  // below this (voxels). A morph that arrives runs until it should be; with
+  // given steps the lattice stops early once it is.
+  double tolerance = 0.25;
+  // Each frame's distances to the target, volume and topology in the
+  // report's "per_frame" (measured on the frame writer's thread: about as
+  // much work as extracting the frame).
+  bool frameFigures = true;
   FieldNoise noise;                // on the source's field (the paper's noisy sphere)
   // The lattice on the narrow band around both surfaces and between them,
   // instead of every cell of the grid: less memory, but between a source
@@ -46,8 +56,9 @@ struct MorphOptions {
 
 void checkMorphOptions(const MorphOptions& options);
 
-// The frames' step numbers: frame k shows the state after steps[k] steps.
-std::vector<int> frameSchedule(const MorphOptions& options);
+// Whether the options give the steps (the paper's scheme) or leave the
+// morph to run until it arrives.
+inline bool stepsGiven(const MorphOptions& o) { return o.steps || o.stepsPerFrame; }
 
 // Returns the JSON report. Throws Interrupted (Ctrl-C, checked between
 // batches of lattice steps) after writing only complete frames.

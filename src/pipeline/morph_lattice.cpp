@@ -8,6 +8,8 @@
 #include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
 #include "sdf/triangle_bvh.hpp"
+#include "surface/band_marching_cubes.hpp"
+#include "surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {
@@ -29,16 +31,17 @@ public:
     requireEnclosedVolume(target_, target);
   }
 
+  double sourceErrorNearTarget(float band) const override { return errorBetween(source_, band); }
+  TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
+
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
   {
     addFieldNoise(source_, o.noise);
     solver_ = clock.time("setup", [&] {
       device.checkFits(frame_.extent);
       auto s = device.makeSolver(frame_.extent);
-      Volume base(frame_.extent);
-      for (size_t i = 0; i < base.size(); ++i) base[i] = float(o.cs) * target_[i];
       s->setUniformGamma(o.gamma);
-      s->setSource(LinearSource{std::move(base), float(o.cs)});
+      s->setSource(morphForce(o.cs));
       s->initialize(source_);
       return s;
     });
@@ -46,11 +49,29 @@ public:
   }
 
   SteppingSolver& solver() override { return *solver_; }
+  void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
+  void setMorphSpeed(double cs) override { solver_->setSource(morphForce(cs)); }
   FrameField field() override { return std::make_shared<const Volume>(solver_->field()); }
 
   double errorNearTarget(const FrameField& field, float band) const override
   {
-    const Volume& X = *std::get<std::shared_ptr<const Volume>>(field);
+    return errorBetween(*std::get<std::shared_ptr<const Volume>>(field), band);
+  }
+
+  size_t cells() const override { return frame_.extent.cells(); }
+  nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
+
+private:
+  // S = Cs X_target - Cs X.
+  LinearSource morphForce(double cs) const
+  {
+    Volume base(frame_.extent);
+    for (size_t i = 0; i < base.size(); ++i) base[i] = float(cs) * target_[i];
+    return LinearSource{std::move(base), float(cs)};
+  }
+
+  double errorBetween(const Volume& X, float band) const
+  {
     double worst = 0.0;
 #pragma omp parallel for reduction(max : worst) schedule(static)
     for (size_t i = 0; i < X.size(); ++i)
@@ -58,10 +79,6 @@ public:
     return worst;
   }
 
-  size_t cells() const override { return frame_.extent.cells(); }
-  nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
-
-private:
   GridFrame frame_;
   Volume source_, target_;
   std::unique_ptr<LatticeSolver> solver_;
@@ -76,12 +93,12 @@ private:
 // e^(-Cs t), which the held cells do).
 class BandMorph final : public MorphLattice {
 public:
-  BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, const MorphOptions& o,
-            const ComputeDevice& device, StageClock& clock, const std::function<void()>& beforeDistances)
+  BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame,
+            const MorphSchedule& longest, const ComputeDevice& device, StageClock& clock,
+            const std::function<void()>& beforeDistances)
       : frame_(frame)
   {
-    const auto schedule = frameSchedule(o);
-    halfWidth_ = streamingHalfWidth(o.gamma, schedule.back());
+    halfWidth_ = streamingHalfWidth(longest.totalDiffusion() / longest.totalSteps(), longest.totalSteps());
     clock.time("sdf", [&](Progress& progress) {
       const double reach = halfWidth_ + 2.0;
       auto bricks = bricksNearSurface(source, frame, reach);
@@ -104,14 +121,15 @@ public:
     requireEnclosedVolume(target_, target);
   }
 
+  double sourceErrorNearTarget(float band) const override { return errorBetween(source_.values(), band); }
+  TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
+
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
   {
     solver_ = clock.time("setup", [&] {
       auto s = device.makeBandSolver(source_.sharedBricks());
-      BandField base = target_;
-      for (float& v : base.values()) v *= float(o.cs);
       s->setUniformGamma(o.gamma);
-      s->setSource(BandSource{std::move(base), float(o.cs)});
+      s->setSource(morphForce(o.cs));
       s->initialize(source_, streams());
       return s;
     });
@@ -119,17 +137,13 @@ public:
   }
 
   SteppingSolver& solver() override { return *solver_; }
+  void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
+  void setMorphSpeed(double cs) override { solver_->setSource(morphForce(cs)); }
   FrameField field() override { return std::make_shared<const BandField>(solver_->field()); }
 
   double errorNearTarget(const FrameField& field, float band) const override
   {
-    const std::vector<float>& X = std::get<std::shared_ptr<const BandField>>(field)->values();
-    const std::vector<float>& T = target_.values();
-    double worst = 0.0;
-#pragma omp parallel for reduction(max : worst) schedule(static)
-    for (size_t i = 0; i < X.size(); ++i)
-      if (std::abs(T[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - T[i])));
-    return worst;
+    return errorBetween(std::get<std::shared_ptr<const BandField>>(field)->values(), band);
   }
 
   size_t cells() const override { return target_.bricks().storedCells(); }
@@ -144,6 +158,24 @@ public:
   }
 
 private:
+  // S = Cs X_target - Cs X.
+  BandSource morphForce(double cs) const
+  {
+    BandField base = target_;
+    for (float& v : base.values()) v *= float(cs);
+    return BandSource{std::move(base), float(cs)};
+  }
+
+  double errorBetween(const std::vector<float>& X, float band) const
+  {
+    const std::vector<float>& T = target_.values();
+    double worst = 0.0;
+#pragma omp parallel for reduction(max : worst) schedule(static)
+    for (size_t i = 0; i < X.size(); ++i)
+      if (std::abs(T[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - T[i])));
+    return worst;
+  }
+
   // The bricks between the two surfaces: outside both bands, and on
   // different sides of the two. No surface comes within W + 2 voxels of an
   // inactive brick, so a face-connected region of them is on one side of
@@ -212,12 +244,12 @@ private:
 
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options,
-                                               const ComputeDevice& device, StageClock& clock,
-                                               const std::function<void()>& beforeDistances)
+                                               const MorphSchedule& longest, const ComputeDevice& device,
+                                               StageClock& clock, const std::function<void()>& beforeDistances)
 {
   if (!options.band || options.noise.amplitude > 0.0)
     return std::make_unique<GridMorph>(source, target, frame, clock, beforeDistances);
-  return std::make_unique<BandMorph>(source, target, frame, options, device, clock, beforeDistances);
+  return std::make_unique<BandMorph>(source, target, frame, longest, device, clock, beforeDistances);
 }
 
 }  // namespace lbmshape

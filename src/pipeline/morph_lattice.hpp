@@ -15,6 +15,7 @@
 #include "pipeline/compute_device.hpp"
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/morph.hpp"
+#include "pipeline/morph_schedule.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "sdf/grid_frame.hpp"
 
@@ -27,10 +28,19 @@ public:
   // Throws InputError naming the mesh when the source or the target
   // encloses nothing on the grid (before any output folder exists).
   virtual void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const = 0;
+  // Before start(): max |X_source - X_target| over the cells within `band`
+  // voxels of the target's surface, where the morph starts from.
+  virtual double sourceErrorNearTarget(float band) const = 0;
+  // The target's zero level on the grid: where a morph that arrives ends.
+  virtual TriangleMesh targetLevel() const = 0;
   // The solver, with the morph force S = Cs (X_target - X), started from the
   // source's field (and its noise, on the grid).
   virtual void start(const ComputeDevice& device, const MorphOptions& options, StageClock& clock) = 0;
   virtual SteppingSolver& solver() = 0;
+  // gamma of the steps from now on (voxels^2 per step).
+  virtual void setGamma(double gamma) = 0;
+  // Cs of the morph force from now on (after start()).
+  virtual void setMorphSpeed(double cs) = 0;
   // The field now, for a frame.
   virtual FrameField field() = 0;
   // max |X - X_target| over the cells within `band` voxels of the target's surface.
@@ -44,12 +54,13 @@ public:
 // amplitude is a fraction of the field's largest value over the whole
 // grid), else the grid. Computes both signed distance fields, as the "sdf"
 // stage of `clock`; a band that would not fit `device` is refused as soon
-// as its bricks are known. `beforeDistances` runs once the lattice is known
+// as its bricks are known; its width holds for `longest`, a schedule at least
+// as long and diffusive as the one the morph will run. `beforeDistances` runs once the lattice is known
 // to fit and before the distances: the morph's other checks go there, so
 // that a job too large for the device says so first.
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options,
-                                               const ComputeDevice& device, StageClock& clock,
+                                               const MorphSchedule& longest, const ComputeDevice& device, StageClock& clock,
                                                const std::function<void()>& beforeDistances);
 
 }  // namespace lbmshape

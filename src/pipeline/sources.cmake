@@ -6,6 +6,8 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/frame_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interruptible_steps.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/morph_frame_report.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/morph_schedule.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stage_clock.cpp
 )

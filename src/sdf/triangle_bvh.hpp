@@ -25,10 +25,21 @@ public:
   // errors up to 5e-3.
   static constexpr double kDefaultBeta = 3.0;
 
+  // What the tree is for: closest points alone need no far-field expansions,
+  // whose building costs more than the tree's (the mesh comparisons).
+  enum class Queries { ClosestAndWinding, ClosestOnly };
+  // Where it is built: by OpenMP tasks, or on the calling thread alone. A
+  // thread of its own that runs beside the main one (the morph's frame
+  // writer) builds on itself: LLVM's OpenMP runtime (libomp 14) aborts in
+  // its task allocator ("kmp_alloc.cpp(2173): q_th != NULL") when tasks run
+  // in two such threads' teams at once.
+  enum class Build { Parallel, OnThisThread };
+
   // Copies what it needs; the mesh may be open, non-manifold or
   // self-intersecting. Throws InputError for an index past the vertices or a
   // non-finite position used by a triangle.
-  explicit TriangleBvh(const TriangleMesh& mesh);
+  explicit TriangleBvh(const TriangleMesh& mesh, Queries queries = Queries::ClosestAndWinding,
+                       Build how = Build::Parallel);
 
   struct Closest {
     double distance;     // Euclidean, in the mesh's units
@@ -47,6 +58,7 @@ public:
   // outward-oriented surface, 0 outside, in between near holes. Hierarchical
   // approximation (Barill et al. 2018, expansion to second order), within
   // about 1e-3 of the exact value, near the surface as well as far from it.
+  // Only for a tree built with Queries::ClosestAndWinding.
   double windingNumber(const glm::dvec3& p) const { return windingNumber(p, kDefaultBeta); }
   double windingNumber(const glm::dvec3& p, double beta) const;
   // Brute-force sum of solid angles over all triangles: slow, the test oracle.
@@ -91,7 +103,7 @@ private:
     glm::dvec3 a, b, c;
   };
 
-  void build();
+  void build(Build how);
   void buildExpansions();
   double expansionWinding(const Expansion& e, const glm::dvec3& p) const;
 

@@ -16,6 +16,8 @@
 #include "sdf/point_triangle.hpp"
 #include "sdf/triangle_bvh.hpp"
 
+#include <stdexcept>
+
 namespace lbmshape {
 
 void TriangleBvh::buildExpansions()
@@ -118,6 +120,8 @@ double TriangleBvh::expansionWinding(const Expansion& e, const glm::dvec3& p) co
 double TriangleBvh::windingNumber(const glm::dvec3& p, double beta) const
 {
   if (nodes_.empty()) return 0.0;
+  if (expansions_.size() != nodes_.size())
+    throw std::logic_error("TriangleBvh::windingNumber on a tree built for closest points only");
   double sum = 0.0;
   uint32_t stack[kMaxDepth + 2];
   int top = 0;

@@ -72,8 +72,9 @@ TEST_P(MorphAlign, TargetLandsOnTheSourceInItsCoordinates)
 INSTANTIATE_TEST_SUITE_P(Modes, MorphAlign, ::testing::Values("center", "fit"),
                          [](const auto& info) { return info.param; });
 
-// A sphere into a slightly larger one converges within a few steps: the log
-// says at which step, and every later frame repeats that shape.
+// A sphere into a slightly larger one converges within a few steps: with
+// given steps (the paper's scheme) the log says at which step, and every
+// later frame repeats that shape.
 TEST(MorphConvergence, LoggedAndLaterFramesRepeatTheConvergedShape)
 {
   testing::ScratchFolder folder;
@@ -83,8 +84,8 @@ TEST(MorphConvergence, LoggedAndLaterFramesRepeatTheConvergedShape)
   const int frames = 12;
   testing::CliResult r = testing::runLbmshape({"morph", (folder / "small.obj").string(), (folder / "large.obj").string(),
                                                out.string(), "--align", "none", "--res", "32", "--cs", "0.5",
-                                               "--frames", std::to_string(frames), "--format", "obj", "--no-animation",
-                                               "--json"});
+                                               "--frames", std::to_string(frames), "--steps-per-frame", "1", "--format", "obj",
+                                               "--no-animation", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   ASSERT_FALSE(report["converged_at_step"].is_null()) << r.out;

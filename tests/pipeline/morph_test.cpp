@@ -12,6 +12,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/morph.hpp"
+#include "pipeline/morph_schedule.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
@@ -64,13 +65,15 @@ TEST_F(Morph, SphereBecomesTorusFrameByFrame)
   const SurfaceComparison final = compareSurfaces(last, torus);
   EXPECT_LT(final.hausdorff, 1.0 * voxel);
 
-  // The mean distance to the torus falls at every frame (until it has
-  // settled to within the samples' precision, a hundredth of a voxel).
+  // The mean distance to the torus falls at every frame that is a step
+  // further on (until it has settled to within the samples' precision, a
+  // hundredth of a voxel); a morph shorter than its frames shows some steps
+  // twice.
   double previous = 1e30;
   for (int k = 0; k < 48; ++k) {
     const double mean = compareSurfaces(frame(k), torus, ComparisonOptions{20000, 0.0, false}).mean / voxel;
     EXPECT_LT(mean, previous + 0.01) << "frame " << k;
-    if (previous > 0.05) {
+    if (previous > 0.05 && (k == 0 || report["frame_steps"][k] != report["frame_steps"][k - 1])) {
       EXPECT_LT(mean, previous) << "frame " << k;
     }
     previous = mean;
@@ -89,16 +92,19 @@ TEST_F(Morph, FrameZeroIsTheSource)
   EXPECT_LT(compareSurfaces(frame(0), sphere).mean, 0.5 * voxel);
 }
 
-TEST_F(Morph, ScheduleSpreadsTheSteps)
+TEST_F(Morph, GivenStepsAreSpreadOverTheFrames)
 {
   MorphOptions o;
   o.frames = 5;
-  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(MorphSchedule::fixed(o).frameSteps(), (std::vector<int>{0, 1, 2, 3, 4}));
   o.stepsPerFrame = 3;
-  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 3, 6, 9, 12}));
+  EXPECT_EQ(MorphSchedule::fixed(o).frameSteps(), (std::vector<int>{0, 3, 6, 9, 12}));
   o.stepsPerFrame.reset();
   o.steps = 10;
-  EXPECT_EQ(frameSchedule(o), (std::vector<int>{0, 3, 5, 8, 10}));
+  const MorphSchedule given = MorphSchedule::fixed(o);
+  EXPECT_EQ(given.frameSteps(), (std::vector<int>{0, 3, 5, 8, 10}));
+  EXPECT_FALSE(given.annealed());
+  for (int s = 0; s < 10; ++s) EXPECT_EQ(given.gammaAt(s), o.gamma) << "the paper's scheme keeps gamma";
 }
 
 // The lattice steps of a frame run in batches with a Ctrl-C check between
@@ -129,9 +135,11 @@ TEST_F(Morph, FramesDoNotDependOnTheBatchesOfSteps)
 
 TEST_F(Morph, ConvergedMorphRepeatsItsLastShape)
 {
-  // Morphing the torus into itself converges at once.
+  // Morphing the torus into itself converges at once; with given steps the
+  // lattice then stops.
   MorphOptions o = sphereToTorus();
   o.frames = 6;
+  o.stepsPerFrame = 1;
   const nlohmann::json report =
       morphFiles(folder / "torus.obj", folder / "torus.obj", folder / "frames", o, device);
   ASSERT_FALSE(report["converged_at_step"].is_null());

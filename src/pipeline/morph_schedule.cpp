@@ -1,0 +1,75 @@
+#include "pipeline/morph_schedule.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parameter_bounds.hpp"
+#include "pipeline/morph.hpp"
+
+namespace lbmshape {
+
+MorphSchedule::MorphSchedule(double gamma, double cs, int totalSteps, int annealFrom, int frames)
+    : gamma_(gamma), cs_(cs), gammaEnd_(gamma), csEnd_(cs), totalSteps_(totalSteps), annealFrom_(annealFrom), frameSteps_(size_t(frames))
+{
+  const int intervals = frames - 1;
+  for (int k = 0; k < frames; ++k)
+    frameSteps_[size_t(k)] = int(std::lround(double(totalSteps) * k / intervals));
+}
+
+MorphSchedule MorphSchedule::fixed(const MorphOptions& o)
+{
+  const long total = o.steps ? long(*o.steps) : long(o.stepsPerFrame.value_or(1)) * (o.frames - 1);
+  return MorphSchedule(o.gamma, o.cs, int(total), int(total), o.frames);
+}
+
+int MorphSchedule::stepsToArrive(double initialError, double cs, double tolerance)
+{
+  if (!(initialError > tolerance)) return 1;
+  const double shrinkPerStep = std::log((1.0 + cs / 2.0) / (1.0 - cs / 2.0));  // ln(1/rho)
+  const double steps = std::ceil(std::log(initialError / tolerance) / shrinkPerStep);
+  return int(std::clamp(steps, 1.0, double(parameter_bounds::maxSteps)));
+}
+
+MorphSchedule MorphSchedule::arriving(const MorphOptions& o, double initialError)
+{
+  const int total = stepsToArrive(initialError, o.cs, o.tolerance);
+  MorphSchedule s(o.gamma, o.cs, total, total / 2, o.frames);
+  s.gammaEnd_ = std::min(o.gamma, arrivalGamma);
+  s.csEnd_ = std::max(o.cs, arrivalCs);
+  return s;
+}
+
+double MorphSchedule::gammaAt(int step) const
+{
+  if (step < annealFrom_) return gamma_;
+  return gammaEnd_ + (gamma_ - gammaEnd_) * closingLeft(step);
+}
+
+double MorphSchedule::csAt(int step) const
+{
+  if (step < annealFrom_) return cs_;
+  return csEnd_ + (cs_ - csEnd_) * closingLeft(step);
+}
+
+// From 1 before the closing to 0 at its last step, along a parabola: the
+// values leave their first ones gradually and settle at the end.
+double MorphSchedule::closingLeft(int step) const
+{
+  const double left = 1.0 - double(step - annealFrom_ + 1) / double(totalSteps_ - annealFrom_);
+  return left * left;
+}
+
+int MorphSchedule::sameStepsUntil(int step) const
+{
+  if (step < annealFrom_) return annealFrom_;
+  return std::min(step + 1, totalSteps_);
+}
+
+double MorphSchedule::totalDiffusion() const
+{
+  double sum = 0.0;
+  for (int s = 0; s < totalSteps_; ++s) sum += gammaAt(s);
+  return sum;
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,79 @@
+// How a morph spends its lattice steps: how many, where its frames fall, and
+// the diffusion coefficient of each step.
+//
+// The paper's scheme (constant gamma and Cs) does not end at the target: its
+// steady state solves gamma Laplacian(X) = Cs (X - X_target), so the surface
+// stays about gamma/Cs times the target's mean curvature away from it, and
+// thin parts (fingers, ears, a thin ring) are eroded. A morph that arrives
+// keeps gamma and Cs for its first half, where the surface travels and the
+// diffusion keeps the shapes in between smooth, then closes: gamma falls to
+// arrivalGamma and Cs rises to arrivalCs, so the offset shrinks by
+// (gamma/Cs) / (arrivalGamma/arrivalCs) = 500 at the defaults. Lowering
+// gamma alone does not do it: near tau = 1/2 the lattice's flux relaxes by
+// |1 - 1/tau| ~ 1 a step, so the flux of the first half lingers where the
+// target's distance field has a kink (docs/morphing.md measures both).
+// It runs until the source term has closed the distance: without diffusion
+// X - X_target shrinks by rho = (1 - Cs/2)/(1 + Cs/2) a step (the
+// second-order source, docs/lattice-theory.md), and diffusion and the
+// closing's larger Cs only shorten that, so
+//     steps = ceil(ln(E0 / tolerance) / ln(1/rho))
+// from the largest distance E0 between the two fields near the target. The
+// frames are spread evenly in time over those steps, so --frames says how
+// many pictures, never where the morph ends.
+//
+// Given steps (--steps or --steps-per-frame) keep the paper's scheme:
+// constant gamma, ending where the steps end.
+#pragma once
+
+#include <vector>
+
+namespace lbmshape {
+
+struct MorphOptions;
+
+// gamma and Cs a morph that arrives ends with: the offset from the target is
+// then 1/1000 of its curvature (voxels). Cs stays within the users' range
+// (core/parameter_bounds.hpp).
+inline constexpr double arrivalGamma = 0.001;
+inline constexpr double arrivalCs = 1.0;
+
+class MorphSchedule {
+public:
+  // The paper's: constant gamma over the steps the options give (one a
+  // frame by default).
+  static MorphSchedule fixed(const MorphOptions& options);
+  // The morph that arrives: steps from `initialError`, the largest
+  // |X_source - X_target| (voxels) near the target's surface.
+  static MorphSchedule arriving(const MorphOptions& options, double initialError);
+  // Steps for the source term alone to shrink `initialError` below
+  // `tolerance` at speed Cs; at least 1.
+  static int stepsToArrive(double initialError, double cs, double tolerance);
+
+  bool annealed() const { return annealFrom_ < totalSteps_ && (gammaEnd_ != gamma_ || csEnd_ != cs_); }
+  // The first step of the closing (totalSteps() when there is none).
+  int annealFrom() const { return annealFrom_; }
+  int totalSteps() const { return totalSteps_; }
+  // Frame k shows the field after frameSteps()[k] steps; the last is totalSteps().
+  const std::vector<int>& frameSteps() const { return frameSteps_; }
+  // gamma and Cs of the step that starts after `step` steps.
+  double gammaAt(int step) const;
+  double csAt(int step) const;
+  // The first step after `step` whose gamma or Cs may differ from step's
+  // (totalSteps() if none): steps up to it can run as one batch.
+  int sameStepsUntil(int step) const;
+  // The sum of gamma over all steps: the run's total diffusion, voxels^2
+  // (what sets the narrow band's width).
+  double totalDiffusion() const;
+
+private:
+  MorphSchedule(double gamma, double cs, int totalSteps, int annealFrom, int frames);
+  double closingLeft(int step) const;
+
+  double gamma_, cs_;
+  double gammaEnd_, csEnd_;  // at the last step
+  int totalSteps_;
+  int annealFrom_;  // the closing's first step
+  std::vector<int> frameSteps_;
+};
+
+}  // namespace lbmshape

@@ -1,0 +1,177 @@
+// A morph that arrives (no steps given): it ends on the target's own zero
+// level on the grid, thin parts included; where it ends does not depend on
+// --frames; its report describes every frame. And its schedule, on its own.
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "analysis/surface_comparison.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/morph.hpp"
+#include "pipeline/morph_schedule.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+std::string bytes(const std::filesystem::path& p)
+{
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(MorphSchedule, RunsUntilTheSourceTermHasClosedTheDistance)
+{
+  MorphOptions o;  // Cs 0.1, tolerance 0.1
+  const int steps = MorphSchedule::stepsToArrive(20.0, o.cs, o.tolerance);
+  // (1 - Cs/2)/(1 + Cs/2) a step: 20 voxels shrink below 0.1 in that many steps, not one fewer.
+  const double rho = (1.0 - o.cs / 2) / (1.0 + o.cs / 2);
+  EXPECT_LT(20.0 * std::pow(rho, steps), o.tolerance);
+  EXPECT_GT(20.0 * std::pow(rho, steps - 1), o.tolerance);
+  EXPECT_EQ(MorphSchedule::stepsToArrive(0.05, o.cs, o.tolerance), 1) << "already there";
+  EXPECT_LT(MorphSchedule::stepsToArrive(20.0, 0.3, o.tolerance), steps) << "a faster Cs arrives sooner";
+}
+
+TEST(MorphSchedule, FramesSampleTheWholeMorphWhateverTheirNumber)
+{
+  MorphOptions few, many;
+  few.frames = 5;
+  many.frames = 200;
+  const MorphSchedule a = MorphSchedule::arriving(few, 30.0), b = MorphSchedule::arriving(many, 30.0);
+  ASSERT_EQ(a.totalSteps(), b.totalSteps());
+  EXPECT_EQ(a.frameSteps().front(), 0);
+  EXPECT_EQ(a.frameSteps().back(), a.totalSteps());
+  EXPECT_EQ(b.frameSteps().back(), b.totalSteps());
+  for (int s = 0; s < a.totalSteps(); ++s) EXPECT_EQ(a.gammaAt(s), b.gammaAt(s)) << "step " << s;
+  // Evenly in time: frame k of 5 at a quarter of the way, and so on.
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(a.frameSteps()[size_t(k)], a.totalSteps() * k / 4.0, 0.5) << k;
+}
+
+TEST(MorphSchedule, GammaAndCsHoldThenCloseOnTheArrivalsValues)
+{
+  MorphOptions o;
+  const MorphSchedule s = MorphSchedule::arriving(o, 30.0);
+  ASSERT_TRUE(s.annealed());
+  EXPECT_EQ(s.annealFrom(), s.totalSteps() / 2);
+  for (int k = 0; k < s.annealFrom(); ++k) {
+    EXPECT_EQ(s.gammaAt(k), o.gamma);
+    EXPECT_EQ(s.csAt(k), o.cs);
+  }
+  for (int k = s.annealFrom() + 1; k < s.totalSteps(); ++k) {
+    EXPECT_LE(s.gammaAt(k), s.gammaAt(k - 1)) << k;
+    EXPECT_GE(s.csAt(k), s.csAt(k - 1)) << k;
+  }
+  EXPECT_DOUBLE_EQ(s.gammaAt(s.totalSteps() - 1), arrivalGamma);
+  EXPECT_DOUBLE_EQ(s.csAt(s.totalSteps() - 1), arrivalCs);
+  EXPECT_LT(s.totalDiffusion(), o.gamma * s.totalSteps());
+  // Batches never cross a change of gamma.
+  for (int k = 0; k < s.totalSteps(); ++k)
+    for (int j = k; j < s.sameStepsUntil(k); ++j) {
+      EXPECT_EQ(s.gammaAt(j), s.gammaAt(k)) << k << " " << j;
+      EXPECT_EQ(s.csAt(j), s.csAt(k)) << k << " " << j;
+    }
+  // Values already past the arrival's are kept.
+  o.gamma = arrivalGamma / 2;
+  o.cs = arrivalCs;
+  EXPECT_FALSE(MorphSchedule::arriving(o, 30.0).annealed());
+}
+
+class MorphArrival : public ::testing::Test {
+protected:
+  ComputeDevice device{"", true};  // Vulkan, with the validation layer
+  testing::ScratchFolder folder;
+
+  nlohmann::json morph(const std::string& target, const std::string& out, int frames, bool band = false)
+  {
+    MorphOptions o;
+    o.grid.resolution = 48;
+    o.align = Alignment::None;
+    o.format = "obj";
+    o.frames = frames;
+    o.band = band;
+    o.animation = false;
+    return morphFiles(folder / "sphere.obj", folder / target, folder / out, o, device);
+  }
+};
+
+// A torus whose ring is under three voxels thick: the paper's constant gamma
+// leaves it eroded (its steady state is gamma/Cs times the curvature off,
+// about half a voxel here); the arriving morph ends on it.
+TEST_F(MorphArrival, EndsOnTheTargetsZeroLevelThinPartsIncluded)
+{
+  writeMesh(testing::icosphere(4, 1.0), folder / "sphere.obj");
+  writeMesh(testing::torusMesh(1.0, 0.07, 128, 24), folder / "ring.obj");
+  for (const bool band : {false, true}) {
+    const nlohmann::json report = morph("ring.obj", band ? "band" : "grid", 8, band);
+    SCOPED_TRACE(band ? "band" : "grid");
+    const double voxel = report["grid"]["voxel"];
+    ASSERT_LT(2 * 0.07 / voxel, 3.0) << "the ring is thin";
+    EXPECT_TRUE(report["converged"]);
+    EXPECT_LT(report["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.05);
+    EXPECT_LT(report["final"]["hausdorff_to_target_level_voxels"].get<double>(), 1.0);
+    EXPECT_EQ(report["final"]["genus"], 1);
+  }
+
+  // The paper's scheme, for as many steps, stays further off.
+  MorphOptions o;
+  o.grid.resolution = 48;
+  o.align = Alignment::None;
+  o.format = "obj";
+  o.frames = 8;
+  o.animation = false;
+  o.steps = morph("ring.obj", "again", 8)["steps"].get<int>();
+  const nlohmann::json paper = morphFiles(folder / "sphere.obj", folder / "ring.obj", folder / "paper", o, device);
+  EXPECT_GT(paper["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.1);
+}
+
+TEST_F(MorphArrival, FramesChangeHowManyPicturesNeverWhereItEnds)
+{
+  writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");
+  writeMesh(testing::torusMesh(1.0, 0.35, 64, 32), folder / "torus.obj");
+  const nlohmann::json few = morph("torus.obj", "few", 5), many = morph("torus.obj", "many", 17);
+  ASSERT_EQ(few["steps"], many["steps"]);
+  // 5 frames are every fourth of 17: the same steps, the same files.
+  for (int k = 0; k < 5; ++k) {
+    char a[32], b[32];
+    std::snprintf(a, sizeof a, "frame_%04d.obj", k);
+    std::snprintf(b, sizeof b, "frame_%04d.obj", 4 * k);
+    EXPECT_EQ(few["frame_steps"][k], many["frame_steps"][4 * k]) << k;
+    EXPECT_EQ(bytes(folder / "few" / a), bytes(folder / "many" / b)) << k;
+  }
+}
+
+TEST_F(MorphArrival, ReportsEveryFrame)
+{
+  writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");
+  writeMesh(testing::torusMesh(1.0, 0.35, 64, 32), folder / "torus.obj");
+  const int frames = 9;
+  const nlohmann::json report = morph("torus.obj", "frames", frames);
+  const nlohmann::json& perFrame = report["per_frame"];
+  ASSERT_EQ(perFrame.size(), size_t(frames));
+  for (int k = 0; k < frames; ++k) {
+    const nlohmann::json& f = perFrame[size_t(k)];
+    SCOPED_TRACE("frame " + std::to_string(k));
+    EXPECT_EQ(f["frame"], k);
+    EXPECT_EQ(f["step"], report["frame_steps"][size_t(k)]);
+    EXPECT_GT(f["volume"].get<double>(), 0.0);
+    EXPECT_EQ(f["components"], 1);
+    EXPECT_GE(f["mean_distance_to_target_voxels"].get<double>(), 0.0);
+    EXPECT_GE(f["max_distance_to_target_voxels"].get<double>(), f["mean_distance_to_target_voxels"].get<double>());
+    if (k > 0) {
+      EXPECT_LT(f["mean_distance_to_target_voxels"].get<double>(),
+                perFrame[size_t(k - 1)]["mean_distance_to_target_voxels"].get<double>() + 0.01);
+    }
+  }
+  EXPECT_EQ(perFrame[0]["genus"], 0) << "the sphere";
+  EXPECT_EQ(perFrame[frames - 1]["genus"], 1) << "the torus";
+  EXPECT_FALSE(perFrame[0]["converged"]);
+  EXPECT_TRUE(perFrame[frames - 1]["converged"]);
+  EXPECT_LT(perFrame[frames - 1]["mean_distance_to_target_voxels"].get<double>(), 0.05);
+}
+
+}  // namespace
+}  // namespace lbmshape

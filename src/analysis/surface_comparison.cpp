@@ -103,8 +103,8 @@ SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, 
   return result;
 }
 
-DistanceToSurface::DistanceToSurface(const TriangleMesh& target, TriangleBvh::Build how)
-    : target_(target), tree_(target, TriangleBvh::Queries::ClosestOnly, how)
+DistanceToSurface::DistanceToSurface(const TriangleMesh& target)
+    : target_(target), tree_(target, TriangleBvh::Queries::ClosestOnly)
 {
   if (!hasArea(target)) throw InputError("the surface to measure against has no triangle with area");
 }

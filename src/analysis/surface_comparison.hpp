@@ -56,10 +56,10 @@ SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, 
 
 // Distances from many surfaces to one (a morph's frames to its target): the
 // target's tree is built once. from(source) is compareSurfaces' aToB for
-// (source, target). Keeps a reference to `target`. `how`: see TriangleBvh.
+// (source, target). Keeps a reference to `target`.
 class DistanceToSurface {
 public:
-  explicit DistanceToSurface(const TriangleMesh& target, TriangleBvh::Build how = TriangleBvh::Build::Parallel);
+  explicit DistanceToSurface(const TriangleMesh& target);
   DirectedDistance from(const TriangleMesh& source, const ComparisonOptions& options) const;
 
 private:

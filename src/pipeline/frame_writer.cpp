@@ -128,7 +128,7 @@ void FrameWriter::run()
       writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed);
       const double writeMs = write.ms();
       Stopwatch inspect;
-      if (inspect_) inspect_(job.first, mesh);
+      if (inspect_) inspect_(job.first, job.second, mesh);
       const double inspectMs = inspect.ms();
       previousField = job.second;
       std::lock_guard lock(mutex_);

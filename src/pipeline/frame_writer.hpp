@@ -33,8 +33,8 @@ public:
   enum class Keep { EveryFrame, LastFrame };
 
   // Runs on the writer's thread after frame k's file is written, with its
-  // mesh (the morph's per-frame figures).
-  using Inspect = std::function<void(int frame, const TriangleMesh& mesh)>;
+  // field and mesh (the morph's per-frame figures).
+  using Inspect = std::function<void(int frame, const FrameField& field, const TriangleMesh& mesh)>;
 
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep,

@@ -231,7 +231,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!stepsGiven(o))
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
-  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame.voxel, o.frames);
+  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame, o.frames);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
   if (!lock) lock.emplace(folder);
@@ -241,7 +241,9 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames,
                      o.animation ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame,
-                     o.frameFigures ? FrameWriter::Inspect([&](int k, const TriangleMesh& mesh) { frameReport.surface(k, mesh); })
+                     o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
+                       frameReport.surface(k, field, mesh);
+                     })
                                     : FrameWriter::Inspect());
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so

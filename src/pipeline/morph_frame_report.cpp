@@ -1,27 +1,76 @@
 #include "pipeline/morph_frame_report.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <variant>
 
 #include "analysis/mesh_topology.hpp"
+#include "analysis/surface_sampling.hpp"
 
 namespace lbmshape {
 namespace {
 
 // Random points on each surface for a frame's distances: enough for the
-// mean within about a hundredth of a voxel, few enough that the frame's
-// tree, not the points, is most of the cost. The maximum, taken over the same
+// mean within about a hundredth of a voxel. The maximum, taken over the same
 // points, can fall short of the Hausdorff distance by their spacing; `final`
 // in the morph's report measures the last frame more densely.
 constexpr size_t samplesPerFrame = 4000;
 
 nlohmann::json orNull(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
+// X and its gradient at a point of the grid (cell units), trilinear between
+// the eight cells around it; outside the grid, at the nearest point inside.
+template <class Field>
+std::pair<double, glm::dvec3> sampleWithGradient(const Field& field, glm::dvec3 g)
+{
+  const Extent3& e = field.extent();
+  g = glm::clamp(g, glm::dvec3(0.0), glm::dvec3(e.nx - 1, e.ny - 1, e.nz - 1));
+  const glm::ivec3 lo = glm::min(glm::ivec3(glm::floor(g)), glm::ivec3(e.nx - 2, e.ny - 2, e.nz - 2));
+  const glm::dvec3 t = g - glm::dvec3(lo);
+  double c[2][2][2];
+  for (int dz = 0; dz < 2; ++dz)
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) c[dz][dy][dx] = field.at(lo.x + dx, lo.y + dy, lo.z + dz);
+  double value = 0.0;
+  glm::dvec3 gradient(0.0);
+  for (int dz = 0; dz < 2; ++dz)
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        const double wx = dx ? t.x : 1.0 - t.x, wy = dy ? t.y : 1.0 - t.y, wz = dz ? t.z : 1.0 - t.z;
+        const double v = c[dz][dy][dx];
+        value += wx * wy * wz * v;
+        gradient += v * glm::dvec3((dx ? 1.0 : -1.0) * wy * wz, (dy ? 1.0 : -1.0) * wx * wz, (dz ? 1.0 : -1.0) * wx * wy);
+      }
+  return {value, gradient};
+}
+
+// From points of the target level to the frame's zero level, in voxels, by
+// the frame's field: |X| / |grad X|, the gradient's length kept from
+// vanishing where two fronts meet (a blend's gradient can cancel).
+template <class Field>
+DirectedDistance distanceByField(const Field& field, const std::vector<glm::dvec3>& points)
+{
+  DirectedDistance d;
+  double sum = 0.0, sum2 = 0.0;
+  for (const glm::dvec3& p : points) {
+    const auto [value, gradient] = sampleWithGradient(field, p);
+    const double distance = std::abs(value) / std::max(glm::length(gradient), 0.5);
+    sum += distance, sum2 += distance * distance;
+    d.max = std::max(d.max, distance);
+  }
+  d.samples = points.size();
+  if (!points.empty()) d.mean = sum / double(points.size()), d.rms = std::sqrt(sum2 / double(points.size()));
+  return d;
+}
+
 }  // namespace
 
-MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, double voxel, int frames)
-    : targetLevel_(std::move(targetLevel)), voxel_(voxel), frames_(size_t(frames))
+MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames)
+    : targetLevel_(std::move(targetLevel)), grid_(grid), frames_(size_t(frames))
 {
-  if (!targetLevel_.triangles.empty()) toTarget_.emplace(targetLevel_);
+  if (targetLevel_.triangles.empty()) return;
+  toTarget_.emplace(targetLevel_);
+  for (const SurfaceSample& s : sampleSurface(targetLevel_, samplesPerFrame, 1)) targetPoints_.push_back(grid_.toGrid(s.point));
 }
 
 void MorphFrameReport::lattice(int frame, int step, double gamma, double cs, double fieldError, bool converged)
@@ -35,7 +84,7 @@ void MorphFrameReport::lattice(int frame, int step, double gamma, double cs, dou
   f.converged = converged;
 }
 
-void MorphFrameReport::surface(int frame, const TriangleMesh& mesh)
+void MorphFrameReport::surface(int frame, const FrameField& field, const TriangleMesh& mesh)
 {
   Frame measured;
   const MeshTopology topology = analyzeTopology(mesh);
@@ -43,12 +92,11 @@ void MorphFrameReport::surface(int frame, const TriangleMesh& mesh)
   measured.components = topology.components;
   measured.genus = topology.genus;
   if (topology.area > 0.0 && toTarget_) {
-    // Both ways, as compareSurfaces does, but only the frame's tree is new.
-    const ComparisonOptions options{samplesPerFrame, 0.0, false, uint64_t(frame) + 1};
-    const DirectedDistance there = toTarget_->from(mesh, options);
-    const DirectedDistance back = DistanceToSurface(mesh, TriangleBvh::Build::OnThisThread).from(targetLevel_, options);
-    measured.meanDistance = 0.5 * (there.mean + back.mean) / voxel_;
-    measured.maxDistance = std::max(there.max, back.max) / voxel_;
+    const DirectedDistance there = toTarget_->from(mesh, ComparisonOptions{samplesPerFrame, 0.0, false, uint64_t(frame) + 1});
+    const DirectedDistance back =
+        std::visit([&](const auto& f) { return distanceByField(*f, targetPoints_); }, field);
+    measured.meanDistance = 0.5 * (there.mean / grid_.voxel + back.mean);
+    measured.maxDistance = std::max(there.max / grid_.voxel, back.max);
   }
   std::lock_guard lock(mutex_);
   Frame& f = frames_.at(size_t(frame));

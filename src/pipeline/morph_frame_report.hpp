@@ -3,6 +3,13 @@
 // is the target's own zero level on the morph's grid (what the morph can
 // reach at that resolution), not the target mesh: a morph has arrived when
 // the two coincide.
+//
+// A frame's distances cost a fraction of its extraction: from points on the
+// frame to the target level through the target's tree, built once; from
+// points on the target level to the frame by the frame's own field, |X| /
+// |grad X| interpolated there (exact to first order: close to the frame,
+// where X is nearly a distance, it is the distance). No tree is built on
+// the writer's thread (see TriangleBvh).
 #pragma once
 
 #include <mutex>
@@ -13,21 +20,24 @@
 
 #include "analysis/surface_comparison.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "pipeline/frame_writer.hpp"
+#include "sdf/grid_frame.hpp"
 
 namespace lbmshape {
 
 class MorphFrameReport {
 public:
-  // `targetLevel`: the target's zero level on the grid, `voxel` its cell size.
-  MorphFrameReport(TriangleMesh targetLevel, double voxel, int frames);
+  // `targetLevel`: the target's zero level on `grid`.
+  MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames);
 
   // From the lattice's side, once frame k's field is taken: its step, gamma
   // and Cs of the step that led to it, and the largest |X - X_target| near
   // the target, in voxels (converged below the tolerance).
   void lattice(int frame, int step, double gamma, double cs, double fieldError, bool converged);
-  // From the frame writer's thread, once frame k's mesh is extracted:
-  // distances to the target level, volume and topology. Thread-safe.
-  void surface(int frame, const TriangleMesh& mesh);
+  // From the frame writer's thread, once frame k's mesh is extracted from
+  // its field: distances to the target level, volume and topology.
+  // Thread-safe.
+  void surface(int frame, const FrameField& field, const TriangleMesh& mesh);
 
   // One object per frame: {"frame", "step", "gamma", "cs", "max_field_error_voxels",
   // "converged", "mean_distance_to_target_voxels",
@@ -53,7 +63,8 @@ private:
 
   TriangleMesh targetLevel_;
   std::optional<DistanceToSurface> toTarget_;  // none while the target level has no triangle
-  double voxel_;
+  std::vector<glm::dvec3> targetPoints_;       // on the target level, in grid coordinates
+  GridFrame grid_;
   mutable std::mutex mutex_;
   std::vector<Frame> frames_;
 };

@@ -181,7 +181,7 @@ struct Builder {
 
 }  // namespace
 
-TriangleBvh::TriangleBvh(const TriangleMesh& mesh, Queries queries, Build how)
+TriangleBvh::TriangleBvh(const TriangleMesh& mesh, Queries queries)
 {
   triangles_.reserve(mesh.triangles.size());
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -204,11 +204,11 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, Queries queries, Build how)
     triangles_.push_back(tri);
   }
   if (triangles_.size() >= kNoTriangle) throw InputError("the mesh has too many triangles");
-  build(how);
+  build();
   if (queries == Queries::ClosestAndWinding) buildExpansions();
 }
 
-void TriangleBvh::build(Build how)
+void TriangleBvh::build()
 {
   const uint32_t n = uint32_t(triangles_.size());
   if (n == 0) return;
@@ -224,8 +224,8 @@ void TriangleBvh::build(Build how)
   const Builder builder{centroid, triangleBox, order};
   // The top levels split into tasks, each laying out a subtree in its own
   // array; the arrays are then spliced (so the result is the same for any
-  // number of threads, one included).
-#pragma omp parallel if (how == Build::Parallel)
+  // number of threads).
+#pragma omp parallel
 #pragma omp single
   nodes_ = builder.layOutParallel<Node>(0, n, 0);
   std::vector<Triangle> sorted(n);

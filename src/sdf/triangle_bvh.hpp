@@ -28,18 +28,15 @@ public:
   // What the tree is for: closest points alone need no far-field expansions,
   // whose building costs more than the tree's (the mesh comparisons).
   enum class Queries { ClosestAndWinding, ClosestOnly };
-  // Where it is built: by OpenMP tasks, or on the calling thread alone. A
-  // thread of its own that runs beside the main one (the morph's frame
-  // writer) builds on itself: LLVM's OpenMP runtime (libomp 14) aborts in
-  // its task allocator ("kmp_alloc.cpp(2173): q_th != NULL") when tasks run
-  // in two such threads' teams at once.
-  enum class Build { Parallel, OnThisThread };
 
   // Copies what it needs; the mesh may be open, non-manifold or
   // self-intersecting. Throws InputError for an index past the vertices or a
   // non-finite position used by a triangle.
-  explicit TriangleBvh(const TriangleMesh& mesh, Queries queries = Queries::ClosestAndWinding,
-                       Build how = Build::Parallel);
+  // Built by OpenMP tasks: on the main thread only, as LLVM's OpenMP
+  // runtime (libomp 14) aborts in its task allocator ("kmp_alloc.cpp(2173):
+  // q_th != NULL") when a second thread of the process (the morph's frame
+  // writer) runs tasks beside the main one's parallel regions.
+  explicit TriangleBvh(const TriangleMesh& mesh, Queries queries = Queries::ClosestAndWinding);
 
   struct Closest {
     double distance;     // Euclidean, in the mesh's units
@@ -103,7 +100,7 @@ private:
     glm::dvec3 a, b, c;
   };
 
-  void build(Build how);
+  void build();
   void buildExpansions();
   double expansionWinding(const Expansion& e, const glm::dvec3& p) const;
 

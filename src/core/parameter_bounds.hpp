@@ -17,8 +17,11 @@ inline constexpr int maxFrames = 100'000;
 // denoise it moves X ballistically, not by the diffusion equation
 // (docs/lattice-theory.md). More smoothing is more steps.
 inline constexpr double maxGamma = 1.0;
-// The morph's Cs, per step: the source term moves X by Cs (X_target - X) a
-// step, so beyond 1 it overshoots the target.
+// The morph's Cs, per step. The lattice treats the source term by the
+// trapezoidal rule, so a step shrinks X - X_target by (1 - Cs/2)/(1 + Cs/2):
+// a third at 1 (what a morph's closing ends with), nothing left at 2, a
+// change of sign beyond. Past 1 a morph is over in a few steps, too few for
+// the diffusion that keeps the shapes in between smooth.
 inline constexpr double maxCs = 1.0;
 // Surface samples of compare, per mesh: about 100 bytes each.
 inline constexpr std::size_t maxSamples = 10'000'000;

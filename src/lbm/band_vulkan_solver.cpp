@@ -346,6 +346,10 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   r_->current = 0;
   r_->steps = 0;
   r_->initial = field;
+  // The step's and field()'s pipelines, compiled in the set-up rather than
+  // during the steps (VulkanSolver::initialize says why).
+  r_->context.program(r_->program(true));
+  r_->context.program(r_->program(false));
 }
 
 void BandVulkanSolver::step(int count)

@@ -270,6 +270,13 @@ void VulkanSolver::initialize(const Volume& fieldValues)
   });
   r_->current = 0;
   r_->steps = 0;
+  // The pipelines of the steps and of field() for this source and
+  // relaxation are compiled now, in the job's set-up, and not during its
+  // steps: lavapipe ends the process with SIGSEGV when an allocation fails
+  // inside its shader compiler, and a job near its memory limit (ulimit -v)
+  // is further from it now than once a morph's frame writer has started.
+  r_->context.program(r_->latticeProgram("lbm_step"));
+  r_->context.program(r_->latticeProgram("lbm_field"));
 }
 
 void VulkanSolver::step(int count)

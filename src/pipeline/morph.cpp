@@ -180,8 +180,8 @@ void checkMorphOptions(const MorphOptions& o)
 {
   relaxation::checkGamma(o.gamma, "--gamma");
   if (!(o.cs > 0.0 && o.cs <= parameter_bounds::maxCs))
-    throw UsageError("--cs must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 X "
-                     "reaches the target in one step, beyond it overshoots)");
+    throw UsageError("--cs must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
+                     "each step closes two thirds of the distance to the target)");
   if (o.frames < 2 || o.frames > parameter_bounds::maxFrames)
     throw UsageError("--frames must be from 2 (the source and the result) to " + std::to_string(parameter_bounds::maxFrames));
   if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
@@ -231,7 +231,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!stepsGiven(o))
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
-  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame, o.frames);
+  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame, o.frames,
+                               o.frameFigures);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
   if (!lock) lock.emplace(folder);

@@ -65,10 +65,10 @@ DirectedDistance distanceByField(const Field& field, const std::vector<glm::dvec
 
 }  // namespace
 
-MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames)
+MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames, bool measureSurfaces)
     : targetLevel_(std::move(targetLevel)), grid_(grid), frames_(size_t(frames))
 {
-  if (targetLevel_.triangles.empty()) return;
+  if (!measureSurfaces || targetLevel_.triangles.empty()) return;
   toTarget_.emplace(targetLevel_);
   for (const SurfaceSample& s : sampleSurface(targetLevel_, samplesPerFrame, 1)) targetPoints_.push_back(grid_.toGrid(s.point));
 }

@@ -27,8 +27,10 @@ namespace lbmshape {
 
 class MorphFrameReport {
 public:
-  // `targetLevel`: the target's zero level on `grid`.
-  MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames);
+  // `targetLevel`: the target's zero level on `grid`. Without
+  // `measureSurfaces` surface() must not be called, and nothing is prepared
+  // for it.
+  MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames, bool measureSurfaces);
 
   // From the lattice's side, once frame k's field is taken: its step, gamma
   // and Cs of the step that led to it, and the largest |X - X_target| near

@@ -13,7 +13,7 @@
 #                                             shared meshes): the asan-unit
 #                                             preset in build-asan-unit/, what
 #                                             CI runs (about 4 min to build
-#                                             and 1.5 min to run on 2 cores)
+#                                             and 2 min to run on 2 cores)
 #
 # Extra arguments go to ctest (e.g. -R Band to run only matching tests).
 set -euo pipefail

@@ -253,12 +253,14 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
     return std::to_string(writer.stop()) + " complete frames in " + folder.string() + " (at step " +
            std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
   };
-  // Steps up to `step`, gamma following the schedule.
+  // Steps up to `step`, gamma and Cs following the schedule. A new Cs is an
+  // upload of the force's field: only when it changes (start() set o.cs).
+  double csNow = o.cs;
   const auto advanceTo = [&](int step) {
     while (solver.stepsTaken() < step) {
       const int now = solver.stepsTaken();
       lattice->setGamma(schedule.gammaAt(now));
-      if (now == 0 || schedule.csAt(now) != schedule.csAt(now - 1)) lattice->setMorphSpeed(schedule.csAt(now));
+      if (schedule.csAt(now) != csNow) lattice->setMorphSpeed(csNow = schedule.csAt(now));
       stepper.advanceTo(std::min(step, schedule.sameStepsUntil(now)), whatWasDone);
     }
   };

@@ -190,7 +190,7 @@ void checkMorphOptions(const MorphOptions& o)
   const char* noSteps = " (with 0 steps every frame would be the source; lbmshape denoise --steps 0 shows a mesh on the grid)";
   if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1" + std::string(noSteps));
   if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1" + std::string(noSteps));
-  const long total = o.steps ? long(*o.steps) : long(o.stepsPerFrame.value_or(1)) * (o.frames - 1);
+  const long total = givenStepCount(o);
   if (total > parameter_bounds::maxSteps)
     throw UsageError("the morph would run " + std::to_string(total) + " steps (--steps, or --steps-per-frame times " +
                      "--frames - 1); at most " + std::to_string(parameter_bounds::maxSteps));

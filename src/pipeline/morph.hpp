@@ -59,6 +59,12 @@ void checkMorphOptions(const MorphOptions& options);
 // Whether the options give the steps (the paper's scheme) or leave the
 // morph to run until it arrives.
 inline bool stepsGiven(const MorphOptions& o) { return o.steps || o.stepsPerFrame; }
+// The steps the options give: --steps, or --steps-per-frame (1 unless given)
+// times the frames' intervals.
+inline long givenStepCount(const MorphOptions& o)
+{
+  return o.steps ? long(*o.steps) : long(o.stepsPerFrame.value_or(1)) * (o.frames - 1);
+}
 
 // Returns the JSON report. Throws Interrupted (Ctrl-C, checked between
 // batches of lattice steps) after writing only complete frames.

@@ -14,6 +14,25 @@
 namespace lbmshape {
 namespace {
 
+// max |X - T| over the cells where |T| <= band (the same cells of one grid
+// or one band).
+double maxDifferenceNear(const std::vector<float>& X, const std::vector<float>& T, float band)
+{
+  double worst = 0.0;
+#pragma omp parallel for reduction(max : worst) schedule(static)
+  for (size_t i = 0; i < X.size(); ++i)
+    if (std::abs(T[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - T[i])));
+  return worst;
+}
+
+// The morph force's constant part, Cs X_target, on the target's own cells.
+template <class Field>
+Field scaledBy(Field field, double cs)
+{
+  for (float& v : field.values()) v *= float(cs);
+  return field;
+}
+
 class GridMorph final : public MorphLattice {
 public:
   GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock,
@@ -31,7 +50,10 @@ public:
     requireEnclosedVolume(target_, target);
   }
 
-  double sourceErrorNearTarget(float band) const override { return errorBetween(source_, band); }
+  double sourceErrorNearTarget(float band) const override
+  {
+    return maxDifferenceNear(source_.values(), target_.values(), band);
+  }
   TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
 
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
@@ -55,7 +77,7 @@ public:
 
   double errorNearTarget(const FrameField& field, float band) const override
   {
-    return errorBetween(*std::get<std::shared_ptr<const Volume>>(field), band);
+    return maxDifferenceNear(std::get<std::shared_ptr<const Volume>>(field)->values(), target_.values(), band);
   }
 
   size_t cells() const override { return frame_.extent.cells(); }
@@ -63,21 +85,7 @@ public:
 
 private:
   // S = Cs X_target - Cs X.
-  LinearSource morphForce(double cs) const
-  {
-    Volume base(frame_.extent);
-    for (size_t i = 0; i < base.size(); ++i) base[i] = float(cs) * target_[i];
-    return LinearSource{std::move(base), float(cs)};
-  }
-
-  double errorBetween(const Volume& X, float band) const
-  {
-    double worst = 0.0;
-#pragma omp parallel for reduction(max : worst) schedule(static)
-    for (size_t i = 0; i < X.size(); ++i)
-      if (std::abs(target_[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - target_[i])));
-    return worst;
-  }
+  LinearSource morphForce(double cs) const { return LinearSource{scaledBy(target_, cs), float(cs)}; }
 
   GridFrame frame_;
   Volume source_, target_;
@@ -121,7 +129,10 @@ public:
     requireEnclosedVolume(target_, target);
   }
 
-  double sourceErrorNearTarget(float band) const override { return errorBetween(source_.values(), band); }
+  double sourceErrorNearTarget(float band) const override
+  {
+    return maxDifferenceNear(source_.values(), target_.values(), band);
+  }
   TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
 
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
@@ -143,7 +154,7 @@ public:
 
   double errorNearTarget(const FrameField& field, float band) const override
   {
-    return errorBetween(std::get<std::shared_ptr<const BandField>>(field)->values(), band);
+    return maxDifferenceNear(std::get<std::shared_ptr<const BandField>>(field)->values(), target_.values(), band);
   }
 
   size_t cells() const override { return target_.bricks().storedCells(); }
@@ -159,22 +170,7 @@ public:
 
 private:
   // S = Cs X_target - Cs X.
-  BandSource morphForce(double cs) const
-  {
-    BandField base = target_;
-    for (float& v : base.values()) v *= float(cs);
-    return BandSource{std::move(base), float(cs)};
-  }
-
-  double errorBetween(const std::vector<float>& X, float band) const
-  {
-    const std::vector<float>& T = target_.values();
-    double worst = 0.0;
-#pragma omp parallel for reduction(max : worst) schedule(static)
-    for (size_t i = 0; i < X.size(); ++i)
-      if (std::abs(T[i]) <= band) worst = std::max(worst, double(std::abs(X[i] - T[i])));
-    return worst;
-  }
+  BandSource morphForce(double cs) const { return BandSource{scaledBy(target_, cs), float(cs)}; }
 
   // The bricks between the two surfaces: outside both bands, and on
   // different sides of the two. No surface comes within W + 2 voxels of an

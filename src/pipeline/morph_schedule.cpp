@@ -8,8 +8,10 @@
 
 namespace lbmshape {
 
-MorphSchedule::MorphSchedule(double gamma, double cs, int totalSteps, int annealFrom, int frames)
-    : gamma_(gamma), cs_(cs), gammaEnd_(gamma), csEnd_(cs), totalSteps_(totalSteps), annealFrom_(annealFrom), frameSteps_(size_t(frames))
+MorphSchedule::MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom,
+                             int frames)
+    : gamma_(gamma), cs_(cs), gammaEnd_(gammaEnd), csEnd_(csEnd), totalSteps_(totalSteps), annealFrom_(annealFrom),
+      frameSteps_(size_t(frames))
 {
   const int intervals = frames - 1;
   for (int k = 0; k < frames; ++k)
@@ -18,8 +20,8 @@ MorphSchedule::MorphSchedule(double gamma, double cs, int totalSteps, int anneal
 
 MorphSchedule MorphSchedule::fixed(const MorphOptions& o)
 {
-  const long total = o.steps ? long(*o.steps) : long(o.stepsPerFrame.value_or(1)) * (o.frames - 1);
-  return MorphSchedule(o.gamma, o.cs, int(total), int(total), o.frames);
+  const int total = int(givenStepCount(o));
+  return MorphSchedule(o.gamma, o.cs, o.gamma, o.cs, total, total, o.frames);
 }
 
 int MorphSchedule::stepsToArrive(double initialError, double cs, double tolerance)
@@ -33,10 +35,8 @@ int MorphSchedule::stepsToArrive(double initialError, double cs, double toleranc
 MorphSchedule MorphSchedule::arriving(const MorphOptions& o, double initialError)
 {
   const int total = stepsToArrive(initialError, o.cs, o.tolerance);
-  MorphSchedule s(o.gamma, o.cs, total, total / 2, o.frames);
-  s.gammaEnd_ = std::min(o.gamma, arrivalGamma);
-  s.csEnd_ = std::max(o.cs, arrivalCs);
-  return s;
+  return MorphSchedule(o.gamma, o.cs, std::min(o.gamma, arrivalGamma), std::max(o.cs, arrivalCs), total, total / 2,
+                       o.frames);
 }
 
 double MorphSchedule::gammaAt(int step) const

@@ -66,7 +66,7 @@ public:
   double totalDiffusion() const;
 
 private:
-  MorphSchedule(double gamma, double cs, int totalSteps, int annealFrom, int frames);
+  MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom, int frames);
   double closingLeft(int step) const;
 
   double gamma_, cs_;

@@ -13,6 +13,7 @@ struct DenoiseArguments {
   double voxel = 0.0;
   const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
   bool anisotropic = false, preserveFeatures = false;
+  std::string preview;
 };
 
 void runDenoise(const CommonOptions& common, DenoiseArguments& a)
@@ -22,6 +23,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   if (a.voxelOption->count() > 0) a.options.grid.voxel = a.voxel;
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
+  if (!a.preview.empty()) a.options.preview = a.preview;
   checkDenoiseOptions(a.options);  // before the device is opened
   DenoiseResult result = denoiseFile(a.input, a.output, a.options, common.computeDevice());
   common.report(result.report);
@@ -54,6 +56,7 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
+  cmd->add_option("--preview", a->preview, "Also draw the input and the result side by side into this PNG picture");
   cmd->add_flag("--force", a->options.replaceInput, "Write the result even where the output is the input mesh");
   cmd->callback([&common, a] { runDenoise(common, *a); });
 }

@@ -17,6 +17,10 @@ const std::map<std::string, std::vector<std::string>> positionals = {
     {"morph", {"source", "target", "output"}},
 };
 
+// Options whose value is a path: like the positionals, relative to the
+// jobs file's folder.
+bool takesPath(const std::string& key) { return key == "preview"; }
+
 // CLI11 names the type an option converts its text to.
 bool takesWholeNumber(const CLI::Option& o) { return o.get_type_name().rfind("INT", 0) == 0 || o.get_type_name().rfind("UINT", 0) == 0; }
 bool takesNumber(const CLI::Option& o) { return takesWholeNumber(o) || o.get_type_name().rfind("FLOAT", 0) == 0; }
@@ -75,7 +79,9 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
       if (value.get<bool>()) args.push_back("--" + key);
     } else {
       // One argument, so that a value starting with '-' is never taken for an option.
-      args.push_back("--" + key + "=" + optionText(key, value, *option));
+      std::string text = optionText(key, value, *option);
+      if (takesPath(key) && !fs::path(text).is_absolute()) text = (base / text).string();
+      args.push_back("--" + key + "=" + text);
     }
   }
   return args;

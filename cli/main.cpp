@@ -86,6 +86,7 @@ int main(int argc, char** argv)
   cli::addMorphCommand(app, common);
   cli::addRunCommand(app, common);
   cli::addCompareCommand(app, common);
+  cli::addRenderCommand(app, common);
   cli::addNoiseCommand(app, common);
   cli::addInfoCommand(app, common);
   cli::addBenchCommand(app, common);

@@ -12,6 +12,8 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common);
 void addMorphCommand(CLI::App& app, const CommonOptions& common);
 // `lbmshape compare A B`: distances and topology of two meshes.
 void addCompareCommand(CLI::App& app, const CommonOptions& common);
+// `lbmshape render MESH... OUT.png`: draw meshes into a picture.
+void addRenderCommand(CLI::App& app, const CommonOptions& common);
 // `lbmshape noise IN OUT`: a copy with Gaussian noise along the normals.
 void addNoiseCommand(CLI::App& app, const CommonOptions& common);
 

@@ -14,6 +14,7 @@ struct MorphArguments {
   // (and refuse), not the same as no --steps.
   CLI::Option *voxelGiven = nullptr, *stepsPerFrameGiven = nullptr, *stepsGiven = nullptr;
   bool noAnimation = false;
+  std::string preview;
 };
 
 void runMorph(const CommonOptions& common, MorphArguments& a)
@@ -22,6 +23,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (a.stepsPerFrameGiven->count()) a.options.stepsPerFrame = a.stepsPerFrame;
   if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
+  if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.frameFigures = common.json;  // only the JSON report shows them
   checkMorphOptions(a.options);  // before the device is opened
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
@@ -62,6 +64,8 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
+  cmd->add_option("--preview", a->preview,
+                  "Also draw a contact sheet into this PNG picture: the source, six frames and the target");
   cmd->add_option("--tolerance", a->options.tolerance,
                   "Converged when max |X - X_target| within a voxel of the target is below this (voxels)")
       ->capture_default_str();

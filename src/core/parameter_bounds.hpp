@@ -26,4 +26,13 @@ inline constexpr double maxCs = 1.0;
 // Surface samples of compare, per mesh: about 100 bytes each.
 inline constexpr std::size_t maxSamples = 10'000'000;
 
+// Pictures (render, --preview): a side of at most 8192 pixels and at most
+// 16.8 M pixels in all, about 700 MB of device memory with 4 samples per
+// pixel and their depth; larger is a typo for a picture a person looks at.
+inline constexpr int minPictureSide = 16;
+inline constexpr int maxPictureSide = 8192;
+inline constexpr long maxPicturePixels = 4096L * 4096L;
+// Meshes one picture shows from a folder: cells of a contact sheet.
+inline constexpr int maxFolderMeshes = 256;
+
 }  // namespace lbmshape::parameter_bounds

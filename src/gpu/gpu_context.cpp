@@ -20,6 +20,17 @@ uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device)
   throw DeviceError("the Vulkan device has no compute queue");
 }
 
+// The family that draws: the compute one where it can, so that one queue
+// serves both; otherwise the first with graphics, if any.
+std::optional<uint32_t> graphicsQueueFamily(const vk::raii::PhysicalDevice& device, uint32_t computeFamily)
+{
+  auto families = device.getQueueFamilyProperties();
+  if (families[computeFamily].queueFlags & vk::QueueFlagBits::eGraphics) return computeFamily;
+  for (uint32_t i = 0; i < families.size(); ++i)
+    if (families[i].queueFlags & vk::QueueFlagBits::eGraphics) return i;
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::unique_ptr<GpuContext> GpuContext::open(const GpuOptions& options)
@@ -38,12 +49,24 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
   log::verbose("device: " + description_.name + " [" + description_.type + ", " + description_.driver + "]");
 
   queueFamily_ = computeQueueFamily(*physical_);
+  const std::optional<uint32_t> graphicsFamily = graphicsQueueFamily(*physical_, queueFamily_);
   float priority = 1.0f;
-  vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
-  device_ = vk::raii::Device(*physical_, vk::DeviceCreateInfo({}, queueInfo));
+  std::vector<vk::DeviceQueueCreateInfo> queueInfos{{{}, queueFamily_, 1, &priority}};
+  if (graphicsFamily && *graphicsFamily != queueFamily_) queueInfos.emplace_back(vk::DeviceQueueCreateFlags(), *graphicsFamily, 1, &priority);
+  // Wireframes are drawn as lines, where the device can.
+  vk::PhysicalDeviceFeatures features;
+  fillModeNonSolid_ = graphicsFamily && physical_->getFeatures().fillModeNonSolid;
+  features.fillModeNonSolid = fillModeNonSolid_;
+  device_ = vk::raii::Device(*physical_, vk::DeviceCreateInfo({}, queueInfos, {}, {}, &features));
   queue_ = vk::raii::Queue(device_, queueFamily_, 0);
   commandPool_ = vk::raii::CommandPool(
       device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily_));
+  if (graphicsFamily) {
+    graphics_.emplace();
+    graphics_->queue = vk::raii::Queue(device_, *graphicsFamily, 0);
+    graphics_->pool = vk::raii::CommandPool(
+        device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily));
+  }
   fence_ = vk::raii::Fence(device_, vk::FenceCreateInfo());
   pipelineCache_.emplace(device_, defaultPipelineCachePath(properties_));
   log::verbose("pipeline cache: " +
@@ -85,7 +108,19 @@ ComputeProgram& GpuContext::program(const ProgramSpec& spec)
 void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
   vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
-  vk::raii::CommandBuffer& cmd = buffers[0];
+  submitAndWait(queue_, buffers[0], record);
+}
+
+void GpuContext::drawAndWait(const std::function<void(vk::CommandBuffer)>& record)
+{
+  if (!graphics_) throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with --device");
+  vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*graphics_->pool, vk::CommandBufferLevel::ePrimary, 1));
+  submitAndWait(graphics_->queue, buffers[0], record);
+}
+
+void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::raii::CommandBuffer& cmd,
+                               const std::function<void(vk::CommandBuffer)>& record)
+{
   cmd.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
   // Whatever earlier submissions wrote is visible to this one: submissions
   // are ordered by the fence wait, but their memory needs this barrier.
@@ -96,7 +131,7 @@ void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record
   record(*cmd);
   cmd.end();
   vk::CommandBuffer handle = *cmd;
-  queue_.submit(vk::SubmitInfo({}, {}, handle), *fence_);
+  queue.submit(vk::SubmitInfo({}, {}, handle), *fence_);
   if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
     throw DeviceError("timed out waiting for the Vulkan device");
   device_.resetFences(*fence_);

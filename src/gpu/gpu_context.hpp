@@ -1,6 +1,7 @@
 // One Vulkan device ready for compute: the instance, the chosen physical
 // device, a compute queue, a command pool, the persisted pipeline cache and
-// the compiled compute programs. It outlives every buffer and solver made
+// the compiled compute programs; and, where the device can draw, a graphics
+// queue for the pictures (render/). It outlives every buffer and solver made
 // from it, and jobs in one process share it (and its compiled pipelines).
 #pragma once
 
@@ -54,6 +55,15 @@ public:
   // Records commands into a fresh command buffer, submits it and waits.
   void runAndWait(const std::function<void(vk::CommandBuffer)>& record);
 
+  // Whether the device has a queue that draws (every GPU and lavapipe do; a
+  // compute-only accelerator does not), and whether it draws lines
+  // (fillModeNonSolid, for wireframes).
+  bool canDraw() const { return graphics_.has_value(); }
+  bool canDrawLines() const { return fillModeNonSolid_; }
+  // The same as runAndWait, on the graphics queue (DeviceError without one).
+  void drawAndWait(const std::function<void(vk::CommandBuffer)>& record);
+  const vk::raii::PipelineCache& pipelineCache() { return pipelineCache_->cache(); }
+
   // Time spent creating pipelines so far (ms): the start-up cost the
   // pipeline cache is there to cut.
   double pipelineCreationMs() const { return pipelineCreationMs_; }
@@ -65,10 +75,21 @@ private:
   vk::raii::PhysicalDevice* physical_ = nullptr;
   vk::PhysicalDeviceProperties properties_;
   vk::PhysicalDeviceMemoryProperties memoryProperties_;
+  // A queue with its own command pool: compute, and graphics where that is
+  // another family (one queue serves both where the family can do both).
+  struct Submission {
+    vk::raii::Queue queue{nullptr};
+    vk::raii::CommandPool pool{nullptr};
+  };
+  void submitAndWait(vk::raii::Queue& queue, vk::raii::CommandBuffer& cmd,
+                     const std::function<void(vk::CommandBuffer)>& record);
+
   uint32_t queueFamily_ = 0;
   vk::raii::Device device_{nullptr};
   vk::raii::Queue queue_{nullptr};
   vk::raii::CommandPool commandPool_{nullptr};
+  std::optional<Submission> graphics_;
+  bool fillModeNonSolid_ = false;
   vk::raii::Fence fence_{nullptr};
   std::optional<PipelineCacheFile> pipelineCache_;
   std::map<std::string, std::unique_ptr<ComputeProgram>> programs_;

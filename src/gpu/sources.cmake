@@ -4,6 +4,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/driver_modules.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gpu_buffer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gpu_context.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gpu_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pipeline_cache_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vulkan_instance.cpp
 )

@@ -37,6 +37,17 @@ gpu::GpuContext* ComputeDevice::gpu() const
   return gpu_.get();
 }
 
+gpu::GpuContext& ComputeDevice::drawingContext() const
+{
+  if (!isReference()) return *gpu();
+  if (!gpu_) {
+    if (!instance_) instance_ = std::make_shared<gpu::VulkanInstance>(validation_);
+    chosen_ = gpu::chooseDevice(instance_->devices(), "");
+    gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
+  }
+  return *gpu_;
+}
+
 std::string ComputeDevice::name() const { return isReference() ? "reference (CPU)" : description().name; }
 
 namespace {

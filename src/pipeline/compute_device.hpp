@@ -35,6 +35,10 @@ public:
   // The chosen Vulkan device, opened on first use; null for the reference.
   gpu::GpuContext* gpu() const;
 
+  // The Vulkan device that draws pictures (render, --preview): the chosen
+  // one, or for the reference solver the best there is, opened on first use.
+  gpu::GpuContext& drawingContext() const;
+
   // A solver for a lattice of this size; throws UsageError when it does not
   // fit the device, before allocating anything.
   std::unique_ptr<LatticeSolver> makeSolver(const Extent3& extent) const;

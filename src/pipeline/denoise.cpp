@@ -13,6 +13,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
+#include "pipeline/render_job.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "lbm/band_width.hpp"
 #include "sdf/band_signed_distance.hpp"
@@ -218,6 +219,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   relaxation::warnIfInaccurate(o.gamma, o.steps, "--gamma");
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output);
+  if (o.preview) checkPreviewPath(*o.preview);
   StageClock clock;
 
   TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
@@ -234,6 +236,11 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
   clock.time("write", [&] { writeMesh(result, output); });
   device.requireCleanValidation();
+  if (o.preview)
+    clock.time("preview", [&] {
+      writePreview({{&mesh, "input: " + input.filename().string()}, {&result, "output: " + output.filename().string()}},
+                   render::parseView("front"), *o.preview, device);
+    });
 
   const MeshTopology outputTopology = analyzeTopology(result);
   const double lbmMs = clock.ms("lbm");
@@ -258,6 +265,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                             : nlohmann::json(nullptr)}};
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
+  report["preview"] = o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr);
   return {std::move(result), std::move(report)};
 }
 

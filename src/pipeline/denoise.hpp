@@ -40,6 +40,8 @@ struct DenoiseOptions {
   // --noise runs on the grid.
   bool dense = false;
   bool replaceInput = false;  // the output may be the input file (--force)
+  // A picture of the input and the output side by side (--preview).
+  std::optional<std::filesystem::path> preview;
 };
 
 struct DenoiseResult {

@@ -27,6 +27,7 @@
 #include "pipeline/morph_frame_report.hpp"
 #include "pipeline/morph_lattice.hpp"
 #include "pipeline/morph_schedule.hpp"
+#include "pipeline/render_job.hpp"
 #include "pipeline/stage_clock.hpp"
 
 namespace lbmshape {
@@ -67,6 +68,23 @@ Placement placeTarget(const Bounds& source, const Bounds& target, Alignment alig
 }
 
 Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
+
+// The contact sheet of --preview: the source, six frames evenly chosen
+// between the first and the last (both included), and the target as placed.
+void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, const std::vector<TriangleMesh>& frames,
+                       const fs::path& sourcePath, const fs::path& targetPath, const fs::path& png, const ComputeDevice& device)
+{
+  constexpr int shownFrames = 6;
+  std::vector<ShownMesh> shown{{&source, "source: " + sourcePath.filename().string()}};
+  const int n = int(frames.size()), count = std::min(n, shownFrames);
+  for (int i = 0; i < count; ++i) {
+    const int k = count == 1 ? n - 1 : int((long(i) * (n - 1) + (count - 1) / 2) / (count - 1));
+    shown.push_back({&frames[size_t(k)], "frame " + std::to_string(k)});
+  }
+  shown.push_back({&target, "target: " + targetPath.filename().string()});
+  // From above at an angle: a morph often changes a shape in depth too.
+  writePreview(shown, render::parseView("iso"), png, device);
+}
 
 bool isOurFile(const fs::path& file)
 {
@@ -205,6 +223,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 {
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
+  if (o.preview) checkPreviewPath(*o.preview, folder);
   StageClock clock;
 
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
@@ -221,7 +240,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                                         double(frame.extent.ny) * frame.extent.ny + double(frame.extent.nz) * frame.extent.nz);
   const MorphSchedule longest = stepsGiven(o) ? MorphSchedule::fixed(o) : MorphSchedule::arriving(o, gridDiagonal);
   const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, longest, device, clock, [&] {
-    if (o.animation) checkAnimationFits(source, target, frame.voxel, o.frames);
+    // The animation, and the preview's frames, hold every frame in memory.
+    if (o.animation || o.preview) checkAnimationFits(source, target, frame.voxel, o.frames);
   });
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
@@ -241,7 +261,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   SteppingSolver& solver = lattice->solver();
 
   FrameWriter writer(frame, folder, "." + o.format, o.frames,
-                     o.animation ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame,
+                     o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame,
                      o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
                        frameReport.surface(k, field, mesh);
                      })
@@ -318,6 +338,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   interrupt::check(std::to_string(o.frames) + " complete frames in " + folder.string());
   if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb"); });
   device.requireCleanValidation();
+  if (o.preview) clock.time("preview", [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
 
   newFolder.keep();
   const bool converged = lastError < o.tolerance;
@@ -372,7 +393,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                      {"closed_manifold", last.closedManifold},
                      {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
                      {"triangles", meshes.back().triangleCount()}}},
-          {"animation", o.animation ? nlohmann::json((folder / "morph.glb").string()) : nlohmann::json(nullptr)}};
+          {"animation", o.animation ? nlohmann::json((folder / "morph.glb").string()) : nlohmann::json(nullptr)},
+          {"preview", o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace lbmshape

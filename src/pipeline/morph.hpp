@@ -35,6 +35,9 @@ struct MorphOptions {
   double fps = 24.0;               // of the animation in morph.glb
   bool animation = true;           // write morph.glb
   bool force = false;              // write into a non-empty folder
+  // A contact sheet (--preview): the source, evenly chosen frames and the
+  // target (as placed), labelled.
+  std::optional<std::filesystem::path> preview;
   // Converged: max |X - X_target| within a voxel of the target's surface
   // below this (voxels). A morph that arrives runs until it should be; with
   // given steps the lattice stops early once it is.

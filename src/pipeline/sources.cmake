@@ -9,5 +9,6 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/morph_frame_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_schedule.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_lattice.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/render_job.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stage_clock.cpp
 )

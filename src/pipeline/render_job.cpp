@@ -1,0 +1,243 @@
+#include "pipeline/render_job.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/parameter_bounds.hpp"
+#include "core/stopwatch.hpp"
+#include "gpu/gpu_context.hpp"
+#include "mesh/mesh_format.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "pipeline/stage_clock.hpp"
+#include "render/colour_map.hpp"
+#include "render/layout.hpp"
+#include "render/picture.hpp"
+#include "render/png_file.hpp"
+#include "render/surface_renderer.hpp"
+#include "render/surface_values.hpp"
+#include "render/text_overlay.hpp"
+#include "sdf/triangle_bvh.hpp"
+
+namespace fs = std::filesystem;
+
+namespace lbmshape {
+namespace {
+
+// Whole positive number, or nothing.
+std::optional<int> wholeNumber(const std::string& text)
+{
+  if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+    return std::nullopt;
+  return std::atoi(text.c_str());
+}
+
+// The legend and each mesh's colours for the chosen colouring: one scale
+// for every mesh of the picture, so that equal colours mean equal values.
+std::optional<render::Legend> colourPanels(std::vector<render::Panel>& panels, const Colouring& colouring,
+                                           const TriangleMesh* reference)
+{
+  if (colouring.by == Colouring::By::Plain) return std::nullopt;
+  std::vector<std::vector<double>> values;
+  std::optional<TriangleBvh> tree;
+  if (colouring.by == Colouring::By::Distance) tree.emplace(*reference, TriangleBvh::Queries::ClosestOnly);
+  std::vector<double> all;
+  for (const render::Panel& p : panels) {
+    values.push_back(colouring.by == Colouring::By::Curvature ? render::vertexMeanCurvature(*p.mesh)
+                                                              : render::vertexDistances(*p.mesh, *tree));
+    all.insert(all.end(), values.back().begin(), values.back().end());
+  }
+  render::Legend legend;
+  if (colouring.by == Colouring::By::Curvature) {
+    // The 95th percentile of |H|: the noise of a scan, or a sharp edge,
+    // would otherwise leave the rest of the surface grey.
+    const double scale = render::quantile(all, 0.95, true);
+    legend = {"mean curvature (1/unit), 95% of vertices within the scale", -(scale > 0 ? scale : 1.0), scale > 0 ? scale : 1.0, true};
+  } else {
+    const double scale = render::quantile(all, 0.99, true);
+    legend = {"distance to " + colouring.reference.filename().string() + " (mesh units)", 0.0, scale > 0 ? scale : 1.0, false};
+  }
+  for (size_t i = 0; i < panels.size(); ++i) {
+    panels[i].colours.resize(values[i].size());
+    for (size_t v = 0; v < values[i].size(); ++v) panels[i].colours[v] = render::legendColour(legend, values[i][v]);
+  }
+  return legend;
+}
+
+bool isFrameFile(const fs::path& file)
+{
+  return file.filename().string().rfind("frame_", 0) == 0;
+}
+
+std::vector<fs::path> meshFilesIn(const fs::path& folder)
+{
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec))
+    if (entry.is_regular_file(ec) && meshFormatOf(entry.path())) files.push_back(entry.path());
+  if (ec) throw InputError("cannot list the folder " + folder.string() + ": " + ec.message());
+  if (std::any_of(files.begin(), files.end(), isFrameFile)) std::erase_if(files, [](const fs::path& f) { return !isFrameFile(f); });
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// `count` of `items` at even spacing, the first and last among them.
+template <typename T>
+std::vector<T> evenlyChosen(const std::vector<T>& items, int count)
+{
+  if (int(items.size()) <= count) return items;
+  std::vector<T> chosen;
+  for (int i = 0; i < count; ++i)
+    chosen.push_back(items[size_t(count == 1 ? 0 : (long(i) * long(items.size() - 1) + (count - 1) / 2) / (count - 1))]);
+  return chosen;
+}
+
+}  // namespace
+
+Colouring parseColouring(const std::string& text)
+{
+  if (text == "none") return {};
+  if (text == "curvature") return {Colouring::By::Curvature, {}};
+  const std::string prefix = "distance:";
+  if (text.rfind(prefix, 0) == 0 && text.size() > prefix.size()) return {Colouring::By::Distance, text.substr(prefix.size())};
+  throw UsageError("--color '" + text + "' is not none, curvature or distance:REFERENCE_MESH");
+}
+
+void checkPictureSize(glm::ivec2 size, const std::string& given)
+{
+  namespace bounds = parameter_bounds;
+  if (size.x < bounds::minPictureSide || size.y < bounds::minPictureSide || size.x > bounds::maxPictureSide ||
+      size.y > bounds::maxPictureSide || long(size.x) * long(size.y) > bounds::maxPicturePixels)
+    throw UsageError("--size " + given + " is outside the pictures lbmshape draws: each side " +
+                     std::to_string(bounds::minPictureSide) + " to " + std::to_string(bounds::maxPictureSide) +
+                     " pixels, at most " + std::to_string(bounds::maxPicturePixels) + " pixels in all (4096x4096)");
+}
+
+glm::ivec2 parsePictureSize(const std::string& text)
+{
+  const size_t x = text.find_first_of("xX");
+  const std::optional<int> w = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(0, x));
+  const std::optional<int> h = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(x + 1));
+  if (!w || !h) throw UsageError("--size '" + text + "' is not WIDTHxHEIGHT in pixels (for example 1024x768)");
+  checkPictureSize({*w, *h}, text);
+  return {*w, *h};
+}
+
+void checkRenderOptions(const RenderOptions& o)
+{
+  if (o.folderMeshes < 1 || o.folderMeshes > parameter_bounds::maxFolderMeshes)
+    throw UsageError("--count must be 1 to " + std::to_string(parameter_bounds::maxFolderMeshes));
+  if (o.columns < 0 || o.columns > parameter_bounds::maxFolderMeshes)
+    throw UsageError("--columns must be 0 (automatic) to " + std::to_string(parameter_bounds::maxFolderMeshes));
+  if (o.size) checkPictureSize(*o.size, std::to_string(o.size->x) + "x" + std::to_string(o.size->y));
+}
+
+render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& o, const ComputeDevice& device,
+                         nlohmann::json* figures)
+{
+  render::Picture picture;
+  picture.view = o.view;
+  picture.wireframe = o.wireframe;
+  picture.labels = o.labels;
+  picture.columns = o.columns;
+  for (const ShownMesh& m : meshes) picture.panels.push_back({m.mesh, {}, m.label});
+  std::optional<TriangleMesh> reference;
+  if (o.colouring.by == Colouring::By::Distance) reference = readMesh(o.colouring.reference);
+  Stopwatch colouring;
+  picture.legend = colourPanels(picture.panels, o.colouring, reference ? &*reference : nullptr);
+  const double colouringMs = colouring.ms();
+  const glm::ivec2 size = o.size.value_or(render::defaultPictureSize(int(meshes.size()), o.labels, picture.legend.has_value(), o.columns));
+  picture.width = size.x, picture.height = size.y;
+
+  const render::Layout layout = render::arrange(picture);
+  gpu::GpuContext& context = device.drawingContext();
+  Stopwatch drawing;
+  render::Image image = render::drawSurfaces(context, picture, layout);
+  const double drawMs = drawing.ms();
+  for (size_t i = 0; i < layout.labelCells.size(); ++i)
+    render::drawLabel(image, layout.labelCells[i], picture.panels[i].label, layout.textScale);
+  if (picture.legend) render::drawLegend(image, *layout.legend, *picture.legend, layout.textScale);
+  device.requireCleanValidation();
+  if (figures) {
+    *figures = {{"size", {picture.width, picture.height}},
+                {"samples_per_pixel", render::samplesPerPixel(context)},
+                {"columns", layout.columns},
+                {"rows", layout.rows},
+                {"draw_ms", drawMs},
+                {"colour_ms", colouringMs}};
+    if (picture.legend)
+      (*figures)["legend"] = {{"title", picture.legend->title}, {"low", picture.legend->low}, {"high", picture.legend->high}};
+  }
+  return image;
+}
+
+std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int perFolder)
+{
+  std::vector<fs::path> files;
+  for (const fs::path& path : paths) {
+    std::error_code ec;
+    if (!fs::is_directory(path, ec)) {
+      files.push_back(path);  // the reader says what is wrong with it, if anything
+      continue;
+    }
+    const std::vector<fs::path> inFolder = meshFilesIn(path);
+    if (inFolder.empty()) throw InputError("the folder " + path.string() + " holds no mesh file");
+    for (const fs::path& f : evenlyChosen(inFolder, perFolder)) files.push_back(f);
+  }
+  return files;
+}
+
+nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& png, const RenderOptions& o,
+                           const ComputeDevice& device)
+{
+  checkRenderOptions(o);
+  render::requirePngPath(png, "the picture");
+  const std::vector<fs::path> files = meshesToRender(paths, o.folderMeshes);
+  AtomicFile file(png);  // an unwritable path fails here, before the meshes are read
+  StageClock clock;
+  std::vector<TriangleMesh> meshes;
+  clock.time("read", [&] {
+    for (const fs::path& f : files) meshes.push_back(readMesh(f));
+  });
+  std::vector<ShownMesh> shown;
+  nlohmann::json panels = nlohmann::json::array();
+  for (size_t i = 0; i < files.size(); ++i) {
+    shown.push_back({&meshes[i], files[i].filename().string()});
+    panels.push_back({{"path", files[i].string()}, {"triangles", meshes[i].triangleCount()}});
+  }
+  nlohmann::json figures;
+  const render::Image image = clock.time("draw", [&] { return drawMeshes(shown, o, device, &figures); });
+  clock.time("write", [&] { render::writePng(image, file); });
+  nlohmann::json report = {{"command", "render"}, {"output", png.string()}, {"meshes", panels}, {"device", device.name()}};
+  report.update(figures);
+  report["ms"] = clock.toJson();
+  return report;
+}
+
+void checkPreviewPath(const fs::path& png, const fs::path& createdLater)
+{
+  render::requirePngPath(png, "--preview");
+  std::error_code ec;
+  if (!createdLater.empty() && fs::weakly_canonical(png.parent_path().empty() ? "." : png.parent_path(), ec) ==
+                                   fs::weakly_canonical(createdLater, ec))
+    return;
+  AtomicFile probe(png);  // created and, uncommitted, removed again
+}
+
+double writePreview(const std::vector<ShownMesh>& meshes, const render::View& view, const fs::path& png,
+                    const ComputeDevice& device)
+{
+  Stopwatch watch;
+  RenderOptions o;
+  o.labels = true;
+  o.view = view;
+  const render::Image image = drawMeshes(meshes, o, device);
+  AtomicFile file(png);
+  render::writePng(image, file);
+  log::verbose("preview " + png.string() + " in " + std::to_string(int(watch.ms())) + " ms");
+  return watch.ms();
+}
+
+}  // namespace lbmshape

@@ -1,0 +1,76 @@
+// lbmshape render, and the previews of denoise and morph: meshes (from
+// files, or held in memory) to one PNG picture, drawn on the Vulkan device
+// (render/). The options are checked before any mesh is read or any device
+// opened.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "mesh/triangle_mesh.hpp"
+#include "pipeline/compute_device.hpp"
+#include "render/image.hpp"
+#include "render/view.hpp"
+
+namespace lbmshape {
+
+// What the surfaces are coloured by (--color): nothing, their mean
+// curvature, or their distance to a reference mesh.
+struct Colouring {
+  enum class By { Plain, Curvature, Distance } by = By::Plain;
+  std::filesystem::path reference;  // for Distance
+};
+// none, curvature or distance:REF; UsageError naming --color otherwise.
+Colouring parseColouring(const std::string& text);
+// "WxH"; UsageError naming --size unless both are whole numbers within
+// parameter_bounds (pictureSide, picturePixels).
+glm::ivec2 parsePictureSize(const std::string& text);
+
+struct RenderOptions {
+  std::optional<glm::ivec2> size;  // the whole picture; by default from the number of meshes
+  render::View view;
+  Colouring colouring;
+  bool wireframe = false;
+  bool labels = false;
+  int columns = 0;       // of the grid of meshes; 0: by their number
+  int folderMeshes = 8;  // a folder shows this many of its meshes, evenly chosen, first and last included
+};
+void checkRenderOptions(const RenderOptions& options);
+
+// A mesh to draw and its label; the mesh is held by the caller.
+struct ShownMesh {
+  const TriangleMesh* mesh = nullptr;
+  std::string label;
+};
+
+// The picture of these meshes, one per cell, under one camera. `figures`,
+// when given, receives the picture's size, samples and colour scale.
+render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& options, const ComputeDevice& device,
+                         nlohmann::json* figures = nullptr);
+
+// Mesh files, with each folder replaced by its mesh files in name order
+// (only its frame_* files where it has any: a morph's folder), evenly
+// chosen down to `perFolder` with the first and last kept. InputError for a
+// path that is neither, or a folder with no mesh file.
+std::vector<std::filesystem::path> meshesToRender(const std::vector<std::filesystem::path>& paths, int perFolder);
+
+// lbmshape render: reads the meshes, draws them, writes `png` (atomically).
+// Returns the JSON report.
+nlohmann::json renderFiles(const std::vector<std::filesystem::path>& paths, const std::filesystem::path& png,
+                           const RenderOptions& options, const ComputeDevice& device);
+
+// Before any work of a job with a preview: the path is a .png (UsageError
+// naming --preview) in a folder that can be written (OutputError), unless
+// the folder is `createdLater` (a morph's output folder).
+void checkPreviewPath(const std::filesystem::path& png, const std::filesystem::path& createdLater = {});
+// A labelled preview picture of meshes in memory, seen from `view`,
+// written to `png`; returns the milliseconds it took.
+double writePreview(const std::vector<ShownMesh>& meshes, const render::View& view, const std::filesystem::path& png,
+                    const ComputeDevice& device);
+
+}  // namespace lbmshape

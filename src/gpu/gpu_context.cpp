@@ -62,10 +62,9 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
   commandPool_ = vk::raii::CommandPool(
       device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily_));
   if (graphicsFamily) {
-    graphics_.emplace();
-    graphics_->queue = vk::raii::Queue(device_, *graphicsFamily, 0);
-    graphics_->pool = vk::raii::CommandPool(
-        device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily));
+    graphics_.emplace(Submission{vk::raii::Queue(device_, *graphicsFamily, 0),
+                                 vk::raii::CommandPool(device_, vk::CommandPoolCreateInfo(
+                                                                    vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily))});
   }
   fence_ = vk::raii::Fence(device_, vk::FenceCreateInfo());
   pipelineCache_.emplace(device_, defaultPipelineCachePath(properties_));

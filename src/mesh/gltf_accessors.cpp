@@ -126,6 +126,19 @@ std::vector<glm::dvec3> GltfAccessors::vectors(int index, const std::string& wha
   return out;
 }
 
+std::vector<glm::vec3> GltfAccessors::colours(int index, const std::string& what) const
+{
+  const bool withAlpha = index >= 0 && size_t(index) < model_.accessors.size() &&
+                         model_.accessors[size_t(index)].type == TINYGLTF_TYPE_VEC4;
+  const int type = withAlpha ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3;
+  const tinygltf::Accessor& a = accessor(index, type, what);
+  std::vector<glm::vec3> out(count(index, type, what), glm::vec3(1.0f));
+  read(a, withAlpha ? 4 : 3, what, [&](uint64_t i, int c, double value) {
+    if (c < 3) out[i][c] = float(std::isfinite(value) ? std::clamp(value, 0.0, 1.0) : 0.0);
+  });
+  return out;
+}
+
 std::vector<uint32_t> GltfAccessors::indices(int index, uint64_t below, const std::string& what) const
 {
   const tinygltf::Accessor& a = accessor(index, TINYGLTF_TYPE_SCALAR, what);

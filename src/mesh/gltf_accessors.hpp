@@ -28,6 +28,9 @@ public:
   // A VEC3 accessor's elements (float, or normalized integers scaled to
   // [-1, 1] or [0, 1], as glTF defines them), sparse substitution applied.
   std::vector<glm::dvec3> vectors(int accessor, const std::string& what) const;
+  // A VEC3 or VEC4 accessor's elements as RGB (alpha dropped), each in
+  // [0, 1]: COLOR_0 (float, or normalized unsigned integers).
+  std::vector<glm::vec3> colours(int accessor, const std::string& what) const;
   // A SCALAR accessor's elements as indices; each must be below `below`.
   std::vector<uint32_t> indices(int accessor, uint64_t below, const std::string& what) const;
 

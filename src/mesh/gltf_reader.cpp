@@ -1,5 +1,7 @@
 #include "mesh/gltf_reader.hpp"
 
+#include <cmath>
+
 #include <cstring>
 #include <set>
 
@@ -162,6 +164,33 @@ private:
     return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
   }
 
+  // COLOR_0 is linear RGB; the mesh keeps colours as shown on a screen
+  // (sRGB). Where some primitives have colours and others not, the others
+  // are white, as glTF draws a primitive without COLOR_0.
+  void addColours(const tinygltf::Primitive& primitive, const std::string& name, uint32_t base, size_t count)
+  {
+    auto colour = primitive.attributes.find("COLOR_0");
+    std::vector<glm::vec3> colours;
+    if (colour != primitive.attributes.end()) {
+      colours = accessors_.colours(colour->second, name + " COLOR_0");
+      if (colours.size() != count)
+        source_.refuse(name + " has " + std::to_string(colours.size()) + " COLOR_0 values for " + std::to_string(count) +
+                       " positions");
+      for (glm::vec3& c : colours) c = linearToSrgb(c);
+    }
+    if (colours.empty() && mesh_.colours.empty()) return;
+    mesh_.colours.resize(base, glm::vec3(1.0f));
+    if (colours.empty()) colours.assign(count, glm::vec3(1.0f));
+    mesh_.colours.insert(mesh_.colours.end(), colours.begin(), colours.end());
+  }
+
+  static glm::vec3 linearToSrgb(glm::vec3 c)
+  {
+    for (int k = 0; k < 3; ++k)
+      c[k] = c[k] <= 0.0031308f ? 12.92f * c[k] : 1.055f * std::pow(c[k], 1.0f / 2.4f) - 0.055f;
+    return c;
+  }
+
   void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world)
   {
     const int mode = modeOf(primitive);
@@ -185,6 +214,7 @@ private:
 
     const auto base = uint32_t(mesh_.positions.size());
     for (const glm::dvec3& p : positions) mesh_.positions.emplace_back(world * glm::dvec4(p, 1.0));
+    addColours(primitive, name, base, positions.size());
     // A mirroring transform turns counter-clockwise faces clockwise (glTF
     // spec, 3.7.4); swapping two corners keeps them facing outwards.
     const bool mirrored = glm::determinant(world) < 0;

@@ -82,6 +82,10 @@ ChunkCounts count(std::string_view chunk)
 
 struct ChunkResult {
   std::vector<glm::uvec3> triangles;
+  // Vertex colours, where a vertex line has them ("v x y z r g b", as
+  // MeshLab and scanners write, each in [0, 1]): kept apart, since most
+  // files have none.
+  std::vector<std::pair<uint32_t, glm::vec3>> colours;
   size_t shortFaces = 0;             // fewer than 3 corners
   std::optional<std::string> fault;  // the chunk's first, with its line number
   std::exception_ptr exception;      // e.g. std::bad_alloc, rethrown after the threads
@@ -122,7 +126,16 @@ private:
       if (!value) return fail(result, text::quoted(line) + " is not a vertex with three finite coordinates");
       p[k] = *value;
     }
-    positions_[firstVertex_ + verticesRead_++] = p;
+    const auto index = uint32_t(firstVertex_ + verticesRead_++);
+    positions_[index] = p;
+    // Three more numbers are a colour; one more is the homogeneous w, unused.
+    glm::vec3 colour;
+    for (int k = 0; k < 3; ++k) {
+      const auto value = text::coordinate(text::nextToken(arguments));
+      if (!value) return;
+      colour[k] = float(std::clamp(*value, 0.0, 1.0));
+    }
+    result.colours.emplace_back(index, colour);
   }
 
   void face(std::string_view line, std::string_view arguments, std::vector<uint32_t>& corners, ChunkResult& result)
@@ -219,6 +232,11 @@ TriangleMesh readObj(const MeshSource& source)
     mesh.triangles.insert(mesh.triangles.end(), result.triangles.begin(), result.triangles.end());
     result.triangles = {};  // freed as soon as it is copied
   }
+  for (const ChunkResult& result : results)
+    for (const auto& [vertex, colour] : result.colours) {
+      if (mesh.colours.empty()) mesh.colours.assign(vertices, glm::vec3(1.0f));  // white where a vertex has none
+      mesh.colours[vertex] = colour;
+    }
   if (shortFaces)
     log::warning(source.name + ": skipped " + std::to_string(shortFaces) + " faces with fewer than 3 corners");
   return mesh;

@@ -7,7 +7,9 @@
 // defines converts to a coordinate or an index.
 #include "mesh/ply_reader.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 #include "core/log.hpp"
@@ -121,6 +123,8 @@ private:
 struct Layout {
   const PlyElement* vertex = nullptr;
   int coordinate[3] = {-1, -1, -1};
+  int colour[3] = {-1, -1, -1};  // red, green, blue; all three or none
+  bool coloured() const { return colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0; }
   const PlyElement* face = nullptr;
   int indices = -1;
 };
@@ -142,6 +146,12 @@ Layout layoutOf(const PlyHeader& header, const MeshSource& source)
       }
   for (int k = 0; k < 3; ++k)
     if (layout.coordinate[k] < 0) source.refuse("the vertex element has no '" + std::string(1, char('x' + k)) + "' property");
+  // Vertex colours, as scanners and MeshLab write them; ignored unless all
+  // three are plain values.
+  static const char* const colourNames[3] = {"red", "green", "blue"};
+  for (size_t p = 0; p < vertexProperties.size(); ++p)
+    for (int k = 0; k < 3; ++k)
+      if (vertexProperties[p].name == colourNames[k] && !vertexProperties[p].isList) layout.colour[k] = int(p);
   if (layout.face) {
     const auto& faceProperties = layout.face->properties;
     for (size_t p = 0; p < faceProperties.size(); ++p)
@@ -196,6 +206,7 @@ private:
   void readVertex(const PlyElement& element, TriangleMesh& mesh)
   {
     glm::dvec3 p(0.0);
+    glm::vec3 colour(1.0f);
     for (size_t i = 0; i < element.properties.size(); ++i) {
       const PlyProperty& property = element.properties[i];
       if (property.isList) {
@@ -203,10 +214,21 @@ private:
         continue;
       }
       const double value = values_.number(property.type);
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < 3; ++k) {
         if (layout_.coordinate[k] == int(i)) p[k] = value;
+        if (layout_.colour[k] == int(i)) colour[k] = colourValue(value, property.type);
+      }
     }
     mesh.positions.push_back(p);
+    if (layout_.coloured()) mesh.colours.push_back(colour);
+  }
+
+  // Integers count up to their type's largest value (255 for uchar, the
+  // usual), floating-point values up to 1.
+  static float colourValue(double value, PlyType type)
+  {
+    const double full = type == PlyType::UInt16 || type == PlyType::Int16 ? 65535.0 : isInteger(type) ? 255.0 : 1.0;
+    return std::isfinite(value) ? float(std::clamp(value / full, 0.0, 1.0)) : 0.0f;
   }
 
   void readFace(const PlyElement& element, TriangleMesh& mesh)
@@ -288,6 +310,7 @@ size_t readBody(const MeshSource& source, const PlyHeader& header, const Layout&
   // Exact for the vertices (counts were checked against the body); the
   // triangles grow as faces are read, since a face may be empty.
   mesh.positions.reserve(size_t(layout.vertex->count));
+  if (layout.coloured()) mesh.colours.reserve(size_t(layout.vertex->count));
   BodyReader<Values> reader(header, layout, values);
   reader.read(source, mesh);
   return reader.shortFaces();

@@ -15,6 +15,10 @@ struct TriangleMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::uvec3> triangles;
   std::vector<glm::vec3> normals;  // per vertex; empty when not known
+  // Per vertex, as shown on a screen (sRGB, 0..1): a scan's colours (glTF
+  // COLOR_0, PLY red/green/blue), which the pictures show as they are.
+  // Empty when the file has none; lbmshape's own results have none.
+  std::vector<glm::vec3> colours;
 
   size_t vertexCount() const { return positions.size(); }
   size_t triangleCount() const { return triangles.size(); }

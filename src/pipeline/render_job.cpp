@@ -142,7 +142,9 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
   picture.wireframe = o.wireframe;
   picture.labels = o.labels;
   picture.columns = o.columns;
-  for (const ShownMesh& m : meshes) picture.panels.push_back({m.mesh, {}, m.label});
+  // A mesh's own colours (a coloured scan) show as they are, unless
+  // --color asks for something else.
+  for (const ShownMesh& m : meshes) picture.panels.push_back({m.mesh, m.mesh->colours, m.label});
   std::optional<TriangleMesh> reference;
   if (o.colouring.by == Colouring::By::Distance) reference = readMesh(o.colouring.reference);
   Stopwatch colouring;

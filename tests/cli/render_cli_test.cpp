@@ -88,6 +88,27 @@ TEST(RenderCli, AFolderOfFramesShowsEvenlyChosenFramesFirstAndLastIncluded)
   EXPECT_EQ(names, (std::vector<std::string>{"frame_0000.obj", "frame_0003.obj", "frame_0006.obj", "frame_0009.obj"}));
 }
 
+TEST(RenderCli, AScansOwnColoursShowAsTheyAre)
+{
+  testing::ScratchFolder folder;
+  const TriangleMesh sphere = testing::icosphere(3);
+  {
+    std::ofstream obj(folder / "red.obj");
+    for (const glm::dvec3& p : sphere.positions) obj << "v " << p.x << " " << p.y << " " << p.z << " 0.9 0.1 0.1\n";
+    for (const glm::uvec3& t : sphere.triangles) obj << "f " << t.x + 1 << " " << t.y + 1 << " " << t.z + 1 << "\n";
+  }
+  const testing::CliResult r =
+      testing::runLbmshape({"render", (folder / "red.obj").string(), (folder / "red.png").string(), "--size", "64x64"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  int w = 0, h = 0, channels = 0;
+  unsigned char* data = stbi_load((folder / "red.png").c_str(), &w, &h, &channels, 3);
+  ASSERT_NE(data, nullptr);
+  const unsigned char* centre = data + 3 * (32 * w + 32);
+  EXPECT_GT(int(centre[0]), 3 * int(centre[1])) << "red, lit";
+  EXPECT_GT(int(centre[0]), 3 * int(centre[2]));
+  stbi_image_free(data);
+}
+
 struct BadRender {
   const char* name;
   std::vector<std::string> options;

@@ -13,10 +13,6 @@ namespace {
 
 namespace meshio = testing::meshio;
 
-// A unit tetrahedron with outward faces, as positions and indices.
-const std::vector<glm::vec3> tetraCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const std::vector<uint32_t> tetraIndices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-
 glm::dvec3 minimum(const TriangleMesh& mesh) { return bounds(mesh).min; }
 glm::dvec3 maximum(const TriangleMesh& mesh) { return bounds(mesh).max; }
 
@@ -43,7 +39,7 @@ protected:
 TEST_P(GltfReading, NodeTransformsAreAppliedThroughTheHierarchy)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {{{"translation", {10, 0, 0}}, {"children", {1}}},  // parent: move by +10 x
                         {{"scale", {2, 3, 4}}, {"mesh", mesh}}};           // child: stretch
   gltf.json["scenes"] = {{{"nodes", {0}}}};
@@ -58,7 +54,7 @@ TEST_P(GltfReading, NodeTransformsAreAppliedThroughTheHierarchy)
 TEST_P(GltfReading, RotationAndMatrixNodes)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   const double s = std::sqrt(0.5);
   gltf.json["nodes"] = {{{"rotation", {0, 0, s, s}}, {"mesh", mesh}},  // 90 degrees about z: x -> y
                         {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 6, 7, 1}},
@@ -73,7 +69,7 @@ TEST_P(GltfReading, RotationAndMatrixNodes)
 TEST_P(GltfReading, MirroringNodesKeepFacesOutward)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {{{"scale", {-1, 1, 1}}, {"mesh", mesh}}};
   gltf.json["scenes"] = {{{"nodes", {0}}}};
   EXPECT_NEAR(meshio::signedVolume(readBack(gltf)), 1.0 / 6.0, 1e-9);
@@ -82,7 +78,7 @@ TEST_P(GltfReading, MirroringNodesKeepFacesOutward)
 TEST_P(GltfReading, OnlyTheDefaultSceneIsRead)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {{{"mesh", mesh}}, {{"mesh", mesh}, {"translation", {0, 0, 5}}}};
   gltf.json["scenes"] = {{{"nodes", {0}}}, {{"nodes", {1}}}};
   gltf.json["scene"] = 1;
@@ -92,7 +88,7 @@ TEST_P(GltfReading, OnlyTheDefaultSceneIsRead)
 TEST_P(GltfReading, WithoutScenesEveryRootNodeIsRead)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {
       {{"mesh", mesh}, {"children", {2}}}, {{"mesh", mesh}, {"translation", {3, 0, 0}}}, {{"mesh", mesh}}};
   EXPECT_EQ(readBack(gltf).triangleCount(), 12u) << "two roots, one child: each instance once";
@@ -107,7 +103,7 @@ TEST_P(GltfReading, StripsFansUnindexedAndShortIndices)
   const int fan = gltf.addMesh(corners, gltf.addIndices({4, 0, 1, 3, 2, 0}), 6);
   // And a tetrahedron without indices: every three positions a triangle.
   std::vector<glm::vec3> soup;
-  for (uint32_t i : tetraIndices) soup.push_back(tetraCorners[i] + glm::vec3(5, 0, 0));
+  for (uint32_t i : meshio::tetraIndices) soup.push_back(meshio::tetraCorners[i] + glm::vec3(5, 0, 0));
   const int unindexed = gltf.addMesh(gltf.addPositions(soup), -1, 4);
   gltf.json["nodes"] = {{{"mesh", strip}}, {{"mesh", fan}}, {{"mesh", unindexed}}};
   gltf.json["scenes"] = {{{"nodes", {0, 1, 2}}}};
@@ -119,7 +115,7 @@ TEST_P(GltfReading, StripsFansUnindexedAndShortIndices)
 TEST_P(GltfReading, IndexBeyondTheVerticesIsAnInputError)
 {
   meshio::HandMadeGltf gltf;
-  const int mesh = gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices({0, 2, 1, 0, 1, 9}));
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices({0, 2, 1, 0, 1, 9}));
   gltf.json["nodes"] = {{{"mesh", mesh}}};
   EXPECT_THROW(readBack(gltf), InputError);
 }

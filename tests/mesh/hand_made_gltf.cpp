@@ -56,6 +56,24 @@ int HandMadeGltf::addIndices16(const std::vector<uint16_t>& indices)
   return int(json["accessors"].size() - 1);
 }
 
+int HandMadeGltf::addColours(const std::vector<glm::vec3>& colours)
+{
+  const int view = addView(colours.data(), colours.size() * sizeof(glm::vec3), 34962);
+  json["accessors"].push_back({{"bufferView", view}, {"componentType", 5126}, {"count", colours.size()}, {"type", "VEC3"}});
+  return int(json["accessors"].size() - 1);
+}
+
+int HandMadeGltf::addColours8(const std::vector<glm::u8vec4>& colours)
+{
+  const int view = addView(colours.data(), colours.size() * 4, 34962);
+  json["accessors"].push_back({{"bufferView", view},
+                               {"componentType", 5121},
+                               {"normalized", true},
+                               {"count", colours.size()},
+                               {"type", "VEC4"}});
+  return int(json["accessors"].size() - 1);
+}
+
 int HandMadeGltf::addMesh(int positions, int indices, int mode)
 {
   nlohmann::json primitive = {{"attributes", {{"POSITION", positions}}}, {"mode", mode}};

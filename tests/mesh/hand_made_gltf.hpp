@@ -14,6 +14,10 @@
 
 namespace lbmshape::testing::meshio {
 
+// A unit tetrahedron with outward faces, as positions and indices.
+inline const std::vector<glm::vec3> tetraCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+inline const std::vector<uint32_t> tetraIndices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+
 class HandMadeGltf {
 public:
   HandMadeGltf();
@@ -21,6 +25,9 @@ public:
   int addPositions(const std::vector<glm::vec3>& positions);  // accessor index; with min/max
   int addIndices(const std::vector<uint32_t>& indices);
   int addIndices16(const std::vector<uint16_t>& indices);
+  // COLOR_0 accessors: float RGB, or normalized unsigned bytes RGBA.
+  int addColours(const std::vector<glm::vec3>& colours);
+  int addColours8(const std::vector<glm::u8vec4>& colours);
   // A mesh of one primitive; `indices` < 0 for none. Returns the mesh index.
   int addMesh(int positions, int indices, int mode = 4);
 

@@ -18,9 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace meshio = testing::meshio;
 
-const std::vector<glm::vec3> tetraCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const std::vector<uint32_t> tetraIndices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-
 std::string refusalOf(const std::function<void()>& read)
 {
   try {
@@ -37,7 +34,7 @@ void makeFifo(const fs::path& path) { ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0)
 fs::path gltfWithBuffer(const fs::path& folder, const std::string& uri)
 {
   meshio::HandMadeGltf gltf;
-  gltf.addMesh(gltf.addPositions(tetraCorners), gltf.addIndices(tetraIndices));
+  gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {{{"mesh", 0}}};
   gltf.writeGltf(folder / "model.gltf");  // writes model.bin beside it
   auto json = nlohmann::json::parse(std::ifstream(folder / "model.gltf"));

@@ -10,6 +10,7 @@ lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/reader_file_system_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/round_trip_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_reading_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vertex_colours_test.cpp
 )
 lbmshape_shared_asset_test(mesh_shared_asset_tests
   ${CMAKE_CURRENT_LIST_DIR}/shared_meshes_test.cpp

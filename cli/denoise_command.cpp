@@ -56,6 +56,8 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
+  cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
+                "Write a smaller .glb: positions and normals quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview, "Also draw the input and the result side by side into this PNG picture");
   cmd->add_flag("--force", a->options.replaceInput, "Write the result even where the output is the input mesh");
   cmd->callback([&common, a] { runDenoise(common, *a); });

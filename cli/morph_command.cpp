@@ -64,6 +64,8 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
+  cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
+                "Smaller .glb frames and morph.glb: quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview,
                   "Also draw a contact sheet into this PNG picture: the source, six frames and the target");
   cmd->add_option("--tolerance", a->options.tolerance,

@@ -1,11 +1,13 @@
 // Writes the fuzzers' seed corpus: every file of support/mesh_file_cases.hpp
 // (well-formed variants of each format, and one of each hostile kind) that
 // is small enough to mutate, into FOLDER/<format>/, one folder per fuzz
-// target.
+// target; and a meshopt-compressed GLB, as --compress writes it, so that
+// the fuzzer reaches the decoding of EXT_meshopt_compression.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
+#include "mesh/mesh_writer.hpp"
 #include "support/mesh_file_cases.hpp"
 
 int main(int argc, char** argv)
@@ -25,6 +27,13 @@ int main(int argc, char** argv)
       std::ofstream(target / (c.name + c.extension), std::ios::binary) << c.bytes();
       ++written;
     }
+  lbmshape::TriangleMesh octahedron;
+  octahedron.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  fs::create_directories(folder / "glb");
+  lbmshape::writeMesh(octahedron, folder / "glb" / "compressed.glb", lbmshape::EmptyMesh::Refused,
+                      lbmshape::GltfCompression::Meshopt);
+  ++written;
   std::cout << "wrote " << written << " seed files into " << folder << "\n";
   return 0;
 }

@@ -7,7 +7,7 @@ packages=(
   cmake g++ make pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   glslang-tools glslang-dev
-  libglm-dev libtinygltf-dev libstb-dev libopenmesh-dev
+  libglm-dev libtinygltf-dev libstb-dev libopenmesh-dev libmeshoptimizer-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
 )
 # The Khronos glTF-Validator runs on Node. A machine may already have Node

@@ -36,7 +36,8 @@ ScaleKeys scaleKeys(size_t frame, size_t frames, double fps)
 
 }  // namespace
 
-void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path)
+void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path,
+                        GltfCompression compression)
 {
   const std::string prefix = "cannot write " + path.string() + ": ";
   const auto format = meshFormatOf(path);
@@ -55,7 +56,7 @@ void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, con
     requireWritable(frames[i], path, "frame " + std::to_string(i), EmptyMesh::Allowed);
 
   AtomicFile file(path);
-  GltfBuilder builder;
+  GltfBuilder builder(compression);
   tinygltf::Animation animation;
   animation.name = "morph";
   for (size_t i = 0; i < frames.size(); ++i) {

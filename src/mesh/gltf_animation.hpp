@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
@@ -19,6 +20,7 @@ namespace lbmshape {
 // Written atomically, like writeMesh(). Throws UsageError for an unknown
 // extension, no frames or a frame rate that is not positive, and OutputError
 // as writeMesh() does (naming the frame that cannot be written).
-void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path);
+void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path,
+                        GltfCompression compression = GltfCompression::None);
 
 }  // namespace lbmshape

@@ -6,7 +6,13 @@
 #include <fstream>
 #include <limits>
 
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
+#include "mesh/glb_container.hpp"
+#include "mesh/gltf_compression.hpp"
 #include "mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
@@ -35,15 +41,104 @@ std::vector<float> unitNormals(const TriangleMesh& mesh)
   return out;
 }
 
+
+// tinygltf keeps JSON integers as int.
+tinygltf::Value integer(size_t value)
+{
+  if (value > size_t(std::numeric_limits<int>::max()))
+    throw OutputError("a compressed glTF file of more than 2 GB cannot be written; write fewer frames, or without --compress");
+  return tinygltf::Value(int(value));
+}
+
 }  // namespace
 
-GltfBuilder::GltfBuilder()
+GltfBuilder::GltfBuilder(GltfCompression compression) : compression_(compression)
 {
   model_.asset.version = "2.0";
   model_.asset.generator = std::string("lbmshape ") + LBMSHAPE_VERSION;
   model_.buffers.emplace_back();
   model_.scenes.emplace_back();
   model_.defaultScene = 0;
+  if (compression_ == GltfCompression::Meshopt) {
+    // Buffer 1 is what a decoder makes of the encoded views: declared, never
+    // stored (saveGltf sets its length).
+    tinygltf::Buffer fallback;
+    tinygltf::Value::Object marker;
+    marker["fallback"] = tinygltf::Value(true);
+    fallback.extensions[meshoptExtension] = tinygltf::Value(marker);
+    model_.buffers.push_back(fallback);
+    model_.extensionsUsed = {meshoptExtension, quantizationExtension};
+    model_.extensionsRequired = {meshoptExtension, quantizationExtension};
+  }
+}
+
+int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride, const char* mode,
+                                int target)
+{
+  auto& buffer = model_.buffers[0].data;
+  buffer.resize((buffer.size() + 3) / 4 * 4, 0);
+  tinygltf::Value::Object meshopt;
+  meshopt["buffer"] = tinygltf::Value(0);
+  meshopt["byteOffset"] = integer(buffer.size());
+  meshopt["byteLength"] = integer(encoded.size());
+  meshopt["byteStride"] = tinygltf::Value(int(stride));
+  meshopt["mode"] = tinygltf::Value(std::string(mode));
+  meshopt["count"] = integer(count);
+  buffer.insert(buffer.end(), encoded.begin(), encoded.end());
+
+  tinygltf::BufferView view;
+  view.buffer = 1;
+  view.byteOffset = decodedBytes_;
+  view.byteLength = count * stride;
+  if (target == TINYGLTF_TARGET_ARRAY_BUFFER) view.byteStride = stride;
+  view.target = target;
+  view.extensions[meshoptExtension] = tinygltf::Value(meshopt);
+  decodedBytes_ = (decodedBytes_ + view.byteLength + 3) / 4 * 4;
+  integer(decodedBytes_);
+  model_.bufferViews.push_back(view);
+  return int(model_.bufferViews.size() - 1);
+}
+
+int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& name)
+{
+  const CompressedMesh c = compressMesh(mesh, unitNormals(mesh));
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+
+  tinygltf::Accessor positions;
+  positions.bufferView = addEncodedView(c.positions, c.vertexCount, CompressedMesh::positionStride, "ATTRIBUTES",
+                                        TINYGLTF_TARGET_ARRAY_BUFFER);
+  positions.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  positions.type = TINYGLTF_TYPE_VEC3;
+  positions.count = c.vertexCount;
+  for (int k = 0; k < 3; ++k) positions.minValues.push_back(c.positionMin[k]), positions.maxValues.push_back(c.positionMax[k]);
+  primitive.attributes["POSITION"] = addAccessor(positions);
+
+  tinygltf::Accessor normals;
+  normals.bufferView = addEncodedView(c.normals, c.vertexCount, CompressedMesh::normalStride, "ATTRIBUTES",
+                                      TINYGLTF_TARGET_ARRAY_BUFFER);
+  normals.componentType = TINYGLTF_COMPONENT_TYPE_BYTE;
+  normals.normalized = true;
+  normals.type = TINYGLTF_TYPE_VEC3;
+  normals.count = c.vertexCount;
+  primitive.attributes["NORMAL"] = addAccessor(normals);
+
+  tinygltf::Accessor indices;
+  indices.bufferView = addEncodedView(c.indices, c.indexCount, c.indexSize, "TRIANGLES", TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  indices.componentType = c.indexSize == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  indices.type = TINYGLTF_TYPE_SCALAR;
+  indices.count = c.indexCount;
+  primitive.indices = addAccessor(indices);
+
+  const int index = addOnePrimitiveMesh(primitive, name);
+  dequantization_[index] = {c.translation, c.scale};
+  return index;
+}
+
+int GltfBuilder::addAccessor(const tinygltf::Accessor& accessor)
+{
+  model_.accessors.push_back(accessor);
+  return int(model_.accessors.size() - 1);
 }
 
 int GltfBuilder::addBufferView(const void* data, size_t bytes, int target)
@@ -80,13 +175,13 @@ int GltfBuilder::addFloatAccessor(const std::vector<float>& values, int type, bo
       hi = std::max(hi, double(values[i]));
     }
   }
-  model_.accessors.push_back(accessor);
-  return int(model_.accessors.size() - 1);
+  return addAccessor(accessor);
 }
 
 int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
 {
   if (mesh.triangles.empty()) return -1;
+  if (compression_ == GltfCompression::Meshopt) return addCompressedMesh(mesh, name);
   std::vector<float> positions;
   positions.reserve(3 * mesh.positions.size());
   for (const auto& p : mesh.positions) positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
@@ -105,9 +200,13 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
   indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
   indices.type = TINYGLTF_TYPE_SCALAR;
   indices.count = 3 * mesh.triangles.size();
-  model_.accessors.push_back(indices);
-  primitive.indices = int(model_.accessors.size() - 1);
+  primitive.indices = addAccessor(indices);
 
+  return addOnePrimitiveMesh(primitive, name);
+}
+
+int GltfBuilder::addOnePrimitiveMesh(const tinygltf::Primitive& primitive, const std::string& name)
+{
   tinygltf::Mesh gltfMesh;
   gltfMesh.name = name;
   gltfMesh.primitives.push_back(primitive);
@@ -118,18 +217,83 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
 int GltfBuilder::addNode(int mesh, const std::string& name, std::vector<double> scale)
 {
   tinygltf::Node node;
-  node.mesh = mesh;
   node.name = name;
   node.scale = std::move(scale);
+  const auto quantized = dequantization_.find(mesh);
+  if (quantized == dequantization_.end()) {
+    node.mesh = mesh;
+  } else {
+    tinygltf::Node dequantize;
+    dequantize.mesh = mesh;
+    const auto& [translation, step] = quantized->second;
+    dequantize.translation = {translation.x, translation.y, translation.z};
+    dequantize.scale = {step, step, step};
+    model_.nodes.push_back(dequantize);
+    node.children = {int(model_.nodes.size() - 1)};
+  }
   model_.nodes.push_back(node);
   const int index = int(model_.nodes.size() - 1);
   model_.scenes[0].nodes.push_back(index);
   return index;
 }
 
+namespace {
+
+// A tinygltf value (what the builder keeps extensions in) as JSON.
+nlohmann::json toJson(const tinygltf::Value& value)
+{
+  if (value.IsBool()) return value.Get<bool>();
+  if (value.IsInt()) return value.Get<int>();
+  if (value.IsNumber()) return value.GetNumberAsDouble();
+  if (value.IsString()) return value.Get<std::string>();
+  nlohmann::json out = value.IsArray() ? nlohmann::json::array() : nlohmann::json::object();
+  if (value.IsArray())
+    for (size_t i = 0; i < value.ArrayLen(); ++i) out.push_back(toJson(value.Get(int(i))));
+  if (value.IsObject())
+    for (const std::string& key : value.Keys()) out[key] = toJson(value.Get(key));
+  return out;
+}
+
+void addExtensions(nlohmann::json& object, const tinygltf::ExtensionMap& extensions)
+{
+  for (const auto& [name, value] : extensions) object["extensions"][name] = toJson(value);
+}
+
+// tinygltf 2.7 writes no extensions of buffers and buffer views, stores a
+// buffer's length as the size of its data, and a GLB's second buffer as a
+// data URI: it cannot write EXT_meshopt_compression, whose buffer views
+// carry their encoded ranges as an extension and whose fallback buffer has a
+// length and no data. So the GLB it wrote is taken apart, those entries
+// completed from the model, and the container put together again.
+std::string withMeshoptEntries(const std::string& glb, const tinygltf::Model& model, size_t decodedBytes)
+{
+  const uint32_t jsonLength = glbWord(glb, 12);
+  nlohmann::json json = nlohmann::json::parse(glb.substr(20, jsonLength));
+  nlohmann::json& fallback = json.at("buffers").at(1);
+  fallback.erase("uri");
+  fallback["byteLength"] = decodedBytes;
+  addExtensions(fallback, model.buffers[1].extensions);
+  for (size_t i = 0; i < model.bufferViews.size(); ++i) addExtensions(json.at("bufferViews").at(i), model.bufferViews[i].extensions);
+  const size_t binAt = 20 + jsonLength;
+  std::string binary = glb.size() >= binAt + 8 ? glb.substr(binAt + 8, glbWord(glb, binAt)) : std::string();
+  return glbFile(json.dump(), std::move(binary));
+}
+
+size_t decodedLength(const tinygltf::Model& model)
+{
+  size_t end = 0;
+  for (const tinygltf::BufferView& view : model.bufferViews)
+    if (view.buffer == 1) end = std::max(end, view.byteOffset + view.byteLength);
+  return std::max<size_t>(end, 4);
+}
+
+}  // namespace
+
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
 {
   const bool binary = format == MeshFormat::Glb;
+  const bool compressed = model.buffers.size() == 2;
+  if (compressed && !binary) throw UsageError("--compress writes .glb files, not " + file.target().string());
   std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
   tinygltf::TinyGLTF writer;
   const tinygltf::Model* toWrite = &model;
@@ -139,7 +303,14 @@ void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile&
     withoutBuffer.buffers.clear();
     toWrite = &withoutBuffer;
   }
-  const bool ok = out && writer.WriteGltfSceneToStream(toWrite, out, /*prettyPrint=*/!binary, binary);
+  bool ok = false;
+  if (compressed) {
+    std::ostringstream glb;
+    ok = writer.WriteGltfSceneToStream(toWrite, glb, false, true);
+    if (ok) out << withMeshoptEntries(glb.str(), model, decodedLength(model));
+  } else {
+    ok = out && writer.WriteGltfSceneToStream(toWrite, out, /*prettyPrint=*/!binary, binary);
+  }
   out.close();
   if (!ok || !out)
     throw OutputError("cannot write " + file.target().string() + ": writing the file failed (is the disk full?)");

@@ -3,12 +3,17 @@
 // and animation that show them. Files are written through saveGltf().
 #pragma once
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include <tiny_gltf.h>
 
 #include "core/atomic_file.hpp"
+#include "mesh/gltf_compression.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/triangle_mesh.hpp"
 
@@ -16,7 +21,8 @@ namespace lbmshape {
 
 class GltfBuilder {
 public:
-  GltfBuilder();  // asset version 2.0, generator "lbmshape <version>"
+  // Asset version 2.0, generator "lbmshape <version>".
+  explicit GltfBuilder(GltfCompression compression = GltfCompression::None);
 
   // A mesh of one TRIANGLES primitive: POSITION (float, with min/max),
   // NORMAL (float, unit length: the mesh's own normals where they are
@@ -25,7 +31,9 @@ public:
   // accessors), so nothing is added and the node stays without a mesh.
   int addMesh(const TriangleMesh& mesh, const std::string& name);
   // A node showing `mesh` (none if -1), made a root of the (single) scene;
-  // returns its index.
+  // returns its index. A compressed mesh hangs from a child node whose
+  // translation and scale undo the quantization, so `scale` (and an
+  // animation of the node's scale) means the same as without compression.
   int addNode(int mesh, const std::string& name, std::vector<double> scale = {});
   // A float accessor over `values` (count x components of `type`), in its
   // own buffer view; min/max are filled in when `withBounds`.
@@ -35,14 +43,24 @@ public:
 
 private:
   int addBufferView(const void* data, size_t bytes, int target);
+  int addAccessor(const tinygltf::Accessor& accessor);
+  int addOnePrimitiveMesh(const tinygltf::Primitive& primitive, const std::string& name);
+  int addCompressedMesh(const TriangleMesh& mesh, const std::string& name);
+  // A buffer view of `count` elements of `stride` bytes, encoded in buffer 0
+  // and decoded into the fallback buffer 1 (which the file does not hold).
+  int addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride, const char* mode, int target);
 
   tinygltf::Model model_;
+  GltfCompression compression_;
+  size_t decodedBytes_ = 0;  // of the fallback buffer
+  std::map<int, std::pair<glm::dvec3, double>> dequantization_;  // translation and scale, by mesh
 };
 
 // Writes the model to file.temporaryPath() as a .glb, or as a .gltf with its
 // buffer embedded (a data URI) so the file stands alone; a model that holds no
-// data at all is written without a buffer (glTF forbids empty ones). Throws OutputError
-// naming file.target().
+// data at all is written without a buffer (glTF forbids empty ones). A
+// compressed model is written as .glb only. Throws OutputError naming
+// file.target().
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file);
 
 }  // namespace lbmshape

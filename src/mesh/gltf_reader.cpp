@@ -15,6 +15,8 @@
 #include "mesh/gltf_accessors.hpp"
 #include "mesh/gltf_file_access.hpp"
 #include "mesh/gltf_json_check.hpp"
+#include "mesh/glb_container.hpp"
+#include "mesh/gltf_meshopt_decoding.hpp"
 #include "mesh/gltf_scene_walk.hpp"
 #include "mesh/text_scan.hpp"
 
@@ -22,6 +24,8 @@ namespace lbmshape {
 namespace {
 
 // Geometry lbmshape would get wrong by ignoring the extension, so refuses.
+// (EXT_meshopt_compression is decoded beforehand in GLB files,
+// gltf_meshopt_decoding.hpp, and refused here in .gltf ones.)
 const std::set<std::string> unsupportedRequiredExtensions = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                                              "KHR_meshopt_compression", "EXT_mesh_gpu_instancing"};
 
@@ -36,13 +40,6 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-uint32_t word(std::string_view bytes, size_t at)
-{
-  uint32_t value;
-  std::memcpy(&value, bytes.data() + at, 4);  // little-endian, as GLB is
-  return value;
-}
-
 // The JSON of a .gltf file, or of a GLB container, whose chunks are checked
 // here: tinygltf reads a binary chunk that claims more bytes than follow it.
 std::string_view jsonOf(const MeshSource& source, MeshFormat format)
@@ -52,13 +49,13 @@ std::string_view jsonOf(const MeshSource& source, MeshFormat format)
   // optionally chunk 1: length, "BIN\0", bytes.
   const std::string_view bytes = source.bytes;
   if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") source.refuse("not a GLB file (no 'glTF' magic)");
-  if (word(bytes, 8) > bytes.size()) source.refuse("its GLB header claims more bytes than the file has");
-  const uint64_t jsonLength = word(bytes, 12);
+  if (glbWord(bytes, 8) > bytes.size()) source.refuse("its GLB header claims more bytes than the file has");
+  const uint64_t jsonLength = glbWord(bytes, 12);
   if (bytes.substr(16, 4) != "JSON" || jsonLength > bytes.size() - 20)
     source.refuse("its first GLB chunk is not JSON that fits in the file");
   const uint64_t rest = bytes.size() - 20 - jsonLength;
   if (rest > 0) {
-    if (rest < 8 || uint64_t(word(bytes, 20 + jsonLength)) > rest - 8)
+    if (rest < 8 || uint64_t(glbWord(bytes, 20 + jsonLength)) > rest - 8)
       source.refuse("its second GLB chunk claims more bytes than follow it");
     if (bytes.substr(20 + jsonLength + 4, 4) != std::string_view("BIN\0", 4))
       source.refuse("its second GLB chunk is not a binary chunk");
@@ -240,8 +237,20 @@ private:
 
 }  // namespace
 
-TriangleMesh readGltf(const MeshSource& source, MeshFormat format)
+TriangleMesh readGltf(const MeshSource& given, MeshFormat format)
 {
+  // A GLB with meshopt-compressed views is read as the plain GLB it decodes to.
+  std::optional<std::string> decoded;
+  if (format == MeshFormat::Glb) {
+    const std::string_view json = jsonOf(given, format);
+    const size_t binAt = 20 + json.size();
+    const std::string_view binary =
+        given.bytes.size() >= binAt + 8 ? given.bytes.substr(binAt + 8, glbWord(given.bytes, binAt)) : std::string_view();
+    decoded = decodeMeshoptGlb(given, json, binary);
+  }
+  MeshSource source = given;
+  if (decoded) source.bytes = *decoded;
+
   // Before tinygltf sees the file: nesting it could not survive, and the
   // buffer files it would open.
   const std::vector<GltfBufferEntry> buffers = checkGltfJson(jsonOf(source, format), format == MeshFormat::Glb, source);

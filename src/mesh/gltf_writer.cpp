@@ -4,9 +4,9 @@
 
 namespace lbmshape {
 
-void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file)
+void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file, GltfCompression compression)
 {
-  GltfBuilder builder;
+  GltfBuilder builder(compression);
   const std::string name = file.target().stem().string();
   builder.addNode(builder.addMesh(mesh, name), name);
   saveGltf(builder.model(), format, file);

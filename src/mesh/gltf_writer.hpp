@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/atomic_file.hpp"
+#include "mesh/gltf_compression.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/triangle_mesh.hpp"
 
@@ -10,6 +11,7 @@ namespace lbmshape {
 // One mesh in one node of one scene (see GltfBuilder::addMesh for the
 // arrays). Writes into file.temporaryPath(); throws OutputError naming
 // file.target().
-void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file);
+void writeGltf(const TriangleMesh& mesh, MeshFormat format, const AtomicFile& file,
+               GltfCompression compression = GltfCompression::None);
 
 }  // namespace lbmshape

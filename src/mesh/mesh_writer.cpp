@@ -36,9 +36,11 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
                    ": write the result elsewhere, or give --force to replace the input");
 }
 
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty)
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty, GltfCompression compression)
 {
   const auto format = outputFormat(path);
+  if (compression != GltfCompression::None && format != MeshFormat::Glb)
+    throw UsageError("--compress writes .glb files, not " + path.string());
   requireWritable(mesh, path, "the mesh", empty);
   AtomicFile file(path);
   switch (format) {
@@ -47,7 +49,7 @@ void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, Empt
     case MeshFormat::Off:
     case MeshFormat::Stl: writeWithOpenMesh(mesh, format, file); break;
     case MeshFormat::Gltf:
-    case MeshFormat::Glb: writeGltf(mesh, format, file); break;
+    case MeshFormat::Glb: writeGltf(mesh, format, file, compression); break;
   }
   file.commit();
   log::verbose("wrote " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +

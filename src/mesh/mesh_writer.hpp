@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "mesh/writable_mesh.hpp"
 
@@ -14,7 +15,9 @@ namespace lbmshape {
 //   .off         text, single precision
 //   .gltf, .glb  glTF 2.0: one mesh, one node; float positions, unit
 //                normals (computed, area-weighted, when the mesh has none),
-//                uint32 indices; a .gltf carries its data inside (data URI)
+//                uint32 indices; a .gltf carries its data inside (data URI);
+//                with GltfCompression::Meshopt (.glb only, else UsageError)
+//                quantized and meshopt-encoded (gltf_compression.hpp)
 // The file appears complete or not at all (see AtomicFile): an existing file
 // of that name is replaced only once the new one is fully written.
 // Throws UsageError for an unknown extension, before anything is written,
@@ -24,7 +27,8 @@ namespace lbmshape {
 // A mesh without triangles, where allowed, is a valid file of no surface in
 // every format: glTF has no empty meshes, so there it is one node without a
 // mesh.
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused);
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused,
+               GltfCompression compression = GltfCompression::None);
 
 // The checks writeMesh makes before writing, for commands to make before
 // their work: UsageError for an unknown extension, OutputError for a missing

@@ -1,9 +1,12 @@
 target_sources(lbmshape_mesh PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/glb_container.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_builder.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_compression.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_file_access.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_json_check.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_meshopt_decoding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_scene_walk.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp

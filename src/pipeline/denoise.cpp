@@ -11,6 +11,7 @@
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_format.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/render_job.hpp"
@@ -219,6 +220,8 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   relaxation::warnIfInaccurate(o.gamma, o.steps, "--gamma");
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output);
+  if (o.compression != GltfCompression::None && meshFormatOf(output) != MeshFormat::Glb)
+    throw UsageError("--compress writes .glb files, not " + output.string());
   if (o.preview) checkPreviewPath(*o.preview);
   StageClock clock;
 
@@ -234,7 +237,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(o.steps) +
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
-  clock.time("write", [&] { writeMesh(result, output); });
+  clock.time("write", [&] { writeMesh(result, output, EmptyMesh::Refused, o.compression); });
   device.requireCleanValidation();
   if (o.preview)
     clock.time("preview", [&] {

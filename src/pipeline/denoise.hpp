@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "pipeline/compute_device.hpp"
 #include "pipeline/field_noise.hpp"
@@ -40,6 +41,8 @@ struct DenoiseOptions {
   // --noise runs on the grid.
   bool dense = false;
   bool replaceInput = false;  // the output may be the input file (--force)
+  // The output quantized and meshopt-encoded (--compress; .glb only).
+  GltfCompression compression = GltfCompression::None;
   // A picture of the input and the output side by side (--preview).
   std::optional<std::filesystem::path> preview;
 };

@@ -15,10 +15,10 @@ constexpr size_t queueCapacity = 2;
 }
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
-                         Keep keep, Inspect inspect)
+                         Keep keep, Inspect inspect, GltfCompression compression)
     : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
       digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
-      inspect_(std::move(inspect))
+      inspect_(std::move(inspect)), compression_(compression)
 {
   thread_ = std::thread([this] { run(); });
 }
@@ -125,7 +125,7 @@ void FrameWriter::run()
                              "or place the shapes to overlap with --align");
       const double extractMs = extract.ms();
       Stopwatch write;
-      writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed);
+      writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
       const double writeMs = write.ms();
       Stopwatch inspect;
       if (inspect_) inspect_(job.first, job.second, mesh);

@@ -17,6 +17,7 @@
 
 #include "band/band_field.hpp"
 #include "core/volume.hpp"
+#include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "sdf/grid_frame.hpp"
 
@@ -38,7 +39,7 @@ public:
 
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep,
-              Inspect inspect = {});
+              Inspect inspect = {}, GltfCompression compression = GltfCompression::None);
   ~FrameWriter();  // stops the thread; frames still queued are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -81,6 +82,7 @@ private:
   int digits_;
   Keep keep_;
   Inspect inspect_;
+  GltfCompression compression_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;

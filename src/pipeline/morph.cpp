@@ -215,6 +215,8 @@ void checkMorphOptions(const MorphOptions& o)
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
   if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
   if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
+  if (o.compression != GltfCompression::None && meshFormatOf("x." + o.format) != MeshFormat::Glb)
+    throw UsageError("--compress writes .glb frames, not --format " + o.format);
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -265,7 +267,8 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                      o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
                        frameReport.surface(k, field, mesh);
                      })
-                                    : FrameWriter::Inspect());
+                                    : FrameWriter::Inspect(),
+                     o.compression);
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
@@ -336,7 +339,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
   interrupt::check(std::to_string(o.frames) + " complete frames in " + folder.string());
-  if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb"); });
+  if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb", o.compression); });
   device.requireCleanValidation();
   if (o.preview) clock.time("preview", [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
 

@@ -1,6 +1,7 @@
 lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/atomic_file_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/bad_input_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/compressed_gltf_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reading_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_validation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_made_gltf.cpp
@@ -12,6 +13,7 @@ lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/soup_reading_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vertex_colours_test.cpp
 )
+target_link_libraries(mesh_tests PRIVATE meshoptimizer::meshoptimizer)  # decodes what --compress wrote
 lbmshape_shared_asset_test(mesh_shared_asset_tests
   ${CMAKE_CURRENT_LIST_DIR}/shared_meshes_test.cpp
 )

@@ -54,6 +54,29 @@ std::string runCapturingStdout(std::vector<std::string> argv, int& status, std::
 
 }  // namespace
 
+ThreeJsLoad loadWithThreeJs(const std::filesystem::path& file)
+{
+  ThreeJsLoad result;
+  const std::filesystem::path script = std::filesystem::path(LBMSHAPE_GLTF_VALIDATOR_SCRIPT).parent_path() / "three_load.mjs";
+  if (!std::filesystem::exists(script.parent_path() / "node_modules" / "three")) {
+    result.failure = "three.js is not installed (install it with: npm ci --prefix " + script.parent_path().string() + ")";
+    return result;
+  }
+  int status = 0;
+  const std::string output = runCapturingStdout({LBMSHAPE_NODE_EXECUTABLE, script.string(), file.string()}, status, result.failure);
+  if (!result.failure.empty()) return result;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    result.failure = "three.js could not load " + file.string() + " (see its message above)";
+    return result;
+  }
+  try {
+    result.scene = nlohmann::json::parse(output);
+  } catch (const std::exception& e) {
+    result.failure = std::string("three_load.mjs printed no JSON: ") + e.what();
+  }
+  return result;
+}
+
 GltfValidation validateGltf(const std::filesystem::path& file)
 {
   GltfValidation result;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace lbmshape::testing {
 
 struct GltfValidation {
@@ -20,6 +22,16 @@ struct GltfValidation {
 };
 
 GltfValidation validateGltf(const std::filesystem::path& file);
+
+// What three.js's GLTFLoader (with its meshopt decoder, as a web viewer
+// sets it up) makes of a .glb file: three_load.mjs's JSON ("meshes",
+// "triangles", "min", "max", "animations"), or the reason it could not
+// load it in `failure`.
+struct ThreeJsLoad {
+  nlohmann::json scene;
+  std::string failure;
+};
+ThreeJsLoad loadWithThreeJs(const std::filesystem::path& file);
 
 // For assertion messages: EXPECT_TRUE(v.passed()) << v;
 std::ostream& operator<<(std::ostream& out, const GltfValidation& validation);

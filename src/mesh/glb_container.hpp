@@ -1,0 +1,18 @@
+// The GLB container (glTF 2.0, section 4.4): a 12-byte header, a JSON chunk
+// and an optional binary chunk, each chunk 4-byte aligned.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace lbmshape {
+
+// The little-endian word at `at` (the caller has checked that it is there).
+uint32_t glbWord(std::string_view bytes, size_t at);
+
+// A GLB file of this JSON text and binary chunk (none when empty), padded
+// as GLB requires: the JSON with spaces, the binary chunk with zeros.
+std::string glbFile(std::string json, std::string binary);
+
+}  // namespace lbmshape

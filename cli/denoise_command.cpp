@@ -56,6 +56,10 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
+  cmd->add_option("--color", a->options.colourByCurvature,
+                  "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf or .obj)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"none", false}, {"curvature", true}}))
+      ->default_str("none");
   cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
                 "Write a smaller .glb: positions and normals quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview, "Also draw the input and the result side by side into this PNG picture");

@@ -64,6 +64,10 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
+  cmd->add_option("--color", a->options.colourByCurvature,
+                  "Vertex colours of the frames: none, or curvature (mean curvature on the target's scale)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"none", false}, {"curvature", true}}))
+      ->default_str("none");
   cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
                 "Smaller .glb frames and morph.glb: quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview,

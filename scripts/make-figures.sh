@@ -41,4 +41,15 @@ $lbmshape -q render "${shown[@]}" "$out/morph.png" --columns 6 --view 30,35 --la
 $lbmshape -q render "${shown[@]}" "$out/morph-distance.png" --columns 6 --view 30,35 \
   --color distance:assets/nut.obj --size 960x230
 
+# The diffusion coefficient of a morph, by mean curvature: frame 4 of the
+# bolt becoming the nut at three values of --gamma (docs/morphing.md).
+gammas=()
+for gamma in 0.01 0.05 0.2; do
+  $lbmshape -q morph assets/bolt.obj assets/nut.obj "$work/gamma_$gamma" --align none --no-animation --gamma "$gamma"
+  cp "$work/gamma_$gamma/frame_0004.glb" "$work/gamma_$gamma.glb"
+  gammas+=("$work/gamma_$gamma.glb")
+done
+$lbmshape -q render "${gammas[@]}" "$out/morph-gamma-curvature.png" --view 30,35 --labels --color curvature \
+  --columns 3 --size 720x300
+
 ls -l "$out"

@@ -4,8 +4,10 @@
 #include <exception>
 #include <new>
 
+#include <signal.h>
 #include <unistd.h>
 
+#include "core/address_sanitizer.hpp"
 #include "core/error.hpp"
 #include "core/temporary_files.hpp"
 
@@ -46,8 +48,24 @@ void writeLine(const char* message)
   ::_exit(code);
 }
 
+void onAbort(int)
+{
+  temporary_files::removeAllFromSignalHandler();
+  writeLine("a library aborted the process (the Vulkan driver's shader compiler, when memory runs out; use a coarser grid, --res)");
+  ::_exit(int(ExitCode::Device));
+}
+
 }  // namespace
 
-void installLastResortHandler() { std::set_terminate(onTerminate); }
+void installLastResortHandler()
+{
+  std::set_terminate(onTerminate);
+  if constexpr (!builtWithAddressSanitizer) {
+    struct sigaction action = {};
+    action.sa_handler = onAbort;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGABRT, &action, nullptr);
+  }
+}
 
 }  // namespace lbmshape

@@ -5,6 +5,13 @@
 // end is one "lbmshape: error:" line and the exit code of the error's kind
 // (out of memory: 5), after the temporary files and folders of work under
 // way are removed, as after a second Ctrl-C.
+//
+// The same for a library that aborts the process: Mesa's LLVM aborts
+// ("LLVM ERROR: Unable to allocate section memory!") when compiling a shader
+// finds no memory, which under a tight `ulimit -v` can happen in the middle
+// of a job. SIGABRT then removes the job's temporary files and new empty
+// folders and ends with one line and exit 5. Builds with AddressSanitizer
+// keep the default, so that a sanitizer's abort is never mistaken for one.
 #pragma once
 
 namespace lbmshape {

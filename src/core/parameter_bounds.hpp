@@ -32,7 +32,8 @@ inline constexpr std::size_t maxSamples = 10'000'000;
 inline constexpr int minPictureSide = 16;
 inline constexpr int maxPictureSide = 8192;
 inline constexpr long maxPicturePixels = 4096L * 4096L;
-// Meshes one picture shows from a folder: cells of a contact sheet.
+// Meshes one picture shows (from a folder, --count; in all): cells of a
+// contact sheet.
 inline constexpr int maxFolderMeshes = 256;
 
 }  // namespace lbmshape::parameter_bounds

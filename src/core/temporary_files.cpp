@@ -46,7 +46,9 @@ void forget(int ticket)
   slot.taken.store(false, std::memory_order_release);
 }
 
-void removeAllFromSignalHandler()
+namespace {
+
+void removeListed()
 {
   for (Slot& slot : slots) {
     const unsigned before = slot.sequence.load(std::memory_order_acquire);
@@ -60,6 +62,16 @@ void removeAllFromSignalHandler()
     // reused. A folder is not a file: rmdir removes it only when empty.
     if (::unlink(path) != 0) ::rmdir(path);
   }
+}
+
+}  // namespace
+
+void removeAllFromSignalHandler()
+{
+  // Twice: a listed folder may hold another listed folder of a later slot,
+  // empty only once that one is gone.
+  removeListed();
+  removeListed();
 }
 
 }  // namespace lbmshape::temporary_files

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "mesh/colour_space.hpp"
 #include "mesh/glb_container.hpp"
 #include "mesh/gltf_compression.hpp"
 #include "mesh/mesh_geometry.hpp"
@@ -41,6 +42,16 @@ std::vector<float> unitNormals(const TriangleMesh& mesh)
   return out;
 }
 
+
+// COLOR_0 is linear RGB; the mesh keeps colours as shown (sRGB).
+std::vector<float> linearColours(const TriangleMesh& mesh)
+{
+  std::vector<float> out;
+  out.reserve(3 * mesh.colours.size());
+  for (const glm::vec3& c : mesh.colours)
+    for (int k = 0; k < 3; ++k) out.push_back(srgbToLinear(std::clamp(c[k], 0.0f, 1.0f)));
+  return out;
+}
 
 // tinygltf keeps JSON integers as int.
 tinygltf::Value integer(size_t value)
@@ -101,7 +112,8 @@ int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_
 
 int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& name)
 {
-  const CompressedMesh c = compressMesh(mesh, unitNormals(mesh));
+  const CompressedMesh c =
+      compressMesh(mesh, unitNormals(mesh), mesh.colours.size() == mesh.positions.size() ? linearColours(mesh) : std::vector<float>());
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
 
@@ -122,6 +134,17 @@ int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& 
   normals.type = TINYGLTF_TYPE_VEC3;
   normals.count = c.vertexCount;
   primitive.attributes["NORMAL"] = addAccessor(normals);
+
+  if (!c.colours.empty()) {
+    tinygltf::Accessor colours;
+    colours.bufferView = addEncodedView(c.colours, c.vertexCount, CompressedMesh::colourStride, "ATTRIBUTES",
+                                        TINYGLTF_TARGET_ARRAY_BUFFER);
+    colours.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    colours.normalized = true;
+    colours.type = TINYGLTF_TYPE_VEC4;
+    colours.count = c.vertexCount;
+    primitive.attributes["COLOR_0"] = addAccessor(colours);
+  }
 
   tinygltf::Accessor indices;
   indices.bufferView = addEncodedView(c.indices, c.indexCount, c.indexSize, "TRIANGLES", TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
@@ -192,6 +215,9 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
       addFloatAccessor(positions, TINYGLTF_TYPE_VEC3, true, TINYGLTF_TARGET_ARRAY_BUFFER);
   primitive.attributes["NORMAL"] =
       addFloatAccessor(unitNormals(mesh), TINYGLTF_TYPE_VEC3, false, TINYGLTF_TARGET_ARRAY_BUFFER);
+  if (mesh.colours.size() == mesh.positions.size())
+    primitive.attributes["COLOR_0"] =
+        addFloatAccessor(linearColours(mesh), TINYGLTF_TYPE_VEC3, false, TINYGLTF_TARGET_ARRAY_BUFFER);
 
   static_assert(sizeof(glm::uvec3) == 3 * sizeof(uint32_t), "triangles are stored as packed uint32 triples");
   tinygltf::Accessor indices;

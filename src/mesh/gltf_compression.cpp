@@ -20,7 +20,8 @@ std::vector<unsigned char> encodeVertices(const void* vertices, size_t count, si
 
 }  // namespace
 
-CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& unitNormals)
+CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& unitNormals,
+                            const std::vector<float>& linearColours)
 {
   CompressedMesh out;
   out.indexCount = 3 * mesh.triangleCount();
@@ -43,6 +44,8 @@ CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& 
 
   std::vector<uint16_t> positions(4 * out.vertexCount, 0);
   std::vector<int8_t> normals(4 * out.vertexCount, 0);
+  const bool coloured = linearColours.size() == 3 * vertices;
+  std::vector<uint8_t> colours(coloured ? 4 * out.vertexCount : 0, 255);
   out.positionMin = glm::u16vec3(65535), out.positionMax = glm::u16vec3(0);
   for (size_t v = 0; v < vertices; ++v) {
     const unsigned int to = remap[v];
@@ -54,10 +57,12 @@ CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& 
       out.positionMin[k] = std::min(out.positionMin[k], value);
       out.positionMax[k] = std::max(out.positionMax[k], value);
       normals[4 * to + k] = int8_t(std::lround(std::clamp(unitNormals[3 * v + k], -1.0f, 1.0f) * 127.0f));
+      if (coloured) colours[4 * to + k] = uint8_t(std::lround(std::clamp(linearColours[3 * v + k], 0.0f, 1.0f) * 255.0f));
     }
   }
   out.positions = encodeVertices(positions.data(), out.vertexCount, CompressedMesh::positionStride);
   out.normals = encodeVertices(normals.data(), out.vertexCount, CompressedMesh::normalStride);
+  if (coloured) out.colours = encodeVertices(colours.data(), out.vertexCount, CompressedMesh::colourStride);
 
   out.indexSize = out.vertexCount <= 65536 ? 2 : 4;
   out.indices.resize(meshopt_encodeIndexBufferBound(indices.size(), out.vertexCount));

@@ -15,6 +15,7 @@
 #include "mesh/gltf_accessors.hpp"
 #include "mesh/gltf_file_access.hpp"
 #include "mesh/gltf_json_check.hpp"
+#include "mesh/colour_space.hpp"
 #include "mesh/glb_container.hpp"
 #include "mesh/gltf_meshopt_decoding.hpp"
 #include "mesh/gltf_scene_walk.hpp"
@@ -173,19 +174,12 @@ private:
       if (colours.size() != count)
         source_.refuse(name + " has " + std::to_string(colours.size()) + " COLOR_0 values for " + std::to_string(count) +
                        " positions");
-      for (glm::vec3& c : colours) c = linearToSrgb(c);
+      for (glm::vec3& c : colours) c = glm::vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b));
     }
     if (colours.empty() && mesh_.colours.empty()) return;
     mesh_.colours.resize(base, glm::vec3(1.0f));
     if (colours.empty()) colours.assign(count, glm::vec3(1.0f));
     mesh_.colours.insert(mesh_.colours.end(), colours.begin(), colours.end());
-  }
-
-  static glm::vec3 linearToSrgb(glm::vec3 c)
-  {
-    for (int k = 0; k < 3; ++k)
-      c[k] = c[k] <= 0.0031308f ? 12.92f * c[k] : 1.055f * std::pow(c[k], 1.0f / 2.4f) - 0.055f;
-    return c;
   }
 
   void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world)

@@ -9,15 +9,21 @@ namespace lbmshape {
 namespace {
 
 template <class Vector>
-void appendVector(std::string& line, const char* keyword, const Vector& v)
+void appendNumbers(std::string& line, const Vector& v)
 {
   char number[32];
-  line += keyword;
   for (int k = 0; k < 3; ++k) {
     auto end = std::to_chars(number, number + sizeof number, v[k]).ptr;  // shortest exact round trip
     line += ' ';
     line.append(number, end);
   }
+}
+
+template <class Vector>
+void appendVector(std::string& line, const char* keyword, const Vector& v)
+{
+  line += keyword;
+  appendNumbers(line, v);
   line += '\n';
 }
 
@@ -26,13 +32,18 @@ void appendVector(std::string& line, const char* keyword, const Vector& v)
 void writeObj(const TriangleMesh& mesh, const AtomicFile& file)
 {
   const bool withNormals = mesh.normals.size() == mesh.positions.size();
+  // Vertex colours as MeshLab writes them: "v x y z r g b".
+  const bool withColours = mesh.colours.size() == mesh.positions.size();
   std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
   out << "# lbmshape " << LBMSHAPE_VERSION << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
       << " triangles\n";
   std::string line;
   for (size_t i = 0; i < mesh.positions.size() && out; ++i) {
     line.clear();
-    appendVector(line, "v", mesh.positions[i]);
+    line += 'v';
+    appendNumbers(line, mesh.positions[i]);
+    if (withColours) appendNumbers(line, mesh.colours[i]);
+    line += '\n';
     if (withNormals) appendVector(line, "vn", mesh.normals[i]);
     out << line;
   }

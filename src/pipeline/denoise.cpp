@@ -15,6 +15,7 @@
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/render_job.hpp"
+#include "render/curvature_colours.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "lbm/band_width.hpp"
 #include "sdf/band_signed_distance.hpp"
@@ -207,6 +208,22 @@ void checkDenoiseOptions(const DenoiseOptions& o)
   checkGridAndNoise(o.grid, o.noise);
 }
 
+void requireColourFormat(const std::filesystem::path& output, const std::string& what)
+{
+  const auto format = meshFormatOf(output);
+  if (format != MeshFormat::Glb && format != MeshFormat::Gltf && format != MeshFormat::Obj)
+    throw UsageError("--color curvature writes vertex colours into .glb, .gltf or .obj files, not " + what);
+}
+
+double colourByCurvature(TriangleMesh& mesh)
+{
+  const double scale = render::curvatureScale(mesh);
+  mesh.colours = render::curvatureColours(mesh, scale);
+  log::info("vertex colours: mean curvature from blue (-" + std::to_string(scale) + ") through grey (0) to red (+" +
+            std::to_string(scale) + "), in 1 / the mesh's units; 95% of the vertices lie within");
+  return scale;
+}
+
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options)
 {
   if (options.voxel) return frameWithVoxel(bounds, *options.voxel, options.marginVoxels);
@@ -222,6 +239,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   checkMeshDestination(output);
   if (o.compression != GltfCompression::None && meshFormatOf(output) != MeshFormat::Glb)
     throw UsageError("--compress writes .glb files, not " + output.string());
+  if (o.colourByCurvature) requireColourFormat(output, output.string());
   if (o.preview) checkPreviewPath(*o.preview);
   StageClock clock;
 
@@ -237,6 +255,8 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(o.steps) +
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
+  std::optional<double> curvatureScale;
+  if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
   clock.time("write", [&] { writeMesh(result, output, EmptyMesh::Refused, o.compression); });
   device.requireCleanValidation();
   if (o.preview)
@@ -268,6 +288,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                             : nlohmann::json(nullptr)}};
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
+  report["curvature_scale"] = curvatureScale ? nlohmann::json(*curvatureScale) : nlohmann::json(nullptr);
   report["preview"] = o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr);
   return {std::move(result), std::move(report)};
 }

@@ -41,6 +41,9 @@ struct DenoiseOptions {
   // --noise runs on the grid.
   bool dense = false;
   bool replaceInput = false;  // the output may be the input file (--force)
+  // The output's vertices coloured by mean curvature (--color curvature;
+  // COLOR_0 in glTF, "v x y z r g b" in OBJ).
+  bool colourByCurvature = false;
   // The output quantized and meshopt-encoded (--compress; .glb only).
   GltfCompression compression = GltfCompression::None;
   // A picture of the input and the output side by side (--preview).
@@ -56,6 +59,13 @@ struct DenoiseResult {
 void checkDenoiseOptions(const DenoiseOptions& options);
 // The checks of the grid and noise options, which morph shares.
 void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise);
+
+// UsageError unless `output` is a format that holds vertex colours (glb,
+// gltf, obj): for --color curvature, before any work.
+void requireColourFormat(const std::filesystem::path& output, const std::string& what);
+// Colours the mesh's vertices by mean curvature (render/curvature_colours)
+// and says so on stderr; returns the scale.
+double colourByCurvature(TriangleMesh& mesh);
 
 // The grid for a mesh.
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);

@@ -15,10 +15,10 @@ constexpr size_t queueCapacity = 2;
 }
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
-                         Keep keep, Inspect inspect, GltfCompression compression)
+                         Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
     : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
       digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
-      inspect_(std::move(inspect)), compression_(compression)
+      inspect_(std::move(inspect)), compression_(compression), decorate_(std::move(decorate))
 {
   thread_ = std::thread([this] { run(); });
 }
@@ -116,6 +116,7 @@ void FrameWriter::run()
         mesh = meshes_.back();
       } else {
         mesh = std::visit([this](const auto& field) { return extractSurface(*field, grid_); }, job.second);
+        if (decorate_) decorate_(mesh);
       }
       const bool empty = mesh.triangles.empty();
       if (empty && job.first == frameCount_ - 1)

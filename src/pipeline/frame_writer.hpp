@@ -36,10 +36,13 @@ public:
   // Runs on the writer's thread after frame k's file is written, with its
   // field and mesh (the morph's per-frame figures).
   using Inspect = std::function<void(int frame, const FrameField& field, const TriangleMesh& mesh)>;
+  // Runs on the writer's thread on each frame's mesh before it is written
+  // (vertex colours).
+  using Decorate = std::function<void(TriangleMesh& mesh)>;
 
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep,
-              Inspect inspect = {}, GltfCompression compression = GltfCompression::None);
+              Inspect inspect = {}, GltfCompression compression = GltfCompression::None, Decorate decorate = {});
   ~FrameWriter();  // stops the thread; frames still queued are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -83,6 +86,7 @@ private:
   Keep keep_;
   Inspect inspect_;
   GltfCompression compression_;
+  Decorate decorate_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;

@@ -28,6 +28,7 @@
 #include "pipeline/morph_lattice.hpp"
 #include "pipeline/morph_schedule.hpp"
 #include "pipeline/render_job.hpp"
+#include "render/curvature_colours.hpp"
 #include "pipeline/stage_clock.hpp"
 
 namespace lbmshape {
@@ -153,7 +154,7 @@ public:
   }
   ~FolderIfLeftEmpty()
   {
-    temporary_files::forget(ticket_);
+    for (int ticket : tickets_) temporary_files::forget(ticket);
     if (kept_ || topmostNew_.empty()) return;
     // Only empty folders go, from the morph's own folder up to the topmost new one.
     std::error_code ec;
@@ -164,10 +165,17 @@ public:
   FolderIfLeftEmpty(const FolderIfLeftEmpty&) = delete;
   FolderIfLeftEmpty& operator=(const FolderIfLeftEmpty&) = delete;
 
-  // Call once the folder exists.
+  // Call once the folder exists. The new folders, the morph's own first,
+  // are listed for a process that ends without unwinding (a second Ctrl-C,
+  // a library's abort), which removes each that is still empty in turn.
   void created()
   {
-    if (!topmostNew_.empty()) ticket_ = temporary_files::remember(folder_);
+    if (topmostNew_.empty()) return;
+    std::error_code ec;
+    for (fs::path p = fs::absolute(folder_, ec).lexically_normal();; p = p.parent_path()) {
+      tickets_.push_back(temporary_files::remember(p));
+      if (p == topmostNew_ || p == p.parent_path()) break;
+    }
   }
   void keep() { kept_ = true; }
 
@@ -175,7 +183,7 @@ private:
   fs::path folder_;
   fs::path topmostNew_;  // empty when the folder existed
   bool kept_ = false;
-  int ticket_ = -1;
+  std::vector<int> tickets_;
 };
 
 // "5 to 9, 12": frame numbers in ascending order, runs shortened.
@@ -217,6 +225,7 @@ void checkMorphOptions(const MorphOptions& o)
   if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
   if (o.compression != GltfCompression::None && meshFormatOf("x." + o.format) != MeshFormat::Glb)
     throw UsageError("--compress writes .glb frames, not --format " + o.format);
+  if (o.colourByCurvature) requireColourFormat("x." + o.format, "--format " + o.format);
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -253,8 +262,15 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   if (!stepsGiven(o))
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
-  MorphFrameReport frameReport(clock.time("extract", [&] { return lattice->targetLevel(); }), frame, o.frames,
-                               o.frameFigures);
+  TriangleMesh targetLevel = clock.time("extract", [&] { return lattice->targetLevel(); });
+  // One colour scale for every frame, so that colours compare across them.
+  // (A plain double, not an optional: GCC 12 sees an optional<double> here as
+  // maybe uninitialized.)
+  const double colourScale = o.colourByCurvature ? render::curvatureScale(targetLevel) : 0.0;
+  if (o.colourByCurvature)
+    log::info("vertex colours: mean curvature from blue (-" + std::to_string(colourScale) + ") through grey (0) to red (+" +
+              std::to_string(colourScale) + "), in 1 / the meshes' units, the target's 95th percentile");
+  MorphFrameReport frameReport(std::move(targetLevel), frame, o.frames, o.frameFigures);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind
   if (!lock) lock.emplace(folder);
@@ -268,7 +284,11 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                        frameReport.surface(k, field, mesh);
                      })
                                     : FrameWriter::Inspect(),
-                     o.compression);
+                     o.compression,
+                     o.colourByCurvature ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
+                       mesh.colours = render::curvatureColours(mesh, scale);
+                     })
+                                    : FrameWriter::Decorate());
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
@@ -397,6 +417,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                      {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
                      {"triangles", meshes.back().triangleCount()}}},
           {"animation", o.animation ? nlohmann::json((folder / "morph.glb").string()) : nlohmann::json(nullptr)},
+          {"curvature_scale", o.colourByCurvature ? nlohmann::json(colourScale) : nlohmann::json(nullptr)},
           {"preview", o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
 }
 

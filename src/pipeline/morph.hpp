@@ -35,6 +35,9 @@ struct MorphOptions {
   double fps = 24.0;               // of the animation in morph.glb
   bool animation = true;           // write morph.glb
   bool force = false;              // write into a non-empty folder
+  // Frames coloured by mean curvature (--color curvature), on one scale: the
+  // target's, as the grid holds it.
+  bool colourByCurvature = false;
   // Frames and morph.glb quantized and meshopt-encoded (--compress; glb only).
   GltfCompression compression = GltfCompression::None;
   // A contact sheet (--preview): the source, evenly chosen frames and the

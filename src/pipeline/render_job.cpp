@@ -51,8 +51,8 @@ std::optional<render::Legend> colourPanels(std::vector<render::Panel>& panels, c
   }
   render::Legend legend;
   if (colouring.by == Colouring::By::Curvature) {
-    // The 95th percentile of |H|: the noise of a scan, or a sharp edge,
-    // would otherwise leave the rest of the surface grey.
+    // The 95th percentile of |H| (as render::curvatureScale): the noise of
+    // a scan, or a sharp edge, would otherwise leave the rest grey.
     const double scale = render::quantile(all, 0.95, true);
     legend = {"mean curvature (1/unit), 95% of vertices within the scale", -(scale > 0 ? scale : 1.0), scale > 0 ? scale : 1.0, true};
   } else {
@@ -197,6 +197,9 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   checkRenderOptions(o);
   render::requirePngPath(png, "the picture");
   const std::vector<fs::path> files = meshesToRender(paths, o.folderMeshes);
+  if (files.size() > size_t(parameter_bounds::maxFolderMeshes))
+    throw UsageError("a picture shows at most " + std::to_string(parameter_bounds::maxFolderMeshes) + " meshes; " +
+                     std::to_string(files.size()) + " were given");
   AtomicFile file(png);  // an unwritable path fails here, before the meshes are read
   StageClock clock;
   std::vector<TriangleMesh> meshes;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/parameter_bounds.hpp"
+
 namespace lbmshape::render {
 namespace {
 
@@ -30,10 +32,19 @@ int columnsFor(int panels, int asked)
 
 glm::ivec2 defaultPictureSize(int panels, bool labels, bool legend, int asked)
 {
-  const int cell = panels <= 2 ? 512 : panels <= 8 ? 384 : 256;
+  namespace bounds = parameter_bounds;
   const int columns = columnsFor(panels, asked), rows = (panels + columns - 1) / columns;
-  const int width = columns * cell, scale = textScaleFor(width, columns);
-  return {width, rows * (cell + (labels ? labelStrip(scale) : 0)) + (legend ? legendStrip(scale) : 0)};
+  const auto size = [&](int cell) {
+    const int width = columns * cell, scale = textScaleFor(width, columns);
+    return glm::ivec2(width, rows * (cell + (labels ? labelStrip(scale) : 0)) + (legend ? legendStrip(scale) : 0));
+  };
+  // Smaller cells where many meshes would make a picture beyond the bounds.
+  int cell = panels <= 2 ? 512 : panels <= 8 ? 384 : 256;
+  for (glm::ivec2 s = size(cell); cell > 32 && (s.x > bounds::maxPictureSide || s.y > bounds::maxPictureSide ||
+                                                long(s.x) * long(s.y) > bounds::maxPicturePixels);
+       s = size(cell))
+    cell -= 16;
+  return size(cell);
 }
 
 Layout arrange(const Picture& picture)

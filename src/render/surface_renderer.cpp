@@ -192,6 +192,15 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   if (picture.wireframe && !context.canDrawLines())
     throw DeviceError("the Vulkan device " + context.description().name + " cannot draw lines (fillModeNonSolid), so no --wireframe");
 
+  // The vertices are one allocation: refused, before anything is
+  // allocated, where the device cannot make it.
+  const uint64_t vertexBytes = uint64_t(cornerCount(picture)) * RENDER_VERTEX_FLOATS * sizeof(float);
+  const uint64_t allocationLimit = context.description().maxAllocationBytes;
+  if (allocationLimit > 0 && vertexBytes > allocationLimit)
+    throw DeviceError("the picture's " + std::to_string(cornerCount(picture) / 3) + " triangles need " +
+                      std::to_string(vertexBytes >> 20) + " MiB of vertices, more than the Vulkan device allocates at once (" +
+                      std::to_string(allocationLimit >> 20) + " MiB); draw fewer or smaller meshes in one picture");
+
   const vk::raii::Device& device = context.device();
   const vk::SampleCountFlagBits samples = multisampling(limits);
   const vk::Format depth = depthFormat(context.physicalDevice());

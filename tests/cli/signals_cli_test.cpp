@@ -16,6 +16,7 @@
 
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "core/address_sanitizer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
@@ -110,6 +111,62 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
   const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(message.find("terminated (SIGTERM): " + std::to_string(frames) + " complete frames"), std::string::npos)
       << frames << " frames; " << message;
+}
+
+// A library that aborts the process (Mesa's LLVM, out of memory while
+// compiling a shader) ends it like an error: one line, exit 5, and no
+// temporary file or new empty folder left. Sanitized builds keep the
+// default abort, so that a sanitizer's report is never taken for one.
+TEST(LastResort, AnAbortInTheMiddleOfAMorphLeavesNoPartialFile)
+{
+  if (builtWithAddressSanitizer) GTEST_SKIP() << "a build with AddressSanitizer keeps the default SIGABRT";
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  const fs::path out = folder / "new" / "frames", log = folder / "stderr.txt";
+  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                            out.string(), "--res", "48", "--frames", "400", "--format", "obj",
+                                            "--no-animation"},
+                                           log.string());
+  ASSERT_GT(pid, 0);
+  testing::waitForFile(out / "frame_0002.obj", std::chrono::seconds(60));
+  kill(pid, SIGABRT);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  std::ifstream in(log);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(testing::nonEmptyLines(message).size(), 1u) << message;
+  EXPECT_NE(message.find("lbmshape: error: a library aborted"), std::string::npos) << message;
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary file was left: " << entry.path();
+}
+
+TEST(LastResort, AnAbortBeforeTheFirstFrameLeavesNoNewFolder)
+{
+  if (builtWithAddressSanitizer) GTEST_SKIP() << "a build with AddressSanitizer keeps the default SIGABRT";
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(5), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 96, 48), folder / "b.obj");
+  const fs::path top = folder / "new", out = top / "deeper" / "frames";
+  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                            out.string(), "--res", "160", "--frames", "4", "--no-animation"});
+  ASSERT_GT(pid, 0);
+  // The folder is made once both fields are known; the first frame takes
+  // the lattice's first steps longer.
+  testing::waitForFile(out, std::chrono::seconds(60));
+  kill(pid, SIGABRT);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  // Either the first frame was complete (it is kept, nothing temporary
+  // beside it) or the new folders, all of them, went.
+  if (fs::exists(out / "frame_0000.glb")) {
+    for (const auto& entry : fs::directory_iterator(out))
+      EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary file was left: " << entry.path();
+  } else {
+    EXPECT_FALSE(fs::exists(top)) << "an empty new folder was left";
+  }
 }
 
 // A stop is honoured inside the signed distance too, between chunks of its

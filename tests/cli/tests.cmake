@@ -1,5 +1,6 @@
 lbmshape_test(cli_tests
   ${CMAKE_CURRENT_LIST_DIR}/compress_cli_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/curvature_colours_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/denoise_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hostile_input_cli_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/jobs_file_test.cpp

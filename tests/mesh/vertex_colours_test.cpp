@@ -3,11 +3,13 @@
 // red/green/blue (bytes or floats) and OBJ "v x y z r g b" lines.
 #include <cmath>
 #include <fstream>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
 #include "mesh/hand_made_gltf.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "support/scratch_folder.hpp"
 
 namespace lbmshape {
@@ -135,6 +137,39 @@ TEST(VertexColours, ObjVertexLinesWithSixNumbers)
   expectColour(coloured.colours[3], {0, 0, 1});  // clamped to [0, 1]
   std::ofstream(folder / "homogeneous.obj") << "v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nv 0 0 1 1\n" << faces;
   EXPECT_TRUE(readMesh(folder / "homogeneous.obj").colours.empty()) << "x y z w has no colour";
+}
+
+}  // namespace
+}  // namespace lbmshape
+
+namespace lbmshape {
+namespace {
+
+// The colours lbmshape writes come back as they went in: glTF COLOR_0
+// (float, and normalized bytes when compressed) and OBJ.
+TEST(VertexColours, WrittenColoursReadBack)
+{
+  testing::ScratchFolder folder;
+  TriangleMesh mesh;
+  for (const glm::vec3& p : meshio::tetraCorners) mesh.positions.push_back(glm::dvec3(p));
+  for (size_t i = 0; i < meshio::tetraIndices.size(); i += 3)
+    mesh.triangles.push_back({meshio::tetraIndices[i], meshio::tetraIndices[i + 1], meshio::tetraIndices[i + 2]});
+  mesh.colours = {{1, 0, 0}, {0, 0.5f, 0}, {0.2f, 0.4f, 0.8f}, {1, 1, 1}};
+  for (const auto& [name, compression, tolerance] :
+       {std::tuple{"m.glb", GltfCompression::None, 1e-5f}, std::tuple{"m.gltf", GltfCompression::None, 1e-5f},
+        std::tuple{"m.obj", GltfCompression::None, 1e-6f}, std::tuple{"c.glb", GltfCompression::Meshopt, 0.03f}}) {
+    writeMesh(mesh, folder / name, EmptyMesh::Refused, compression);
+    const TriangleMesh read = readMesh(folder / name);
+    ASSERT_EQ(read.colours.size(), 4u) << name;
+    for (size_t v = 0; v < 4; ++v) {
+      // Compressed vertices are reordered: find each by its position.
+      size_t original = 0;
+      while (glm::length(mesh.positions[original] - read.positions[v]) > 1e-3) ++original;
+      expectColour(read.colours[v], mesh.colours[original], tolerance);
+    }
+  }
+  const meshio::GlbContent glb = meshio::readGlb(folder / "m.glb");
+  EXPECT_TRUE(glb.json["meshes"][0]["primitives"][0]["attributes"].contains("COLOR_0"));
 }
 
 }  // namespace

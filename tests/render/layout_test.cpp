@@ -60,6 +60,12 @@ TEST(Layout, TheDefaultSizeGivesEachMeshASquareCell)
   EXPECT_EQ(defaultPictureSize(1, false, false), glm::ivec2(512, 512));
   EXPECT_EQ(defaultPictureSize(2, false, false), glm::ivec2(1024, 512));
   EXPECT_EQ(defaultPictureSize(8, false, false), glm::ivec2(4 * 384, 2 * 384));
+  // Many meshes get smaller cells, within the bounds of --size.
+  const glm::ivec2 many = defaultPictureSize(256, true, true);
+  EXPECT_LE(many.x, 8192);
+  EXPECT_LE(many.y, 8192);
+  EXPECT_LE(long(many.x) * many.y, 4096L * 4096L);
+  EXPECT_GE(many.x / columnsFor(256), 64);
   const glm::ivec2 labelled = defaultPictureSize(2, true, true);
   EXPECT_EQ(labelled.x, 1024);
   EXPECT_GT(labelled.y, 512);

@@ -117,34 +117,26 @@ int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& 
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
 
-  tinygltf::Accessor positions;
-  positions.bufferView = addEncodedView(c.positions, c.vertexCount, CompressedMesh::positionStride, "ATTRIBUTES",
-                                        TINYGLTF_TARGET_ARRAY_BUFFER);
-  positions.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  positions.type = TINYGLTF_TYPE_VEC3;
-  positions.count = c.vertexCount;
+  // One accessor per vertex stream, over its own encoded buffer view.
+  const auto attribute = [&](const std::vector<unsigned char>& encoded, uint32_t stride, int componentType, bool normalized,
+                              int type) {
+    tinygltf::Accessor accessor;
+    accessor.bufferView = addEncodedView(encoded, c.vertexCount, stride, "ATTRIBUTES", TINYGLTF_TARGET_ARRAY_BUFFER);
+    accessor.componentType = componentType;
+    accessor.normalized = normalized;
+    accessor.type = type;
+    accessor.count = c.vertexCount;
+    return accessor;
+  };
+  tinygltf::Accessor positions = attribute(c.positions, CompressedMesh::positionStride,
+                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, false, TINYGLTF_TYPE_VEC3);
   for (int k = 0; k < 3; ++k) positions.minValues.push_back(c.positionMin[k]), positions.maxValues.push_back(c.positionMax[k]);
   primitive.attributes["POSITION"] = addAccessor(positions);
-
-  tinygltf::Accessor normals;
-  normals.bufferView = addEncodedView(c.normals, c.vertexCount, CompressedMesh::normalStride, "ATTRIBUTES",
-                                      TINYGLTF_TARGET_ARRAY_BUFFER);
-  normals.componentType = TINYGLTF_COMPONENT_TYPE_BYTE;
-  normals.normalized = true;
-  normals.type = TINYGLTF_TYPE_VEC3;
-  normals.count = c.vertexCount;
-  primitive.attributes["NORMAL"] = addAccessor(normals);
-
-  if (!c.colours.empty()) {
-    tinygltf::Accessor colours;
-    colours.bufferView = addEncodedView(c.colours, c.vertexCount, CompressedMesh::colourStride, "ATTRIBUTES",
-                                        TINYGLTF_TARGET_ARRAY_BUFFER);
-    colours.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    colours.normalized = true;
-    colours.type = TINYGLTF_TYPE_VEC4;
-    colours.count = c.vertexCount;
-    primitive.attributes["COLOR_0"] = addAccessor(colours);
-  }
+  primitive.attributes["NORMAL"] = addAccessor(
+      attribute(c.normals, CompressedMesh::normalStride, TINYGLTF_COMPONENT_TYPE_BYTE, true, TINYGLTF_TYPE_VEC3));
+  if (!c.colours.empty())
+    primitive.attributes["COLOR_0"] = addAccessor(
+        attribute(c.colours, CompressedMesh::colourStride, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true, TINYGLTF_TYPE_VEC4));
 
   tinygltf::Accessor indices;
   indices.bufferView = addEncodedView(c.indices, c.indexCount, c.indexSize, "TRIANGLES", TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);

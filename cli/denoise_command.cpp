@@ -14,6 +14,7 @@ struct DenoiseArguments {
   const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
   bool anisotropic = false, preserveFeatures = false;
   std::string preview;
+  std::string colour = "none";
 };
 
 void runDenoise(const CommonOptions& common, DenoiseArguments& a)
@@ -24,6 +25,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   if (!a.preview.empty()) a.options.preview = a.preview;
+  a.options.colourByCurvature = a.colour == "curvature";
   checkDenoiseOptions(a.options);  // before the device is opened
   DenoiseResult result = denoiseFile(a.input, a.output, a.options, common.computeDevice());
   common.report(result.report);
@@ -56,10 +58,10 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
-  cmd->add_option("--color", a->options.colourByCurvature,
+  cmd->add_option("--color", a->colour,
                   "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf or .obj)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"none", false}, {"curvature", true}}))
-      ->default_str("none");
+      ->check(CLI::IsMember({"none", "curvature"}))
+      ->capture_default_str();
   cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
                 "Write a smaller .glb: positions and normals quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview, "Also draw the input and the result side by side into this PNG picture");

@@ -15,6 +15,7 @@ struct MorphArguments {
   CLI::Option *voxelGiven = nullptr, *stepsPerFrameGiven = nullptr, *stepsGiven = nullptr;
   bool noAnimation = false;
   std::string preview;
+  std::string colour = "none";
 };
 
 void runMorph(const CommonOptions& common, MorphArguments& a)
@@ -24,6 +25,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
   if (!a.preview.empty()) a.options.preview = a.preview;
+  a.options.colourByCurvature = a.colour == "curvature";
   a.options.frameFigures = common.json;  // only the JSON report shows them
   checkMorphOptions(a.options);  // before the device is opened
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
@@ -64,10 +66,10 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
-  cmd->add_option("--color", a->options.colourByCurvature,
+  cmd->add_option("--color", a->colour,
                   "Vertex colours of the frames: none, or curvature (mean curvature on the target's scale)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"none", false}, {"curvature", true}}))
-      ->default_str("none");
+      ->check(CLI::IsMember({"none", "curvature"}))
+      ->capture_default_str();
   cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
                 "Smaller .glb frames and morph.glb: quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview,

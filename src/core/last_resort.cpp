@@ -48,7 +48,7 @@ void writeLine(const char* message)
   ::_exit(code);
 }
 
-void onAbort(int)
+[[maybe_unused]] void onAbort(int)  // not installed in ASan builds
 {
   temporary_files::removeAllFromSignalHandler();
   writeLine("a library aborted the process (the Vulkan driver's shader compiler, when memory runs out; use a coarser grid, --res)");

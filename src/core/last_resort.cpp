@@ -51,7 +51,7 @@ void writeLine(const char* message)
 [[maybe_unused]] void onAbort(int)  // not installed in ASan builds
 {
   temporary_files::removeAllFromSignalHandler();
-  writeLine("a library aborted the process (the Vulkan driver's shader compiler, when memory runs out; use a coarser grid, --res)");
+  writeLine("aborted by a library's fatal error (Mesa's shader compiler aborts so when memory runs out); the message before this line says which");
   ::_exit(int(ExitCode::Device));
 }
 

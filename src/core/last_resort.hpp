@@ -10,7 +10,8 @@
 // ("LLVM ERROR: Unable to allocate section memory!") when compiling a shader
 // finds no memory, which under a tight `ulimit -v` can happen in the middle
 // of a job. SIGABRT then removes the job's temporary files and new empty
-// folders and ends with one line and exit 5. Builds with AddressSanitizer
+// folders and ends with one line and exit 5 (no core dump: the library's
+// own message, printed before, names the failure). Builds with AddressSanitizer
 // keep the default, so that a sanitizer's abort is never mistaken for one.
 #pragma once
 

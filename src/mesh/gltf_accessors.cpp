@@ -132,7 +132,7 @@ std::vector<glm::vec3> GltfAccessors::colours(int index, const std::string& what
                          model_.accessors[size_t(index)].type == TINYGLTF_TYPE_VEC4;
   const int type = withAlpha ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3;
   const tinygltf::Accessor& a = accessor(index, type, what);
-  std::vector<glm::vec3> out(count(index, type, what), glm::vec3(1.0f));
+  std::vector<glm::vec3> out(count(index, type, what), glm::vec3(0.0f));  // no buffer view: zeros, as glTF says
   read(a, withAlpha ? 4 : 3, what, [&](uint64_t i, int c, double value) {
     if (c < 3) out[i][c] = float(std::isfinite(value) ? std::clamp(value, 0.0, 1.0) : 0.0);
   });

@@ -310,15 +310,19 @@ size_t decodedLength(const tinygltf::Model& model)
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
 {
   const bool binary = format == MeshFormat::Glb;
-  const bool compressed = model.buffers.size() == 2;
-  if (compressed && !binary) throw UsageError("--compress writes .glb files, not " + file.target().string());
+  if (model.buffers.size() == 2 && !binary) throw UsageError("--compress writes .glb files, not " + file.target().string());
+  // A compressed file of no surface is the plain file of no surface: nothing
+  // to encode, so neither extension.
+  const bool compressed = model.buffers.size() == 2 && !model.buffers[0].data.empty();
   std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
   tinygltf::TinyGLTF writer;
   const tinygltf::Model* toWrite = &model;
   tinygltf::Model withoutBuffer;  // a file of no surface has no data
-  if (model.buffers.size() == 1 && model.buffers[0].data.empty()) {
+  if (model.buffers[0].data.empty()) {
     withoutBuffer = model;
     withoutBuffer.buffers.clear();
+    withoutBuffer.extensionsUsed.clear();
+    withoutBuffer.extensionsRequired.clear();
     toWrite = &withoutBuffer;
   }
   bool ok = false;

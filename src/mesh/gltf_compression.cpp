@@ -64,7 +64,9 @@ CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& 
   out.normals = encodeVertices(normals.data(), out.vertexCount, CompressedMesh::normalStride);
   if (coloured) out.colours = encodeVertices(colours.data(), out.vertexCount, CompressedMesh::colourStride);
 
-  out.indexSize = out.vertexCount <= 65536 ? 2 : 4;
+  // 16-bit indices up to 65534: 65535 is the primitive restart of WebGL2
+  // and Vulkan, which glTF forbids as an index of that type.
+  out.indexSize = out.vertexCount <= 65535 ? 2 : 4;
   out.indices.resize(meshopt_encodeIndexBufferBound(indices.size(), out.vertexCount));
   out.indices.resize(meshopt_encodeIndexBuffer(out.indices.data(), out.indices.size(), indices.data(), indices.size()));
   if (out.positions.empty() || out.normals.empty() || out.indices.empty())

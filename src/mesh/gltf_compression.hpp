@@ -1,7 +1,8 @@
 // The meshes of a compressed glTF file (--compress): quantized as
 // KHR_mesh_quantization allows, then encoded with meshoptimizer's codecs for
-// EXT_meshopt_compression. Three.js (with its meshopt decoder), Blender,
-// Babylon.js and gltfpack read them; most files shrink 5-8 times.
+// EXT_meshopt_compression. Three.js (with its meshopt decoder), Babylon.js
+// and gltfpack read them (Blender's importer not yet); most files shrink
+// about 5 times.
 //
 // Positions become unsigned 16-bit integers on a grid spanning the mesh's
 // largest extent (an error of at most 1/131070 of it, a few thousandths of a

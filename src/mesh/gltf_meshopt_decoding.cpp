@@ -1,6 +1,7 @@
 #include "mesh/gltf_meshopt_decoding.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include <meshoptimizer.h>
@@ -14,6 +15,9 @@ namespace {
 
 // Deeper JSON than any glTF file needs; refused before it is built.
 constexpr int kDepthLimit = 64;
+// A JSON chunk larger than any compressed GLB needs (a morph of thousands of
+// frames has a few MiB).
+constexpr size_t kJsonLimit = size_t(64) << 20;
 
 uint64_t unsignedField(const MeshSource& source, const nlohmann::json& object, const char* key, const std::string& what,
                        std::optional<uint64_t> otherwise = std::nullopt)
@@ -40,7 +44,9 @@ void decodeView(const MeshSource& source, const nlohmann::json& ext, std::string
   if (from > binary.size() || size > binary.size() - from) source.refuse(what + " reaches past the binary chunk");
   const auto modeField = ext.find("mode");
   if (modeField == ext.end() || !modeField->is_string()) source.refuse(what + " has no mode");
-  const std::string mode = *modeField, filter = ext.value("filter", std::string("NONE"));
+  const auto filterField = ext.find("filter");
+  if (filterField != ext.end() && !filterField->is_string()) source.refuse(what + "'s filter is not a name");
+  const std::string mode = *modeField, filter = filterField == ext.end() ? "NONE" : filterField->get<std::string>();
   const bool attributes = mode == "ATTRIBUTES", triangles = mode == "TRIANGLES", indices = mode == "INDICES";
   if (!attributes && !triangles && !indices) source.refuse(what + " has the unknown mode " + mode.substr(0, 40));
   if (attributes ? (stride == 0 || stride % 4 != 0 || stride > 256) : (stride != 2 && stride != 4))
@@ -77,24 +83,35 @@ void decodeView(const MeshSource& source, const nlohmann::json& ext, std::string
 std::optional<std::string> decodeMeshoptGlb(const MeshSource& source, std::string_view jsonText, std::string_view binary)
 {
   if (jsonText.find(meshoptExtension) == std::string_view::npos) return std::nullopt;
+  // The JSON is parsed whole here, before the reader's own checks: a tree
+  // takes many times its text, so the text is bounded first.
+  if (jsonText.size() > kJsonLimit)
+    source.refuse("its JSON chunk of " + std::to_string(jsonText.size() >> 20) + " MiB is larger than the " +
+                  std::to_string(kJsonLimit >> 20) + " MiB lbmshape reads beside EXT_meshopt_compression");
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(jsonText, [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
       if (depth > kDepthLimit) throw std::length_error("nested too deeply");
       return true;
     });
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const std::exception& e) {
     source.refuse("its JSON is not readable (" + std::string(e.what()).substr(0, 120) + ")");
   }
   if (!json.is_object()) source.refuse("its JSON is not an object");
   const auto views = json.find("bufferViews");
   const auto buffers = json.find("buffers");
-  if (views == json.end() || !views->is_array() || buffers == json.end() || !buffers->is_array() || buffers->empty())
+  if (views == json.end() || !views->is_array() || buffers == json.end() || !buffers->is_array() || buffers->empty() ||
+      !buffers->front().is_object())
     return std::nullopt;  // nothing to decode: the reader says what else is wrong
 
   // Every decoded byte costs memory: at most 128 times the file (all-zero
-  // attributes compress about 64 times), and no less than a mebibyte.
-  uint64_t budget = std::max<uint64_t>(128 * uint64_t(source.bytes.size()), uint64_t(1) << 20);
+  // attributes compress about 64 times), and no less than a mebibyte; and
+  // the decoded GLB, JSON and all, must stay a GLB (under 4 GiB).
+  const uint64_t used = 64 + 2 * uint64_t(jsonText.size()) + binary.size();
+  const uint64_t glbRoom = used < UINT32_MAX ? UINT32_MAX - used : 0;
+  uint64_t budget = std::min(std::max<uint64_t>(128 * uint64_t(source.bytes.size()), uint64_t(1) << 20), glbRoom);
   std::string decodedBinary(binary);
   size_t decodedViews = 0;
   for (size_t i = 0; i < views->size(); ++i) {

@@ -254,8 +254,11 @@ TriangleMesh readGltf(const MeshSource& given, MeshFormat format)
     if (unsupportedRequiredExtensions.count(extension))
       source.refuse("it requires " + extension + ", which lbmshape cannot decode");
 
-  uint64_t inputBytes = source.bytes.size();
-  for (const auto& buffer : model.buffers) inputBytes += buffer.data.size();
+  // What the file holds bounds what it may make: for a compressed file, its
+  // own size, not what it decoded to.
+  uint64_t inputBytes = decoded ? given.bytes.size() : source.bytes.size();
+  if (!decoded)
+    for (const auto& buffer : model.buffers) inputBytes += buffer.data.size();
   const GltfAccessors accessors(model, source, inputBytes);
   const std::vector<GltfInstance> instances = meshInstances(model, source);
   SoupBuilder builder(model, source, accessors);

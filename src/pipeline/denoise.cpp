@@ -240,7 +240,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   if (o.compression != GltfCompression::None && meshFormatOf(output) != MeshFormat::Glb)
     throw UsageError("--compress writes .glb files, not " + output.string());
   if (o.colourByCurvature) requireColourFormat(output, output.string());
-  if (o.preview) checkPreviewPath(*o.preview);
+  if (o.preview) checkPreview(*o.preview, device);
   StageClock clock;
 
   TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });

@@ -234,7 +234,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 {
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
-  if (o.preview) checkPreviewPath(*o.preview, folder);
+  if (o.preview) checkPreview(*o.preview, device, folder);
   StageClock clock;
 
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });

@@ -154,6 +154,13 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
   picture.width = size.x, picture.height = size.y;
 
   const render::Layout layout = render::arrange(picture);
+  for (const render::Rect& cell : layout.meshCells)
+    if (cell.width < parameter_bounds::minPictureSide || cell.height < parameter_bounds::minPictureSide)
+      throw UsageError("--size " + std::to_string(picture.width) + "x" + std::to_string(picture.height) + " leaves cells of " +
+                       std::to_string(cell.width) + "x" + std::to_string(cell.height) + " pixels for " +
+                       std::to_string(meshes.size()) + " meshes in " + std::to_string(layout.columns) +
+                       " columns; each needs at least " + std::to_string(parameter_bounds::minPictureSide) +
+                       " pixels each way: give a larger --size or other --columns");
   gpu::GpuContext& context = device.drawingContext();
   Stopwatch drawing;
   render::Image image = render::drawSurfaces(context, picture, layout);
@@ -221,9 +228,13 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   return report;
 }
 
-void checkPreviewPath(const fs::path& png, const fs::path& createdLater)
+void checkPreview(const fs::path& png, const ComputeDevice& device, const fs::path& createdLater)
 {
   render::requirePngPath(png, "--preview");
+  gpu::GpuContext& context = device.drawingContext();
+  if (!context.canDraw())
+    throw DeviceError("the Vulkan device " + context.description().name +
+                      " cannot draw pictures (it has no graphics queue); choose another with --device, or leave out --preview");
   std::error_code ec;
   if (!createdLater.empty() && fs::weakly_canonical(png.parent_path().empty() ? "." : png.parent_path(), ec) ==
                                    fs::weakly_canonical(createdLater, ec))

@@ -66,8 +66,9 @@ nlohmann::json renderFiles(const std::vector<std::filesystem::path>& paths, cons
 
 // Before any work of a job with a preview: the path is a .png (UsageError
 // naming --preview) in a folder that can be written (OutputError), unless
-// the folder is `createdLater` (a morph's output folder).
-void checkPreviewPath(const std::filesystem::path& png, const std::filesystem::path& createdLater = {});
+// the folder is `createdLater` (a morph's output folder), and the device
+// draws (DeviceError; this opens it).
+void checkPreview(const std::filesystem::path& png, const ComputeDevice& device, const std::filesystem::path& createdLater = {});
 // A labelled preview picture of meshes in memory, seen from `view`,
 // written to `png`; returns the milliseconds it took.
 double writePreview(const std::vector<ShownMesh>& meshes, const render::View& view, const std::filesystem::path& png,

@@ -155,6 +155,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadRender{"unknown_colour", {"--color", "rainbow"}, 2, "--color"},
                       BadRender{"count_zero", {"--count", "0"}, 2, "--count"},
                       BadRender{"negative_columns", {"--columns", "-1"}, 2, "--columns"},
+                      BadRender{"cells_too_small", {"--size", "16x16", "--labels"}, 2, "--size", false},
                       BadRender{"not_a_png", {}, 2, ".png", false, "out.jpg"},
                       BadRender{"mesh_without_triangles", {}, 3, "mesh.obj", true},
                       BadRender{"missing_reference", {"--color", "distance:/nonexistent/ref.obj"}, 3, "ref.obj"},

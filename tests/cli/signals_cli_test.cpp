@@ -137,7 +137,7 @@ TEST(LastResort, AnAbortInTheMiddleOfAMorphLeavesNoPartialFile)
   std::ifstream in(log);
   const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(testing::nonEmptyLines(message).size(), 1u) << message;
-  EXPECT_NE(message.find("lbmshape: error: a library aborted"), std::string::npos) << message;
+  EXPECT_NE(message.find("lbmshape: error: aborted by a library"), std::string::npos) << message;
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary file was left: " << entry.path();
 }

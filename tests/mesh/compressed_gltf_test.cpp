@@ -169,6 +169,17 @@ TEST(CompressedGltf, AnAnimationKeepsItsNodesAndDecodesEveryFrame)
   expectSameMesh(frames[2], decodeMesh(glb, roots[2]), 4.0 / 65535.0);
 }
 
+TEST(CompressedGltf, AFileOfNoSurfaceIsThePlainOne)
+{
+  testing::ScratchFolder folder;
+  writeMesh(TriangleMesh{}, folder / "empty.glb", EmptyMesh::Allowed, GltfCompression::Meshopt);
+  const auto validation = testing::validateGltf(folder / "empty.glb");
+  EXPECT_TRUE(validation.passed()) << validation;
+  const meshio::GlbContent glb = meshio::readGlb(folder / "empty.glb");
+  EXPECT_FALSE(glb.json.contains("extensionsRequired")) << "nothing was encoded";
+  EXPECT_FALSE(glb.json.contains("buffers"));
+}
+
 TEST(CompressedGltf, OnlyGlbFilesAreCompressed)
 {
   testing::ScratchFolder folder;
@@ -257,7 +268,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCompression{"filtered_indices", [](nlohmann::json& j, auto&) { meshopt(j, 2)["filter"] = "OCTAHEDRAL"; },
                        "only attributes"},
         BadCompression{"unknown_filter", [](nlohmann::json& j, auto&) { meshopt(j, 1)["filter"] = "FANCY"; }, "FANCY"},
-        BadCompression{"not_whole_triangles", [](nlohmann::json& j, auto&) { meshopt(j, 2)["count"] = 7; }, "whole triangles"}),
+        BadCompression{"not_whole_triangles", [](nlohmann::json& j, auto&) { meshopt(j, 2)["count"] = 7; }, "whole triangles"},
+        BadCompression{"filter_not_a_name", [](nlohmann::json& j, auto&) { meshopt(j, 1)["filter"] = 3; }, "filter"},
+        BadCompression{"buffer_not_an_object", [](nlohmann::json& j, auto&) { j["buffers"][0] = 5; }, "buffer"}),
     [](const ::testing::TestParamInfo<BadCompression>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -110,9 +110,16 @@ void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record
   submitAndWait(queue_, buffers[0], record);
 }
 
+void GpuContext::requireDrawing(const std::string& otherwise) const
+{
+  if (!graphics_)
+    throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with --device" +
+                      otherwise);
+}
+
 void GpuContext::drawAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
-  if (!graphics_) throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with --device");
+  requireDrawing();
   vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*graphics_->pool, vk::CommandBufferLevel::ePrimary, 1));
   submitAndWait(graphics_->queue, buffers[0], record);
 }

@@ -55,12 +55,13 @@ public:
   // Records commands into a fresh command buffer, submits it and waits.
   void runAndWait(const std::function<void(vk::CommandBuffer)>& record);
 
-  // Whether the device has a queue that draws (every GPU and lavapipe do; a
-  // compute-only accelerator does not), and whether it draws lines
-  // (fillModeNonSolid, for wireframes).
-  bool canDraw() const { return graphics_.has_value(); }
+  // Whether the device draws lines (fillModeNonSolid, for wireframes).
   bool canDrawLines() const { return fillModeNonSolid_; }
-  // The same as runAndWait, on the graphics queue (DeviceError without one).
+  // DeviceError, naming the device, unless it has a queue that draws (every
+  // GPU and lavapipe do; a compute-only accelerator does not); `otherwise`
+  // is added to the advice (what else the user can do).
+  void requireDrawing(const std::string& otherwise = "") const;
+  // The same as runAndWait, on the graphics queue (requireDrawing first).
   void drawAndWait(const std::function<void(vk::CommandBuffer)>& record);
   const vk::raii::PipelineCache& pipelineCache() { return pipelineCache_->cache(); }
 

@@ -16,6 +16,14 @@ uint32_t glbWord(std::string_view bytes, size_t at)
   return value;
 }
 
+GlbChunks glbChunks(std::string_view glb)
+{
+  const size_t jsonLength = glbWord(glb, 12), binaryAt = 20 + jsonLength;
+  GlbChunks chunks{glb.substr(20, jsonLength), {}};
+  if (glb.size() >= binaryAt + 8) chunks.binary = glb.substr(binaryAt + 8, glbWord(glb, binaryAt));
+  return chunks;
+}
+
 std::string glbFile(std::string json, std::string binary)
 {
   json.resize((json.size() + 3) / 4 * 4, ' ');

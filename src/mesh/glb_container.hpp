@@ -11,6 +11,14 @@ namespace lbmshape {
 // The little-endian word at `at` (the caller has checked that it is there).
 uint32_t glbWord(std::string_view bytes, size_t at);
 
+// The JSON and binary chunks (the binary one empty when there is none) of
+// a GLB whose layout is known to be sound: one lbmshape wrote, or one the
+// reader has checked.
+struct GlbChunks {
+  std::string_view json, binary;
+};
+GlbChunks glbChunks(std::string_view glb);
+
 // A GLB file of this JSON text and binary chunk (none when empty), padded
 // as GLB requires: the JSON with spaces, the binary chunk with zeros.
 std::string glbFile(std::string json, std::string binary);

@@ -285,16 +285,14 @@ void addExtensions(nlohmann::json& object, const tinygltf::ExtensionMap& extensi
 // completed from the model, and the container put together again.
 std::string withMeshoptEntries(const std::string& glb, const tinygltf::Model& model, size_t decodedBytes)
 {
-  const uint32_t jsonLength = glbWord(glb, 12);
-  nlohmann::json json = nlohmann::json::parse(glb.substr(20, jsonLength));
+  const GlbChunks chunks = glbChunks(glb);
+  nlohmann::json json = nlohmann::json::parse(chunks.json);
   nlohmann::json& fallback = json.at("buffers").at(1);
   fallback.erase("uri");
   fallback["byteLength"] = decodedBytes;
   addExtensions(fallback, model.buffers[1].extensions);
   for (size_t i = 0; i < model.bufferViews.size(); ++i) addExtensions(json.at("bufferViews").at(i), model.bufferViews[i].extensions);
-  const size_t binAt = 20 + jsonLength;
-  std::string binary = glb.size() >= binAt + 8 ? glb.substr(binAt + 8, glbWord(glb, binAt)) : std::string();
-  return glbFile(json.dump(), std::move(binary));
+  return glbFile(json.dump(), std::string(chunks.binary));
 }
 
 size_t decodedLength(const tinygltf::Model& model)

@@ -61,7 +61,7 @@ std::string_view jsonOf(const MeshSource& source, MeshFormat format)
     if (bytes.substr(20 + jsonLength + 4, 4) != std::string_view("BIN\0", 4))
       source.refuse("its second GLB chunk is not a binary chunk");
   }
-  return bytes.substr(20, jsonLength);
+  return glbChunks(bytes).json;
 }
 
 tinygltf::Model load(const MeshSource& source, MeshFormat format, GltfFileAccess& files)
@@ -236,11 +236,9 @@ TriangleMesh readGltf(const MeshSource& given, MeshFormat format)
   // A GLB with meshopt-compressed views is read as the plain GLB it decodes to.
   std::optional<std::string> decoded;
   if (format == MeshFormat::Glb) {
-    const std::string_view json = jsonOf(given, format);
-    const size_t binAt = 20 + json.size();
-    const std::string_view binary =
-        given.bytes.size() >= binAt + 8 ? given.bytes.substr(binAt + 8, glbWord(given.bytes, binAt)) : std::string_view();
-    decoded = decodeMeshoptGlb(given, json, binary);
+    jsonOf(given, format);  // checks the chunks
+    const GlbChunks chunks = glbChunks(given.bytes);
+    decoded = decodeMeshoptGlb(given, chunks.json, chunks.binary);
   }
   MeshSource source = given;
   if (decoded) source.bytes = *decoded;

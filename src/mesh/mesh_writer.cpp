@@ -20,11 +20,18 @@ MeshFormat outputFormat(const std::filesystem::path& path)
                      "' (use one of " + supportedExtensions() + ")");
   return *format;
 }
+
+void requireCompressible(MeshFormat format, const std::filesystem::path& path, GltfCompression compression)
+{
+  if (compression != GltfCompression::None && format != MeshFormat::Glb)
+    throw UsageError("--compress writes .glb files, not " + path.string());
+}
+
 }  // namespace
 
-void checkMeshDestination(const std::filesystem::path& path)
+void checkMeshDestination(const std::filesystem::path& path, GltfCompression compression)
 {
-  outputFormat(path);
+  requireCompressible(outputFormat(path), path, compression);
   AtomicFile probe(path);  // created and, uncommitted, removed again
 }
 
@@ -39,8 +46,7 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty, GltfCompression compression)
 {
   const auto format = outputFormat(path);
-  if (compression != GltfCompression::None && format != MeshFormat::Glb)
-    throw UsageError("--compress writes .glb files, not " + path.string());
+  requireCompressible(format, path, compression);
   requireWritable(mesh, path, "the mesh", empty);
   AtomicFile file(path);
   switch (format) {

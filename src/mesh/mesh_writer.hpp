@@ -31,9 +31,10 @@ void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, Empt
                GltfCompression compression = GltfCompression::None);
 
 // The checks writeMesh makes before writing, for commands to make before
-// their work: UsageError for an unknown extension, OutputError for a missing
-// or unwritable folder (tested by creating and removing a temporary file).
-void checkMeshDestination(const std::filesystem::path& path);
+// their work: UsageError for an unknown extension (or compression of a file
+// that is not .glb), OutputError for a missing or unwritable folder (tested
+// by creating and removing a temporary file).
+void checkMeshDestination(const std::filesystem::path& path, GltfCompression compression = GltfCompression::None);
 
 // UsageError when `output` is the file `input` (the same path, a link to it,
 // or a hard link): writing the result there would replace the input, which

@@ -219,9 +219,14 @@ double colourByCurvature(TriangleMesh& mesh)
 {
   const double scale = render::curvatureScale(mesh);
   mesh.colours = render::curvatureColours(mesh, scale);
-  log::info("vertex colours: mean curvature from blue (-" + std::to_string(scale) + ") through grey (0) to red (+" +
-            std::to_string(scale) + "), in 1 / the mesh's units; 95% of the vertices lie within");
+  reportCurvatureColours(scale, "the mesh's");
   return scale;
+}
+
+void reportCurvatureColours(double scale, const std::string& whose)
+{
+  log::info("vertex colours: mean curvature from blue (-" + std::to_string(scale) + ") through grey (0) to red (+" +
+            std::to_string(scale) + "), in 1 / the mesh's units; " + whose + " 95th percentile of |H|");
 }
 
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options)
@@ -236,9 +241,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   checkDenoiseOptions(o);
   relaxation::warnIfInaccurate(o.gamma, o.steps, "--gamma");
   checkNotTheInput(output, input, o.replaceInput);
-  checkMeshDestination(output);
-  if (o.compression != GltfCompression::None && meshFormatOf(output) != MeshFormat::Glb)
-    throw UsageError("--compress writes .glb files, not " + output.string());
+  checkMeshDestination(output, o.compression);
   if (o.colourByCurvature) requireColourFormat(output, output.string());
   if (o.preview) checkPreview(*o.preview, device);
   StageClock clock;

@@ -66,6 +66,9 @@ void requireColourFormat(const std::filesystem::path& output, const std::string&
 // Colours the mesh's vertices by mean curvature (render/curvature_colours)
 // and says so on stderr; returns the scale.
 double colourByCurvature(TriangleMesh& mesh);
+// Says on stderr what the colours of --color curvature mean: the map over
+// ±scale, `whose` 95th percentile of |H|.
+void reportCurvatureColours(double scale, const std::string& whose);
 
 // The grid for a mesh.
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);

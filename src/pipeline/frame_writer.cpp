@@ -34,6 +34,11 @@ FrameWriter::~FrameWriter()
   thread_.join();
 }
 
+bool FrameWriter::isFrameName(const std::filesystem::path& file)
+{
+  return file.filename().string().rfind("frame_", 0) == 0;
+}
+
 std::filesystem::path FrameWriter::framePath(int index) const
 {
   char name[64];

@@ -48,6 +48,8 @@ public:
   FrameWriter& operator=(const FrameWriter&) = delete;
 
   std::filesystem::path framePath(int index) const;
+  // Whether a file's name is a frame's (frame_<number>), as framePath makes it.
+  static bool isFrameName(const std::filesystem::path& file);
 
   // Queues frame `index`'s field (pass the same pointer again for a frame
   // identical to the previous one: it is written without extracting again).

@@ -77,11 +77,8 @@ void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, c
 {
   constexpr int shownFrames = 6;
   std::vector<ShownMesh> shown{{&source, "source: " + sourcePath.filename().string()}};
-  const int n = int(frames.size()), count = std::min(n, shownFrames);
-  for (int i = 0; i < count; ++i) {
-    const int k = count == 1 ? n - 1 : int((long(i) * (n - 1) + (count - 1) / 2) / (count - 1));
-    shown.push_back({&frames[size_t(k)], "frame " + std::to_string(k)});
-  }
+  for (size_t k : evenlySpaced(frames.size(), shownFrames))
+    shown.push_back({&frames[k], "frame " + std::to_string(k)});
   shown.push_back({&target, "target: " + targetPath.filename().string()});
   // From above at an angle: a morph often changes a shape in depth too.
   writePreview(shown, render::parseView("iso"), png, device);
@@ -90,7 +87,7 @@ void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, c
 bool isOurFile(const fs::path& file)
 {
   const std::string name = file.filename().string();
-  return name == "morph.glb" || (name.rfind("frame_", 0) == 0 && meshFormatOf(file).has_value());
+  return name == "morph.glb" || (FrameWriter::isFrameName(file) && meshFormatOf(file).has_value());
 }
 
 // The output folder may be missing or empty; a non-empty one only with
@@ -267,9 +264,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   // (A plain double, not an optional: GCC 12 sees an optional<double> here as
   // maybe uninitialized.)
   const double colourScale = o.colourByCurvature ? render::curvatureScale(targetLevel) : 0.0;
-  if (o.colourByCurvature)
-    log::info("vertex colours: mean curvature from blue (-" + std::to_string(colourScale) + ") through grey (0) to red (+" +
-              std::to_string(colourScale) + "), in 1 / the meshes' units, the target's 95th percentile");
+  if (o.colourByCurvature) reportCurvatureColours(colourScale, "the target's");
   MorphFrameReport frameReport(std::move(targetLevel), frame, o.frames, o.frameFigures);
   FolderIfLeftEmpty newFolder(folder);
   prepareFolder(folder);  // only now: a bad input leaves no folder behind

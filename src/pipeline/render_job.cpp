@@ -11,8 +11,10 @@
 #include "gpu/gpu_context.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "pipeline/frame_writer.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "render/colour_map.hpp"
+#include "render/curvature_colours.hpp"
 #include "render/layout.hpp"
 #include "render/picture.hpp"
 #include "render/png_file.hpp"
@@ -51,10 +53,9 @@ std::optional<render::Legend> colourPanels(std::vector<render::Panel>& panels, c
   }
   render::Legend legend;
   if (colouring.by == Colouring::By::Curvature) {
-    // The 95th percentile of |H| (as render::curvatureScale): the noise of
-    // a scan, or a sharp edge, would otherwise leave the rest grey.
-    const double scale = render::quantile(all, 0.95, true);
-    legend = {"mean curvature (1/unit), 95% of vertices within the scale", -(scale > 0 ? scale : 1.0), scale > 0 ? scale : 1.0, true};
+    // One scale over every mesh of the picture, the rule of --color curvature.
+    const double scale = render::curvatureScale(all);
+    legend = {"mean curvature (1/unit), 95% of vertices within the scale", -scale, scale, true};
   } else {
     const double scale = render::quantile(all, 0.99, true);
     legend = {"distance to " + colouring.reference.filename().string() + " (mesh units)", 0.0, scale > 0 ? scale : 1.0, false};
@@ -66,11 +67,6 @@ std::optional<render::Legend> colourPanels(std::vector<render::Panel>& panels, c
   return legend;
 }
 
-bool isFrameFile(const fs::path& file)
-{
-  return file.filename().string().rfind("frame_", 0) == 0;
-}
-
 std::vector<fs::path> meshFilesIn(const fs::path& folder)
 {
   std::vector<fs::path> files;
@@ -78,23 +74,25 @@ std::vector<fs::path> meshFilesIn(const fs::path& folder)
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec))
     if (entry.is_regular_file(ec) && meshFormatOf(entry.path())) files.push_back(entry.path());
   if (ec) throw InputError("cannot list the folder " + folder.string() + ": " + ec.message());
-  if (std::any_of(files.begin(), files.end(), isFrameFile)) std::erase_if(files, [](const fs::path& f) { return !isFrameFile(f); });
+  if (std::any_of(files.begin(), files.end(), FrameWriter::isFrameName))
+    std::erase_if(files, [](const fs::path& f) { return !FrameWriter::isFrameName(f); });
   std::sort(files.begin(), files.end());
   return files;
 }
 
-// `count` of `items` at even spacing, the first and last among them.
-template <typename T>
-std::vector<T> evenlyChosen(const std::vector<T>& items, int count)
+}  // namespace
+
+std::vector<size_t> evenlySpaced(size_t n, int count)
 {
-  if (int(items.size()) <= count) return items;
-  std::vector<T> chosen;
+  std::vector<size_t> chosen;
+  if (n <= size_t(std::max(count, 0))) {
+    for (size_t i = 0; i < n; ++i) chosen.push_back(i);
+    return chosen;
+  }
   for (int i = 0; i < count; ++i)
-    chosen.push_back(items[size_t(count == 1 ? 0 : (long(i) * long(items.size() - 1) + (count - 1) / 2) / (count - 1))]);
+    chosen.push_back(count == 1 ? 0 : (size_t(i) * (n - 1) + size_t(count - 1) / 2) / size_t(count - 1));
   return chosen;
 }
-
-}  // namespace
 
 Colouring parseColouring(const std::string& text)
 {
@@ -193,7 +191,7 @@ std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int per
     }
     const std::vector<fs::path> inFolder = meshFilesIn(path);
     if (inFolder.empty()) throw InputError("the folder " + path.string() + " holds no mesh file");
-    for (const fs::path& f : evenlyChosen(inFolder, perFolder)) files.push_back(f);
+    for (size_t i : evenlySpaced(inFolder.size(), perFolder)) files.push_back(inFolder[i]);
   }
   return files;
 }
@@ -231,10 +229,7 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
 void checkPreview(const fs::path& png, const ComputeDevice& device, const fs::path& createdLater)
 {
   render::requirePngPath(png, "--preview");
-  gpu::GpuContext& context = device.drawingContext();
-  if (!context.canDraw())
-    throw DeviceError("the Vulkan device " + context.description().name +
-                      " cannot draw pictures (it has no graphics queue); choose another with --device, or leave out --preview");
+  device.drawingContext().requireDrawing(", or leave out --preview");
   std::error_code ec;
   if (!createdLater.empty() && fs::weakly_canonical(png.parent_path().empty() ? "." : png.parent_path(), ec) ==
                                    fs::weakly_canonical(createdLater, ec))

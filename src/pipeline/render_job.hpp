@@ -53,6 +53,10 @@ struct ShownMesh {
 render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& options, const ComputeDevice& device,
                          nlohmann::json* figures = nullptr);
 
+// `count` indices into n items at even spacing, the first and the last
+// among them (all n when count >= n): the frames a contact sheet shows.
+std::vector<size_t> evenlySpaced(size_t n, int count);
+
 // Mesh files, with each folder replaced by its mesh files in name order
 // (only its frame_* files where it has any: a morph's folder), evenly
 // chosen down to `perFolder` with the first and last kept. InputError for a

@@ -5,9 +5,11 @@
 
 namespace lbmshape::render {
 
-double curvatureScale(const TriangleMesh& mesh)
+double curvatureScale(const TriangleMesh& mesh) { return curvatureScale(vertexMeanCurvature(mesh)); }
+
+double curvatureScale(const std::vector<double>& meanCurvatures)
 {
-  const double scale = quantile(vertexMeanCurvature(mesh), 0.95, true);
+  const double scale = quantile(meanCurvatures, 0.95, true);
   return scale > 0.0 ? scale : 1.0;
 }
 

@@ -16,6 +16,8 @@ namespace lbmshape::render {
 // scale that noise or a sharp edge does not wash out. 1 for a mesh without
 // curvature.
 double curvatureScale(const TriangleMesh& mesh);
+// The same over mean curvatures already computed (of several meshes).
+double curvatureScale(const std::vector<double>& meanCurvatures);
 
 // The mesh's vertices' colours (sRGB, as TriangleMesh keeps them) for H on
 // the diverging map over [-scale, scale].

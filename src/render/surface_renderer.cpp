@@ -180,8 +180,7 @@ int samplesPerPixel(const gpu::GpuContext& context) { return int(multisampling(c
 
 Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layout& layout)
 {
-  if (!context.canDraw())
-    throw DeviceError("the Vulkan device " + context.description().name + " cannot draw (no graphics queue); choose another with --device");
+  context.requireDrawing();  // before anything is allocated for the picture
   const vk::PhysicalDeviceLimits& limits = context.limits();
   const uint32_t w = uint32_t(picture.width), h = uint32_t(picture.height);
   if (w > limits.maxFramebufferWidth || h > limits.maxFramebufferHeight || w > limits.maxImageDimension2D ||

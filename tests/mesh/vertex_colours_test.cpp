@@ -94,33 +94,33 @@ TEST(VertexColours, ColourCountMustMatchThePositions)
   }
 }
 
+// An ASCII PLY tetrahedron whose vertices carry `colourProperties` after
+// x y z, each vertex line "x y z" followed by its values in `colourValues`.
+std::string plyTetrahedron(const std::string& colourProperties, const std::vector<std::string>& colourValues)
+{
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n" +
+                    colourProperties + "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const char* corners[4] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1"};
+  for (int v = 0; v < 4; ++v) ply += std::string(corners[v]) + " " + colourValues[size_t(v)] + "\n";
+  return ply + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+}
+
 TEST(VertexColours, PlyRedGreenBlueInBytesOrFloats)
 {
   testing::ScratchFolder folder;
-  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-  std::ofstream(folder / "bytes.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                         "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-                                         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
-                                         "0 0 0 255 0 0\n1 0 0 0 51 0\n0 1 0 0 0 255\n0 0 1 255 255 255\n"
-                                      << faces;
+  std::ofstream(folder / "bytes.ply") << plyTetrahedron(
+      "property uchar red\nproperty uchar green\nproperty uchar blue\n", {"255 0 0", "0 51 0", "0 0 255", "255 255 255"});
   const TriangleMesh bytes = readMesh(folder / "bytes.ply");
   ASSERT_EQ(bytes.colours.size(), 4u);
   expectColour(bytes.colours[0], {1, 0, 0});
   expectColour(bytes.colours[1], {0, 0.2f, 0});
-  std::ofstream(folder / "floats.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                          "property float z\nproperty float red\nproperty float green\nproperty float blue\n"
-                                          "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
-                                          "0 0 0 0.5 0 0\n1 0 0 0 1 0\n0 1 0 0 0 7\n0 0 1 1 1 1\n"
-                                       << faces;
+  std::ofstream(folder / "floats.ply") << plyTetrahedron(
+      "property float red\nproperty float green\nproperty float blue\n", {"0.5 0 0", "0 1 0", "0 0 7", "1 1 1"});
   const TriangleMesh floats = readMesh(folder / "floats.ply");
   ASSERT_EQ(floats.colours.size(), 4u);
   expectColour(floats.colours[0], {0.5f, 0, 0});
   expectColour(floats.colours[2], {0, 0, 1});  // clamped to [0, 1]
-  std::ofstream(folder / "plain.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                         "property float z\nproperty uchar red\n"
-                                         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
-                                         "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n"
-                                      << faces;
+  std::ofstream(folder / "plain.ply") << plyTetrahedron("property uchar red\n", {"1", "1", "1", "1"});
   EXPECT_TRUE(readMesh(folder / "plain.ply").colours.empty()) << "red alone is not a colour";
 }
 

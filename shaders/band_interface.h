@@ -5,7 +5,7 @@
 // Layouts, per brick slot s (a brick is 8 x 8 x 8 cells, cell
 // l = x + 8 y + 64 z), all as vec4 of four consecutive cells of a row:
 //   moments: [s][m][l / 4]: m = 0..3 for rho*, jx*, jy*, jz* after the last collision
-//   field, omega, source base: [s][l / 4] (the order of BandField's values)
+//   field, omega, gamma, source base: [s][l / 4] (the order of BandField's values)
 // and as words:
 //   streams: uint [s][y + 8 z], bit x set when cell (x, y, z) streams
 //   neighbours: int [s][27]: slots of the brick's neighbours, (dx + 1) +
@@ -35,6 +35,7 @@
 #define BAND_BINDING_NEXT 6        // storage buffers [BAND_MAX_POOLS]: the next copy
 #define BAND_BINDING_FIELD 7       // storage buffers [BAND_MAX_POOLS]: the field
 #define BAND_BINDING_WORK 8        // isamplerBuffer
+#define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule
 
 // Specialization constants.
 #define BAND_SPEC_PER_CELL_OMEGA 0
@@ -43,6 +44,7 @@
 #define BAND_SPEC_W_REST 3
 #define BAND_SPEC_W_AXIAL 4
 #define BAND_SPEC_W_DIAGONAL 5
+#define BAND_SPEC_PAPER_RULE 6
 
 // The push constants, as a list of (type, name) for both languages.
 #define BAND_STEP_PARAMETERS(FIELD) \
@@ -54,7 +56,8 @@
   FIELD(int, slotsPerMomentPool)    \
   FIELD(int, slotsPerFieldPool)     \
   FIELD(float, omega)               \
-  FIELD(float, decay)
+  FIELD(float, decay)               \
+  FIELD(float, gamma0)
 
 #define BAND_DECLARE_FIELD(type, name) type name;
 
@@ -63,7 +66,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 9 * 4, "push constants: 9 words");
+static_assert(sizeof(StepParameters) == 10 * 4, "push constants: 10 words");
 }  // namespace lbmshape::band_shader
 #endif
 

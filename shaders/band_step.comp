@@ -6,10 +6,16 @@
 // J, apply the source, collide and store (rho*, j*). With COLLIDE false it
 // stores X instead: the field of the current state.
 //
+// With PAPER_RULE the relaxation is the paper's anisotropic rule (section
+// 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
+// gamma = clamp(gamma0 + (X - rho*) / gamma before), rho* being the X its
+// last step pulled (no source runs with the rule), and keeps that gamma.
+//
 // A workgroup is one brick; an invocation one of its rows of eight cells, as
 // two vec4 per moment, so every fetch brings four cells (on lavapipe a vec4
 // texel fetch is plain loads, other loads one lane at a time) and only the
 // cells beyond the row's ends come from the bricks beside it.
+#include "adaptive_gamma_bounds.h"
 #include "band_interface.h"
 
 layout(local_size_x = BAND_WORKGROUP_SIZE) in;
@@ -19,6 +25,7 @@ layout(constant_id = BAND_SPEC_COLLIDE) const bool COLLIDE = true;
 layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
 layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
 layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
+layout(constant_id = BAND_SPEC_PAPER_RULE) const bool PAPER_RULE = false;
 
 layout(push_constant) uniform Parameters { BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD) } p;
 
@@ -31,10 +38,13 @@ layout(set = 0, binding = BAND_BINDING_SOURCE) uniform samplerBuffer sourceBase;
 layout(set = 0, binding = BAND_BINDING_WORK) uniform isamplerBuffer work;
 layout(set = 0, binding = BAND_BINDING_NEXT, std430) writeonly buffer NextPool { vec4 v[]; } nextPools[BAND_MAX_POOLS];
 layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_POOLS];
+// Used only with PAPER_RULE: each invocation reads and writes its own cells.
+layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform imageBuffer gammaPerCell;
 
 int slot, y, z;  // this invocation's brick and row
 ivec3 origin;    // the brick's first cell
 vec4 fa[19], fb[19];  // the row's cells 0-3 and 4-7, pulled
+vec4 ownA[4], ownB[4];  // the same cells' own moments
 
 // vec4 index of moment `m` of row (yy, zz), half hh, of brick s.
 int momentAt(int s, int m, int yy, int zz, int hh) { return ((s * 4 + m) * 64 + (zz * 8 + yy)) * 2 + hh; }
@@ -104,7 +114,7 @@ bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 
 // X = sum f, J = sum e f (in index order, as the CPU reference sums), the
 // source, then the collision or the field, for one half of the row.
-void finish(vec4 f[19], int part)
+void finish(vec4 f[19], vec4 rhoBefore, int part)
 {
   vec4 X = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] + f[13] +
            f[14] + f[15] + f[16] + f[17] + f[18];
@@ -125,7 +135,13 @@ void finish(vec4 f[19], int part)
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
     return;
   }
-  const vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
+  vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
+  if (PAPER_RULE) {
+    const vec4 gamma = clamp(p.gamma0 + (X - rhoBefore) / imageLoad(gammaPerCell, cells), vec4(ADAPTIVE_GAMMA_LOWEST),
+                             vec4(ADAPTIVE_GAMMA_HIGHEST));
+    imageStore(gammaPerCell, cells, gamma);
+    omega = 1.0 / (3.0 * gamma + 0.5);
+  }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
   nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + 0.5 * S;
   nextPools[pool].v[momentAt(first, 1, y, z, part)] = (1.0 - omega) * Jx;
@@ -145,7 +161,6 @@ void main()
   const uint rowBits = texelFetch(streamBits, slot * 64 + z * 8 + y).x;
   const vec4 streamsA = vec4(notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0)));
   const vec4 streamsB = vec4(notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0)));
-  vec4 ownA[4], ownB[4];
   for (int k = 0; k < 4; ++k) {
     ownA[k] = moment(momentAt(slot, k, y, z, 0));
     ownB[k] = moment(momentAt(slot, k, y, z, 1));
@@ -158,6 +173,6 @@ void main()
   PULL(7, 1, 1, 0) PULL(8, -1, -1, 0) PULL(9, 1, -1, 0) PULL(10, -1, 1, 0)
   PULL(11, 1, 0, 1) PULL(12, -1, 0, -1) PULL(13, 1, 0, -1) PULL(14, -1, 0, 1)
   PULL(15, 0, 1, 1) PULL(16, 0, -1, -1) PULL(17, 0, 1, -1) PULL(18, 0, -1, 1)
-  finish(fa, 0);
-  finish(fb, 1);
+  finish(fa, ownA[0], 0);
+  finish(fb, ownB[0], 1);
 }

@@ -7,21 +7,19 @@
 // instructions as possible and without branches.
 
 #include "lattice_layout.glsl"
+#include "lattice_interface.h"
 
 layout(local_size_x_id = 0) in;
-layout(constant_id = 10) const bool PER_CELL_OMEGA = false;
-layout(constant_id = 11) const bool HAS_SOURCE = false;
+layout(constant_id = LATTICE_SPEC_PER_CELL_OMEGA) const bool PER_CELL_OMEGA = false;
+layout(constant_id = LATTICE_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
 
-layout(push_constant) uniform StepParameters {
-  float omega;  // 1/tau where it is the same in every cell
-  float decay;  // c in the source S = A - c X
-} params;
+layout(push_constant) uniform StepParameters { LATTICE_STEP_PARAMETERS(LATTICE_DECLARE_FIELD) } params;
 
 // Post-collision distributions of the previous step: the whole lattice copy,
 // read as vec4 (four cells of one direction).
-layout(set = 0, binding = 0) uniform samplerBuffer lattice;
-layout(set = 0, binding = 1) uniform samplerBuffer omegaPerCell;  // 1/tau per cell
-layout(set = 0, binding = 2) uniform samplerBuffer sourceBase;    // A per cell
+layout(set = 0, binding = LATTICE_BINDING_IN) uniform samplerBuffer lattice;
+layout(set = 0, binding = LATTICE_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;  // 1/tau per cell
+layout(set = 0, binding = LATTICE_BINDING_SOURCE) uniform samplerBuffer sourceBase;   // A per cell
 
 int ownBlock, cellY, cellZ;  // this invocation's block and row
 bool firstInRow;             // cell x0 is at the x = 0 wall

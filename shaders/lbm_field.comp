@@ -4,7 +4,7 @@
 // the collision, written to the field buffer.
 #include "lattice.glsl"
 
-layout(set = 0, binding = 4, std430) writeonly buffer Field { vec4 cells[]; } fieldOut;
+layout(set = 0, binding = LATTICE_BINDING_FIELD, std430) writeonly buffer Field { vec4 cells[]; } fieldOut;
 
 void main()
 {

@@ -12,11 +12,9 @@ namespace {
 void paperRuleValues(const std::vector<float>& before, const std::vector<float>& after,
                      const std::vector<float>& gammaUsed, double gamma0, std::vector<float>& gamma)
 {
+  const float g0 = float(gamma0), lo = float(lowest), hi = float(highest);
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < gamma.size(); ++i) {
-    const double kappa = (double(after[i]) - before[i]) / gammaUsed[i];
-    gamma[i] = float(std::clamp(gamma0 + kappa, lowest, highest));
-  }
+  for (size_t i = 0; i < gamma.size(); ++i) gamma[i] = std::clamp(g0 + (after[i] - before[i]) / gammaUsed[i], lo, hi);
 }
 
 void featurePreservingValues(const std::vector<float>& kappa, double gamma0, double kappaEdge, std::vector<float>& gamma)

@@ -1,24 +1,24 @@
 // Per-cell diffusion coefficients for the anisotropic smoothing of section 5.1.
 #pragma once
 
+#include "adaptive_gamma_bounds.h"
 #include "band/band_field.hpp"
 #include "core/volume.hpp"
 
 namespace lbmshape::adaptive_gamma {
 
-// The range every per-cell gamma is clamped to, in voxels^2 per step. Below,
-// tau = 3 gamma + 1/2 would approach the BGK stability limit 1/2 (0.01 keeps
-// omega <= 1.89); above, one step would have to carry the field farther than
-// the lattice's one-cell links can (a diffusion length sqrt(2 gamma) of 1.4
-// voxels at 1.0).
-inline constexpr double lowest = 0.01;
-inline constexpr double highest = 1.0;
+// The range every per-cell gamma is clamped to, in voxels^2 per step
+// (shaders/adaptive_gamma_bounds.h says why).
+inline constexpr double lowest = ADAPTIVE_GAMMA_LOWEST;
+inline constexpr double highest = ADAPTIVE_GAMMA_HIGHEST;
 
 // The paper's rule, Eqs. 18-20: with |grad X| = 1 the step's change of X is
 // gamma times the mean curvature, so kappa = (X(n+1) - X(n)) / gamma(n), and
 // the next step uses gamma(n+1) = gamma0 + kappa, clamped to [lowest, highest].
 // kappa is negative where the surface is convex (X is positive inside), so
-// convex ridges diffuse less and concave creases more.
+// convex ridges diffuse less and concave creases more. Single precision, in
+// the order of the step shaders, which apply the rule on the device
+// (LatticeSolver::setPaperRule); the reference solvers call this.
 Volume paperRule(const Volume& before, const Volume& after, const Volume& gammaUsed, double gamma0);
 
 // lbmshape's feature-preserving rule, in the spirit of Perona-Malik: gamma

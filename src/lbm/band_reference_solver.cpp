@@ -1,8 +1,10 @@
 #include "lbm/band_reference_solver.hpp"
 
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/relaxation.hpp"
+#include "lbm/solver_state.hpp"
 
 namespace lbmshape {
 
@@ -19,12 +21,30 @@ void BandReferenceSolver::setUniformGamma(double gamma)
   relaxation::checkGamma(gamma);
   uniformOmega_ = float(relaxation::omegaFromGamma(gamma));
   omegaPerCell_.clear();
+  paperRuleGamma0_.reset();
 }
 
 void BandReferenceSolver::setGammaPerCell(const BandField& gamma)
 {
   band_state::checkSameBricks(*bricks_, gamma, "gamma");
   omegaPerCell_ = band_state::omegaFromGamma(gamma);
+  paperRuleGamma0_.reset();
+}
+
+void BandReferenceSolver::setPaperRule(double gamma0)
+{
+  setUniformGamma(gamma0);
+  paperRuleGamma0_ = gamma0;
+}
+
+void BandReferenceSolver::applyPaperRule()
+{
+  BandField x = field();
+  gammaBefore_ = adaptive_gamma::paperRule(xBefore_, x, gammaBefore_, *paperRuleGamma0_);
+  omegaPerCell_.resize(x.values().size());
+  for (size_t i = 0; i < omegaPerCell_.size(); ++i)
+    omegaPerCell_[i] = relaxation::singlePrecisionOmega(gammaBefore_.values()[i]);
+  xBefore_ = std::move(x);
 }
 
 void BandReferenceSolver::setSource(std::optional<BandSource> source)
@@ -36,6 +56,12 @@ void BandReferenceSolver::setSource(std::optional<BandSource> source)
 void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*bricks_, field, "field");
+  solver_state::checkPaperRuleWithoutSource(paperRuleGamma0_.has_value(), source_.has_value());
+  if (paperRuleGamma0_) {
+    xBefore_ = field;
+    gammaBefore_ = BandField(field.sharedBricks(), float(*paperRuleGamma0_));
+    std::fill(gammaBefore_.values().begin(), gammaBefore_.values().end(), float(*paperRuleGamma0_));
+  }
   current_ = band_state::collidedEquilibrium(field, source_);
   next_ = current_;  // bricks a step skips keep their moments in both copies
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
@@ -51,6 +77,7 @@ void BandReferenceSolver::step(int count)
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && steps_ == 0) --count, ++steps_;
   for (int s = 0; s < count; ++s) {
+    if (paperRuleGamma0_) applyPaperRule();
     sweep<true>(nullptr);
     current_.swap(next_);
     ++steps_;

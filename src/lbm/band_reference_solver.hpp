@@ -18,6 +18,7 @@ public:
   const BrickSet& bricks() const override { return *bricks_; }
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const BandField& gamma) override;
+  void setPaperRule(double gamma0) override;
   void setSource(std::optional<BandSource> source) override;
   using BandSolver::initialize;
   void initialize(const BandField& field, std::vector<uint8_t> streams) override;
@@ -28,6 +29,9 @@ public:
 private:
   template <bool Collide>
   void sweep(std::vector<float>* fieldOut);
+  // The paper's rule before a step's collision: gamma and omega per cell
+  // from the X the step pulls (setPaperRule).
+  void applyPaperRule();
 
   std::shared_ptr<const BrickSet> bricks_;
   std::vector<int32_t> neighbours_;     // 27 a slot (BrickSet::neighbourTable)
@@ -37,6 +41,8 @@ private:
   BandField initial_;                   // X at initialisation, with its far sides
   float uniformOmega_ = 1.0f;
   std::vector<float> omegaPerCell_;     // empty: uniform
+  std::optional<double> paperRuleGamma0_;
+  BandField xBefore_, gammaBefore_;     // the paper's rule: what each cell's last step pulled and used
   std::optional<BandSource> source_;
   int steps_ = 0;
 };

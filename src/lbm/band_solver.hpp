@@ -45,6 +45,8 @@ public:
 
   virtual void setUniformGamma(double gamma) = 0;
   virtual void setGammaPerCell(const BandField& gamma) = 0;
+  // The paper's anisotropic rule, as LatticeSolver::setPaperRule describes.
+  virtual void setPaperRule(double gamma0) = 0;
   virtual void setSource(std::optional<BandSource> source) = 0;
 
   // Restart from field X, every cell at equilibrium (after setSource); the

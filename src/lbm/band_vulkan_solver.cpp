@@ -12,6 +12,7 @@
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/relaxation.hpp"
+#include "lbm/solver_state.hpp"
 
 namespace lbmshape {
 
@@ -27,6 +28,11 @@ constexpr int stepsPerSubmit = 256;
 constexpr uint64_t momentBytesPerSlot = 4 * brickCells * 4, fieldBytesPerSlot = brickCells * 4;
 
 constexpr auto texels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
+// The omega buffer: read as a uniform texel buffer, or under the paper's
+// rule read and written as a storage texel buffer (one view spans the whole
+// band, and it leaves the storage-buffer bindings, 32 a stage on lavapipe,
+// to the pools).
+constexpr auto perCell = texels | vk::BufferUsageFlagBits::eStorageTexelBuffer;
 constexpr auto storage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                          vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
 
@@ -37,7 +43,7 @@ std::vector<vk::DescriptorSetLayoutBinding> bindings()
           {BAND_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}}, {BAND_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
           {BAND_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},     {BAND_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
           {BAND_BINDING_NEXT, T::eStorageBuffer, BAND_MAX_POOLS, {}}, {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_POOLS, {}},
-          {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}}};
+          {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}}, {BAND_BINDING_GAMMA, T::eStorageTexelBuffer, 1, {}}};
 }
 
 }  // namespace
@@ -67,11 +73,12 @@ struct BandVulkanSolver::Resources {
         neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device),
-        omega(c, 16, texels, MemoryUse::Device), source(c, 16, texels, MemoryUse::Device),
+        omega(c, 16, perCell, MemoryUse::Device), source(c, 16, texels, MemoryUse::Device),
         staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
                 vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
-    std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
+    std::array<vk::DescriptorPoolSize, 3> sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
+                                                   vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
                                                    vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
     descriptorPool = vk::raii::DescriptorPool(
         c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
@@ -89,7 +96,10 @@ struct BandVulkanSolver::Resources {
   GpuBuffer field, streams, neighbours, origins;
   GpuBuffer work;   // the slots a step updates, then every slot (for the field)
   int stepWorks = 0;
-  GpuBuffer omega, source;  // 16 bytes until set: a valid view for the shader variants that ignore them
+  // 16 bytes until set: a valid view for the shader variants that ignore
+  // them. omega holds omega per cell, or under the paper's rule gamma per
+  // cell, which the steps update.
+  GpuBuffer omega, source;
   GpuBuffer staging;
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
@@ -99,6 +109,7 @@ struct BandVulkanSolver::Resources {
   int steps = 0;
   float uniformOmega = 1.0f;
   std::vector<float> omegaPerCell;     // host copy: initialize() needs it
+  std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
   std::optional<BandSource> sourceHost;
   BandField initial;                   // X at initialisation (its values until the first step), with its far sides
 
@@ -148,6 +159,7 @@ struct BandVulkanSolver::Resources {
       writes.emplace_back(set, BAND_BINDING_WORK, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &workView);
       writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, nextRanges[size_t(k)].data());
       writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, fieldRanges.data());
+      writes.emplace_back(set, BAND_BINDING_GAMMA, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &omegaView);
     }
     context.device().updateDescriptorSets(writes, {});
   }
@@ -194,12 +206,21 @@ struct BandVulkanSolver::Resources {
     }
   }
 
+  // The omega buffer at its full size, one float a stored cell.
+  void perCellBuffer()
+  {
+    if (omega.bytes() == 4 * cells) return;
+    omega = GpuBuffer(context, 4 * cells, perCell, MemoryUse::Device);
+    writeDescriptors();
+  }
+
   gpu::ProgramSpec program(bool collide) const
   {
     using gpu::specBool, gpu::specFloat;
     return {"band_step", bindings(),
             {specBool(!omegaPerCell.empty()), specBool(sourceHost.has_value()), specBool(collide),
-             specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
+             specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight),
+             specBool(paperRuleGamma0.has_value())},
             sizeof(band_shader::StepParameters)};
   }
 
@@ -215,6 +236,7 @@ struct BandVulkanSolver::Resources {
     p.slotsPerFieldPool = int(pools.slotsPerFieldPool);
     p.omega = uniformOmega;
     p.decay = sourceHost ? sourceHost->decay : 0.0f;
+    p.gamma0 = float(paperRuleGamma0.value_or(0.0));
     return p;
   }
 
@@ -285,16 +307,22 @@ void BandVulkanSolver::setUniformGamma(double gamma)
   relaxation::checkGamma(gamma);
   r_->uniformOmega = float(relaxation::omegaFromGamma(gamma));
   r_->omegaPerCell.clear();
+  r_->paperRuleGamma0.reset();
+}
+
+void BandVulkanSolver::setPaperRule(double gamma0)
+{
+  setUniformGamma(gamma0);
+  r_->paperRuleGamma0 = gamma0;
+  r_->perCellBuffer();
 }
 
 void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
 {
   band_state::checkSameBricks(*r_->bricks, gamma, "gamma");
   r_->omegaPerCell = band_state::omegaFromGamma(gamma);
-  if (r_->omega.bytes() != 4 * r_->cells) {
-    r_->omega = GpuBuffer(r_->context, 4 * r_->cells, texels, MemoryUse::Device);
-    r_->writeDescriptors();
-  }
+  r_->paperRuleGamma0.reset();
+  r_->perCellBuffer();
   r_->upload(r_->omegaPerCell.data(), 4 * r_->cells, r_->omega);
 }
 
@@ -314,6 +342,11 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
 void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*r_->bricks, field, "field");
+  solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
+  if (r_->paperRuleGamma0) {
+    const std::vector<float> gamma(r_->cells, float(*r_->paperRuleGamma0));
+    r_->upload(gamma.data(), 4 * r_->cells, r_->omega);
+  }
   // rho* and j* = 0 per brick, laid out [moment][cell], built a chunk at a
   // time in the staging buffer; the second copy is the first's, on the
   // device (bricks a step skips keep their moments in both).

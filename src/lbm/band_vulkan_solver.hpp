@@ -31,6 +31,7 @@ public:
   const BrickSet& bricks() const override;
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const BandField& gamma) override;
+  void setPaperRule(double gamma0) override;
   void setSource(std::optional<BandSource> source) override;
   using BandSolver::initialize;
   void initialize(const BandField& field, std::vector<uint8_t> streams) override;

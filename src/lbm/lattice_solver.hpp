@@ -35,6 +35,14 @@ public:
   // one per cell (the anisotropic gamma of section 5.1). Both are checked.
   virtual void setUniformGamma(double gamma) = 0;
   virtual void setGammaPerCell(const Volume& gamma) = 0;
+  // The paper's anisotropic rule (section 5.1, Eq. 20), applied by the
+  // solver at every step, on the device for a device's solver: each cell
+  // collides with gamma = gamma0 + (X - X before) / gamma before, clamped to
+  // [adaptive_gamma::lowest, highest], X being what the step pulls and X
+  // before and gamma before what the cell's last step pulled and used (at
+  // the first step, gamma0). Call before initialize(); a
+  // source cannot be set with it. Undone by the two setters above.
+  virtual void setPaperRule(double gamma0) = 0;
 
   // Source term; std::nullopt removes it.
   virtual void setSource(std::optional<LinearSource> source) = 0;

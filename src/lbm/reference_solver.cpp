@@ -3,6 +3,7 @@
 #include <array>
 #include <vector>
 
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/solver_state.hpp"
@@ -21,12 +22,29 @@ void ReferenceSolver::setUniformGamma(double gamma)
   relaxation::checkGamma(gamma);
   uniformOmega_ = float(relaxation::omegaFromGamma(gamma));
   omegaPerCell_ = Volume();
+  paperRuleGamma0_.reset();
 }
 
 void ReferenceSolver::setGammaPerCell(const Volume& gamma)
 {
   solver_state::checkSameExtent(extent_, gamma.extent(), "gamma");
   omegaPerCell_ = solver_state::omegaFromGammaVolume(gamma);
+  paperRuleGamma0_.reset();
+}
+
+void ReferenceSolver::setPaperRule(double gamma0)
+{
+  setUniformGamma(gamma0);
+  paperRuleGamma0_ = gamma0;
+}
+
+void ReferenceSolver::applyPaperRule()
+{
+  Volume x = field();
+  gammaBefore_ = adaptive_gamma::paperRule(xBefore_, x, gammaBefore_, *paperRuleGamma0_);
+  omegaPerCell_ = Volume(extent_);
+  for (size_t i = 0; i < omegaPerCell_.size(); ++i) omegaPerCell_[i] = relaxation::singlePrecisionOmega(gammaBefore_[i]);
+  xBefore_ = std::move(x);
 }
 
 void ReferenceSolver::setSource(std::optional<LinearSource> source)
@@ -38,6 +56,7 @@ void ReferenceSolver::setSource(std::optional<LinearSource> source)
 void ReferenceSolver::initialize(const Volume& field)
 {
   solver_state::checkSameExtent(extent_, field.extent(), "field");
+  solver_state::checkPaperRuleWithoutSource(paperRuleGamma0_.has_value(), source_.has_value());
   Volume density = solver_state::initialDensity(field, source_);
   // Store f* so that the next pull delivers f_i(r) = w_i density(r): the value
   // streamed along e_j out of q belongs to q + e_j, or to q itself when q + e_j
@@ -54,11 +73,17 @@ void ReferenceSolver::initialize(const Volume& field)
           distribution(current_, j)[e.index(x, y, z)] = d3q19::weight(j) * target;
         }
   steps_ = 0;
+  if (paperRuleGamma0_) {
+    // The first step's X before is what it pulls: gamma0 is its gamma.
+    xBefore_ = this->field();
+    gammaBefore_ = Volume(extent_, float(*paperRuleGamma0_));
+  }
 }
 
 void ReferenceSolver::step(int count)
 {
   for (int s = 0; s < count; ++s) {
+    if (paperRuleGamma0_) applyPaperRule();
     sweep<true>(nullptr);
     current_.swap(next_);
     ++steps_;

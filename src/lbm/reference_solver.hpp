@@ -17,6 +17,7 @@ public:
   Extent3 extent() const override { return extent_; }
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const Volume& gamma) override;
+  void setPaperRule(double gamma0) override;
   void setSource(std::optional<LinearSource> source) override;
   void initialize(const Volume& field) override;
   void step(int count) override;
@@ -26,6 +27,9 @@ public:
 private:
   template <bool Collide>
   void sweep(Volume* fieldOut);
+  // The paper's rule before a step's collision: gamma and omega per cell
+  // from the X the step pulls (setPaperRule).
+  void applyPaperRule();
 
   float* distribution(std::vector<float>& lattice, int i) { return lattice.data() + size_t(i) * extent_.cells(); }
 
@@ -33,6 +37,8 @@ private:
   std::vector<float> current_, next_;  // post-collision f*, structure of arrays
   float uniformOmega_ = 1.0f;
   Volume omegaPerCell_;  // empty when uniform
+  std::optional<double> paperRuleGamma0_;
+  Volume xBefore_, gammaBefore_;  // the paper's rule: what each cell's last step pulled and used
   std::optional<LinearSource> source_;
   int steps_ = 0;
 };

@@ -14,6 +14,10 @@ namespace lbmshape::relaxation {
 double tauFromGamma(double gamma);
 double gammaFromTau(double tau);
 inline double omegaFromGamma(double gamma) { return 1.0 / tauFromGamma(gamma); }
+// omega of a per-cell gamma, in single precision as the step shaders compute
+// it under the paper's rule: a per-cell gamma gives the same omega whether
+// the host or the device converts it.
+inline float singlePrecisionOmega(float gamma) { return 1.0f / (3.0f * gamma + 0.5f); }
 
 // Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's
 // linear stability range 1/2 < tau (omega < 2), and small enough for the

@@ -13,9 +13,14 @@ Volume omegaFromGammaVolume(const Volume& gamma)
   Volume omega(gamma.extent());
   for (size_t i = 0; i < gamma.size(); ++i) {
     relaxation::checkGamma(gamma[i], "per-cell gamma");
-    omega[i] = float(relaxation::omegaFromGamma(gamma[i]));
+    omega[i] = relaxation::singlePrecisionOmega(gamma[i]);
   }
   return omega;
+}
+
+void checkPaperRuleWithoutSource(bool paperRule, bool source)
+{
+  if (paperRule && source) throw std::invalid_argument("the paper's anisotropic rule runs without a source");
 }
 
 Volume initialDensity(const Volume& field, const std::optional<LinearSource>& source)

@@ -16,6 +16,10 @@ Volume omegaFromGammaVolume(const Volume& gamma);
 // X - S/2 with S = A - c X (just X without a source).
 Volume initialDensity(const Volume& field, const std::optional<LinearSource>& source);
 
+// Throws std::invalid_argument when the paper's rule is asked for with a
+// source: its X before would have to leave the source's share out.
+void checkPaperRuleWithoutSource(bool paperRule, bool source);
+
 void checkSameExtent(const Extent3& expected, const Extent3& got, const char* what);
 
 }  // namespace lbmshape::solver_state

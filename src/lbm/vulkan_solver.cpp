@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "lattice_interface.h"
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
 #include "lbm/d3q19.hpp"
@@ -29,14 +30,10 @@ constexpr uint32_t initWorkgroupSize = 64;
 // 128 and 256 are the same within noise).
 constexpr uint32_t latticeWorkgroupSize = 128;
 
-// Binding numbers, as in shaders/lattice.glsl and shaders/lbm_*.comp.
-enum LatticeBinding : uint32_t { LatticeIn = 0, OmegaPerCell = 1, SourceBase = 2, NextGroups = 3, FieldOut = 4 };
+// Binding numbers of lbm_init.comp.
 enum InitBinding : uint32_t { InitDensity = 0, InitOut = 1 };
 
-struct PushConstants {
-  float omega;
-  float decay;
-};
+using lattice_shader::StepParameters;
 
 uint32_t groups(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
 
@@ -44,9 +41,9 @@ std::vector<vk::DescriptorSetLayoutBinding> latticeBindings()
 {
   using T = vk::DescriptorType;
   return {
-      {LatticeIn, T::eUniformTexelBuffer, 1, {}},    {OmegaPerCell, T::eUniformTexelBuffer, 1, {}},
-      {SourceBase, T::eUniformTexelBuffer, 1, {}},   {NextGroups, T::eStorageBuffer, groupCount, {}},
-      {FieldOut, T::eStorageBuffer, 1, {}},
+      {LATTICE_BINDING_IN, T::eUniformTexelBuffer, 1, {}},     {LATTICE_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},
+      {LATTICE_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}}, {LATTICE_BINDING_NEXT, T::eStorageBuffer, groupCount, {}},
+      {LATTICE_BINDING_FIELD, T::eStorageBuffer, 1, {}},       {LATTICE_BINDING_GAMMA, T::eStorageBuffer, 1, {}},
   };
 }
 
@@ -96,7 +93,9 @@ struct VulkanSolver::Resources {
   // writes the other.
   std::vector<GpuBuffer> lattice;
   std::vector<vk::raii::BufferView> latticeViews;
-  GpuBuffer field, staging, omega, sourceBuffer;
+  GpuBuffer field, staging;
+  GpuBuffer omega;  // omega per cell, or under the paper's rule gamma per cell, which the steps update
+  GpuBuffer sourceBuffer;
   vk::raii::BufferView omegaView{nullptr}, sourceView{nullptr};
   vk::raii::DescriptorPool pool{nullptr};
   std::vector<vk::raii::DescriptorSet> latticeSets;  // [k]: reads copy k, writes the other
@@ -106,14 +105,16 @@ struct VulkanSolver::Resources {
   int steps = 0;
   float uniformOmega = 1.0f;
   bool perCellOmega = false;
-  std::optional<LinearSource> source;  // host copy: initialize() needs A
+  std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
+  std::optional<LinearSource> source;    // host copy: initialize() needs A
 
   gpu::ProgramSpec latticeProgram(const char* shader) const
   {
     auto constants = gridConstants(layout, latticeWorkgroupSize);
     constants.push_back(gpu::specBool(perCellOmega));
     constants.push_back(gpu::specBool(source.has_value()));
-    return {shader, latticeBindings(), constants, sizeof(PushConstants)};
+    constants.push_back(gpu::specBool(paperRuleGamma0.has_value()));
+    return {shader, latticeBindings(), constants, sizeof(StepParameters)};
   }
   gpu::ProgramSpec initProgram() const { return {"lbm_init", initBindings(), gridConstants(layout, initWorkgroupSize), 0}; }
 
@@ -122,6 +123,11 @@ struct VulkanSolver::Resources {
   {
     const Extent3& e = layout.extent;
     cmd.dispatch(groups(uint64_t(layout.row / 4) * uint64_t(e.ny), latticeWorkgroupSize), 1, uint32_t(e.nz));
+  }
+
+  StepParameters parameters() const
+  {
+    return {uniformOmega, source ? source->decay : 0.0f, float(paperRuleGamma0.value_or(0.0))};
   }
 
   void upload(const Volume& values, GpuBuffer& target);
@@ -144,7 +150,9 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
                          MemoryUse::Device)),
       staging(volumeBuffer(c, l, vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst,
                            MemoryUse::Readback)),
-      omega(volumeBuffer(c, l, vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst,
+      omega(volumeBuffer(c, l,
+                         vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eStorageBuffer |
+                             vk::BufferUsageFlagBits::eTransferDst,
                          MemoryUse::Device)),
       sourceBuffer(volumeBuffer(c, l,
                                 vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst,
@@ -165,7 +173,7 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
 
   std::array<vk::DescriptorPoolSize, 2> sizes = {
       vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 3),
-      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (groupCount + 1) + (groupCount + 1))};
+      vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * (groupCount + 2) + (groupCount + 1))};
   pool = vk::raii::DescriptorPool(
       device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 3, sizes));
   auto allocate = [&](const vk::raii::DescriptorSetLayout& setLayout, uint32_t count) {
@@ -192,15 +200,16 @@ void VulkanSolver::Resources::writeDescriptors()
     for (int g = 0; g < groupCount; ++g)
       groupRanges[k][g] = vk::DescriptorBufferInfo(lattice[k].handle(), layout.groupOffsetBytes(g), layout.groupBytes(g));
   vk::BufferView omegaHandle = *omegaView, sourceHandle = *sourceView;
-  vk::DescriptorBufferInfo fieldInfo(field.handle(), 0, VK_WHOLE_SIZE);
+  vk::DescriptorBufferInfo fieldInfo(field.handle(), 0, VK_WHOLE_SIZE), gammaInfo(omega.handle(), 0, VK_WHOLE_SIZE);
   using T = vk::DescriptorType;
   for (int k = 0; k < 2; ++k) {
     vk::DescriptorSet set = *latticeSets[k];
-    writes.emplace_back(set, LatticeIn, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
-    writes.emplace_back(set, OmegaPerCell, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaHandle);
-    writes.emplace_back(set, SourceBase, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceHandle);
-    writes.emplace_back(set, NextGroups, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[1 - k].data());
-    writes.emplace_back(set, FieldOut, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
+    writes.emplace_back(set, LATTICE_BINDING_IN, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
+    writes.emplace_back(set, LATTICE_BINDING_OMEGA, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaHandle);
+    writes.emplace_back(set, LATTICE_BINDING_SOURCE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceHandle);
+    writes.emplace_back(set, LATTICE_BINDING_NEXT, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[1 - k].data());
+    writes.emplace_back(set, LATTICE_BINDING_FIELD, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
+    writes.emplace_back(set, LATTICE_BINDING_GAMMA, 0, 1, T::eStorageBuffer, nullptr, &gammaInfo);
   }
   writes.emplace_back(*initSet, InitDensity, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
   writes.emplace_back(*initSet, InitOut, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[0].data());
@@ -239,6 +248,7 @@ void VulkanSolver::setUniformGamma(double gamma)
   relaxation::checkGamma(gamma);
   r_->uniformOmega = float(relaxation::omegaFromGamma(gamma));
   r_->perCellOmega = false;
+  r_->paperRuleGamma0.reset();
 }
 
 void VulkanSolver::setGammaPerCell(const Volume& gamma)
@@ -246,6 +256,13 @@ void VulkanSolver::setGammaPerCell(const Volume& gamma)
   solver_state::checkSameExtent(extent(), gamma.extent(), "gamma");
   r_->upload(solver_state::omegaFromGammaVolume(gamma), r_->omega);
   r_->perCellOmega = true;
+  r_->paperRuleGamma0.reset();
+}
+
+void VulkanSolver::setPaperRule(double gamma0)
+{
+  setUniformGamma(gamma0);
+  r_->paperRuleGamma0 = gamma0;
 }
 
 void VulkanSolver::setSource(std::optional<LinearSource> source)
@@ -260,7 +277,11 @@ void VulkanSolver::setSource(std::optional<LinearSource> source)
 void VulkanSolver::initialize(const Volume& fieldValues)
 {
   solver_state::checkSameExtent(extent(), fieldValues.extent(), "field");
+  solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->source.has_value());
+  // The field buffer holds X at the start: under the paper's rule, the
+  // first step's X before.
   r_->upload(solver_state::initialDensity(fieldValues, r_->source), r_->field);
+  if (r_->paperRuleGamma0) r_->upload(Volume(extent(), float(*r_->paperRuleGamma0)), r_->omega);
   auto& program = r_->context.program(r_->initProgram());
   const LatticeLayout& l = r_->layout;
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
@@ -270,6 +291,18 @@ void VulkanSolver::initialize(const Volume& fieldValues)
   });
   r_->current = 0;
   r_->steps = 0;
+  if (r_->paperRuleGamma0) {
+    // The first step's X before is what it pulls, so that gamma0 is its
+    // gamma: the field pass leaves that in the field buffer.
+    auto& fieldProgram = r_->context.program(r_->latticeProgram("lbm_field"));
+    const StepParameters push = r_->parameters();
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *fieldProgram.pipeline);
+      cmd.pushConstants<StepParameters>(*fieldProgram.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *fieldProgram.layout, 0, *r_->latticeSets[0], {});
+      r_->dispatchLattice(cmd);
+    });
+  }
   // The pipelines of the steps and of field() for this source and
   // relaxation are compiled now, in the job's set-up, and not during its
   // steps: lavapipe ends the process with SIGSEGV when an allocation fails
@@ -282,13 +315,13 @@ void VulkanSolver::initialize(const Volume& fieldValues)
 void VulkanSolver::step(int count)
 {
   auto& program = r_->context.program(r_->latticeProgram("lbm_step"));
-  const PushConstants push{r_->uniformOmega, r_->source ? r_->source->decay : 0.0f};
+  const StepParameters push = r_->parameters();
   const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
     int batch = std::min(count, stepsPerSubmit);
     r_->context.runAndWait([&](vk::CommandBuffer cmd) {
       cmd.bindPipeline(bind, *program.pipeline);
-      cmd.pushConstants<PushConstants>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+      cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       for (int s = 0; s < batch; ++s) {
         cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(r_->current + s) % 2], {});
         r_->dispatchLattice(cmd);
@@ -307,10 +340,23 @@ Volume VulkanSolver::field()
   auto& program = r_->context.program(r_->latticeProgram("lbm_field"));
   const LatticeLayout& l = r_->layout;
   const Extent3& e = l.extent;
-  PushConstants push{r_->uniformOmega, r_->source ? r_->source->decay : 0.0f};
+  // Under the paper's rule the field buffer holds the X the last step
+  // pulled, which the next step needs: it is kept aside and put back.
+  std::vector<std::byte> xBefore;
+  if (r_->paperRuleGamma0) {
+    xBefore.resize(l.volumeBytes);
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      barrier(cmd, shaderWrite, computeStage, vk::AccessFlagBits::eTransferRead, transferStage);
+      cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
+      barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
+              vk::PipelineStageFlagBits::eHost);
+    });
+    std::memcpy(xBefore.data(), r_->staging.mapped(), l.volumeBytes);
+  }
+  const StepParameters push = r_->parameters();
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.pushConstants<PushConstants>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->latticeSets[r_->current], {});
     r_->dispatchLattice(cmd);
     barrier(cmd, shaderWrite, computeStage, vk::AccessFlagBits::eTransferRead, transferStage);
@@ -323,6 +369,12 @@ Volume VulkanSolver::field()
   for (int z = 0; z < e.nz; ++z)
     for (int y = 0; y < e.ny; ++y)
       std::memcpy(out.data() + e.index(0, y, z), src + l.linearIndex(0, y, z), size_t(e.nx) * 4);
+  if (!xBefore.empty()) {
+    std::memcpy(r_->staging.mapped(), xBefore.data(), l.volumeBytes);
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.copyBuffer(r_->staging.handle(), r_->field.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
+    });
+  }
   return out;
 }
 

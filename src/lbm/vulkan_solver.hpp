@@ -21,6 +21,7 @@ public:
   Extent3 extent() const override;
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const Volume& gamma) override;
+  void setPaperRule(double gamma0) override;
   void setSource(std::optional<LinearSource> source) override;
   void initialize(const Volume& field) override;
   void step(int count) override;

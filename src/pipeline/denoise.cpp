@@ -75,17 +75,10 @@ void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, 
   InterruptibleSteps(solver).advanceTo(solver.stepsTaken() + count, stepsDone(solver), &progress);
 }
 
-// The two kinds of lattice differ in how they start and what a uniform
-// field of gamma is; the smoothing is written once for both.
+// The two kinds of lattice differ in how they start; the smoothing is
+// written once for both.
 void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
 void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
-Volume uniformLike(const Volume& field, double value) { return Volume(field.extent(), float(value)); }
-BandField uniformLike(const BandField& field, double value)
-{
-  BandField uniform(field.sharedBricks(), field.farValue());
-  std::fill(uniform.values().begin(), uniform.values().end(), float(value));
-  return uniform;
-}
 
 // Runs the smoothing steps on `solver`, starting from `field`; a band
 // solver streams the cells within `halfWidth` of the surface. `field` is
@@ -96,28 +89,15 @@ Field smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWi
 {
   switch (o.smoothing) {
   case Smoothing::Isotropic:
-    solver.setUniformGamma(o.gamma);
+  case Smoothing::Anisotropic:
+    // The paper's rule (Eq. 20) runs inside the solver, on the device:
+    // nothing leaves it between steps.
+    if (o.smoothing == Smoothing::Anisotropic) solver.setPaperRule(o.gamma);
+    else solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
     field = Field();
     stepShowingProgress(solver, o.steps, progress);
     return solver.field();
-  case Smoothing::Anisotropic: {
-    // Eq. 20 needs the change of X over each step, so the field comes back
-    // after every step and gamma goes out for the next.
-    solver.setUniformGamma(o.gamma);
-    start(solver, field, halfWidth);
-    Field gamma = uniformLike(field, o.gamma), before = std::move(field);
-    progress.beginPart("steps", o.steps);
-    InterruptibleSteps stepper(solver);
-    for (int s = 1; s <= o.steps; ++s) {
-      stepper.advanceTo(s, stepsDone(solver), &progress);
-      Field after = solver.field();
-      gamma = adaptive_gamma::paperRule(before, after, gamma, o.gamma);
-      solver.setGammaPerCell(gamma);
-      before = std::move(after);
-    }
-    return before;
-  }
   case Smoothing::PreserveFeatures: {
     const int probeSteps = featureProbeSteps(o.gamma);
     const double probeShare = double(probeSteps) / (probeSteps + o.steps);

@@ -10,12 +10,15 @@
 // and negative on a convex surface.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 #include "lbm/adaptive_gamma.hpp"
+#include "lbm/band_reference_solver.hpp"
 #include "lbm/reference_solver.hpp"
+#include "support/band_fields.hpp"
 #include "support/fields.hpp"
 
 namespace lbmshape {
@@ -104,6 +107,100 @@ TEST(PaperRule, GammaStaysInTheStableRangeOnANoisyField)
   EXPECT_EQ(*hi, float(adaptive_gamma::highest)) << "the noise should reach the upper bound";
   // And the solver accepts the result: tau = 3 gamma + 1/2 is above 1/2 in every cell.
   EXPECT_NO_THROW(solver.setGammaPerCell(gamma));
+}
+
+// A sphere of radius 8 with noise of +-0.3 voxel in every cell: its kappa
+// spans the clamp range, as a noisy scan's does.
+Volume noisySphere(Extent3 extent)
+{
+  Volume field = testing::sphereDistance(extent, 12.5, 11.0, 13.0, 8.0);
+  const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 5);
+  for (size_t i = 0; i < field.size(); ++i) field[i] += noise[i];
+  return field;
+}
+
+// The rule as a loop around the solver (how denoise --anisotropic ran it,
+// downloading X and uploading gamma at every step) and inside the solver
+// (LatticeSolver::setPaperRule, which the shaders run on the device): the
+// same arithmetic, so the same field. The rule divides by gamma, down to
+// 0.01, at every step, so any difference in rounding would grow a
+// hundredfold a step: a loose tolerance would prove little.
+template <class Solver, class Field>
+Field hostLoop(Solver& solver, const Field& start, const Field& uniformGamma, int steps, double halfWidth)
+{
+  solver.setGammaPerCell(uniformGamma);
+  if constexpr (std::is_same_v<Field, Volume>) solver.initialize(start);
+  else solver.initialize(start, halfWidth);
+  Field before = solver.field(), gamma = uniformGamma;
+  for (int s = 0; s < steps; ++s) {
+    solver.step(1);
+    Field after = solver.field();
+    gamma = adaptive_gamma::paperRule(before, after, gamma, gamma0);
+    solver.setGammaPerCell(gamma);
+    before = std::move(after);
+  }
+  return before;
+}
+
+template <class Solver, class Field>
+Field insideTheSolver(Solver& solver, const Field& start, int steps, double halfWidth)
+{
+  solver.setPaperRule(gamma0);
+  if constexpr (std::is_same_v<Field, Volume>) solver.initialize(start);
+  else solver.initialize(start, halfWidth);
+  solver.step(steps);
+  return solver.field();
+}
+
+double maxDifference(const std::vector<float>& a, const std::vector<float>& b)
+{
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, double(std::abs(a[i] - b[i])));
+  return worst;
+}
+
+TEST(PaperRule, TheGridSolverAppliesItAsTheHostLoopDid)
+{
+  const Extent3 extent{26, 23, 27};
+  const Volume start = noisySphere(extent);
+  ReferenceSolver loop(extent), inside(extent);
+  const Volume a = hostLoop(loop, start, Volume(extent, float(gamma0)), 7, 0.0);
+  const Volume b = insideTheSolver(inside, start, 7, 0.0);
+  EXPECT_LT(maxDifference(a.values(), b.values()), 1e-6);
+  // The rule made a difference: the isotropic steps end elsewhere.
+  ReferenceSolver isotropic(extent);
+  isotropic.setUniformGamma(gamma0);
+  isotropic.initialize(start);
+  isotropic.step(7);
+  EXPECT_GT(maxDifference(isotropic.field().values(), b.values()), 0.05);
+}
+
+TEST(PaperRule, TheBandSolverAppliesItAsTheHostLoopDid)
+{
+  const Extent3 extent{26, 23, 27};
+  const Volume field = noisySphere(extent);
+  auto bricks = testing::bricksNear(field, 7.0);
+  const BandField start = testing::bandOf(field, bricks);
+  BandField uniform(bricks, start.farValue());
+  std::fill(uniform.values().begin(), uniform.values().end(), float(gamma0));
+  BandReferenceSolver loop(bricks), inside(bricks);
+  const BandField a = hostLoop(loop, start, uniform, 7, 6.0);
+  const BandField b = insideTheSolver(inside, start, 7, 6.0);
+  EXPECT_LT(maxDifference(a.values(), b.values()), 1e-6);
+  BandReferenceSolver isotropic(bricks);
+  isotropic.setUniformGamma(gamma0);
+  isotropic.initialize(start, 6.0);
+  isotropic.step(7);
+  EXPECT_GT(maxDifference(isotropic.field().values(), b.values()), 0.05);
+}
+
+TEST(PaperRule, RefusesASource)
+{
+  const Extent3 extent{8, 8, 8};
+  ReferenceSolver solver(extent);
+  solver.setPaperRule(gamma0);
+  solver.setSource(LinearSource{Volume(extent, 0.1f), 0.1f});
+  EXPECT_THROW(solver.initialize(Volume(extent, 1.0f)), std::invalid_argument);
 }
 
 // X of an axis-aligned box, positive inside, exact: the distance to the

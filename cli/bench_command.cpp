@@ -18,6 +18,7 @@
 #include "lbm/relaxation.hpp"
 #include "lbm/vulkan_solver.hpp"
 #include "pipeline/denoise.hpp"
+#include "pipeline/smoothing_stop.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -116,7 +117,7 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
   }
   for (const auto& e : sizes) checkExtent(e);
   if (options.band) {
-    const double halfWidth = options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, DenoiseOptions{}.steps));
+    const double halfWidth = options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, smoothing_stop::mostSteps));
     if (!(halfWidth >= 1.0 && halfWidth <= 64.0)) throw UsageError("--half-width must be between 1 and 64 voxels");
     runBandBench(common, sizes.front(), options.settings, halfWidth);
     return;

@@ -12,6 +12,8 @@ struct DenoiseArguments {
   DenoiseOptions options;
   double voxel = 0.0;
   const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
+  int steps = 0;
+  const CLI::Option* stepsOption = nullptr;  // not given: as many steps as the noise needs
   bool anisotropic = false, preserveFeatures = false;
   std::string preview;
   std::string colour = "none";
@@ -22,6 +24,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   // Whether --voxel was given, not its value, decides: a sentinel value
   // would let --voxel 0 (or nan) fall back to --res instead of failing.
   if (a.voxelOption->count() > 0) a.options.grid.voxel = a.voxel;
+  if (a.stepsOption->count() > 0) a.options.steps = a.steps;
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   if (!a.preview.empty()) a.options.preview = a.preview;
@@ -48,7 +51,9 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
   a->voxelOption = cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
-  cmd->add_option("--steps", a->options.steps, "Lattice Boltzmann steps")->capture_default_str();
+  a->stepsOption = cmd->add_option(
+      "--steps", a->steps,
+      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7; the paper's runs: 7)");
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
   auto* aniso = cmd->add_flag("--anisotropic", a->anisotropic, "Per-cell gamma = gamma + kappa, the paper's Eq. 20");
   cmd->add_flag("--preserve-features", a->preserveFeatures, "Per-cell gamma falling at sharp edges")->excludes(aniso);
@@ -56,6 +61,9 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
                   "Add the paper's uniform noise to the distance field first, as a fraction of its largest value (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
+  cmd->add_flag_function("--shrink", [a](int64_t) { a->options.keepVolume = false; },
+                         "Leave the result shrunk, as mean-curvature flow and the paper's scheme do, instead of "
+                         "shifting it to enclose the input's volume");
   cmd->add_flag("--dense", a->options.dense,
                 "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
   cmd->add_option("--color", a->colour,

@@ -7,6 +7,8 @@
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "mesh_commands.hpp"
+#include "pipeline/denoise.hpp"
+#include "sdf/grid_frame.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -14,6 +16,7 @@ namespace {
 struct NoiseArguments {
   std::string input, output;
   double sigma = 0.5;
+  std::optional<int> resolution;  // set: sigma is in voxels of denoise's grid at this --res
   uint32_t seed = 1;
   bool force = false;
 };
@@ -23,16 +26,32 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
   // inf would pass a sign check and only fail at the writer, as an output error.
   if (!(args.sigma >= 0.0) || !std::isfinite(args.sigma))
     throw UsageError("--sigma must be a finite number, zero or positive");
+  if (args.resolution) {
+    GridOptions grid;
+    grid.resolution = *args.resolution;
+    checkGridAndNoise(grid, FieldNoise{});
+  }
   checkNotTheInput(args.output, args.input, args.force);
   checkMeshDestination(args.output);
   const TriangleMesh mesh = readMesh(args.input);
   const double edge = meanEdgeLength(mesh);
-  writeMesh(addNormalNoise(mesh, args.sigma, args.seed), args.output);
-  common.report({{"command", "noise"}, {"input", args.input}, {"output", args.output}, {"sigma", args.sigma},
-                 {"sigma_absolute", args.sigma * edge}, {"mean_edge_length", edge}, {"seed", args.seed}});
+  // The unit of --sigma: a mean edge length, or with --res a voxel of the
+  // grid `denoise --res` would put around this mesh.
+  const double unit =
+      args.resolution ? frameWithResolution(bounds(mesh), *args.resolution, GridOptions{}.marginVoxels).voxel : edge;
+  const char* unitName = args.resolution ? "voxels" : "mean edge lengths";
+  writeMesh(addNormalNoise(mesh, args.sigma * unit / edge, args.seed), args.output);
+  common.report({{"command", "noise"},
+                 {"input", args.input},
+                 {"output", args.output},
+                 {"sigma", args.sigma},
+                 {"sigma_unit", args.resolution ? "voxel" : "mean_edge_length"},
+                 {"sigma_absolute", args.sigma * unit},
+                 {"mean_edge_length", edge},
+                 {"seed", args.seed}});
   if (!common.json)
-    log::info("wrote " + args.output + " (noise sigma " + std::to_string(args.sigma * edge) + " = " +
-              std::to_string(args.sigma) + " mean edge lengths)");
+    log::info("wrote " + args.output + " (noise sigma " + std::to_string(args.sigma * unit) + " = " +
+              std::to_string(args.sigma) + " " + unitName + ")");
 }
 
 }  // namespace
@@ -43,7 +62,10 @@ void addNoiseCommand(CLI::App& app, const CommonOptions& common)
   auto* cmd = app.add_subcommand("noise", "Write a copy of a mesh with Gaussian vertex noise along the normals");
   cmd->add_option("input", args->input, "Mesh")->required();
   cmd->add_option("output", args->output, "Noisy copy, format by extension")->required();
-  cmd->add_option("--sigma", args->sigma, "Standard deviation, in mean edge lengths")->capture_default_str();
+  cmd->add_option("--sigma", args->sigma, "Standard deviation, in mean edge lengths (with --res: in voxels)")
+      ->capture_default_str();
+  cmd->add_option("--res", args->resolution,
+                  "Give --sigma in voxels of the grid that denoise --res N (default margin) puts around the mesh");
   cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
   cmd->add_flag("--force", args->force, "Write the copy even where the output is the input mesh");
   cmd->callback([&common, args] { runNoise(common, *args); });

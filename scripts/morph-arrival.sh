@@ -8,7 +8,7 @@
 #
 #   scripts/morph-arrival.sh [--res N] SOURCE TARGET [TARGET ...]
 #   e.g. scripts/morph-arrival.sh sphere ../shared/assets/armadillo.obj
-# SOURCE "sphere" is a unit UV sphere (48 x 96 quads) made here.
+# SOURCE "sphere" is a unit UV sphere (48 x 96 quads, scripts/make-sphere.py).
 set -euo pipefail
 res=128
 if [[ ${1:-} == --res ]]; then
@@ -23,27 +23,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 if [[ $source == sphere ]]; then
   source=$work/sphere.obj
-  python3 - "$source" <<'EOF'
-import math, sys
-rings, sides = 48, 96
-with open(sys.argv[1], "w") as out:
-    out.write("v 0 0 1\n")
-    for i in range(1, rings):
-        t = math.pi * i / rings
-        for j in range(sides):
-            p = 2 * math.pi * j / sides
-            out.write(f"v {math.sin(t) * math.cos(p)} {math.sin(t) * math.sin(p)} {math.cos(t)}\n")
-    out.write("v 0 0 -1\n")
-    bottom = 2 + (rings - 1) * sides
-    ring = lambda i, j: 2 + i * sides + j % sides
-    for j in range(sides):
-        out.write(f"f 1 {ring(0, j)} {ring(0, j + 1)}\n")
-        out.write(f"f {ring(rings - 2, j)} {bottom} {ring(rings - 2, j + 1)}\n")
-    for i in range(rings - 2):
-        for j in range(sides):
-            out.write(f"f {ring(i, j)} {ring(i + 1, j)} {ring(i + 1, j + 1)}\n")
-            out.write(f"f {ring(i, j)} {ring(i + 1, j + 1)} {ring(i, j + 1)}\n")
-EOF
+  python3 "$(dirname "$0")/make-sphere.py" "$source"
 fi
 
 # Prints one row: label, steps, mean, Hausdorff, converged, seconds, MB.

@@ -84,6 +84,27 @@ void BandReferenceSolver::step(int count)
   }
 }
 
+BandField BandReferenceSolver::previousField()
+{
+  requireTwoSteps();
+  current_.swap(next_);
+  BandField out = field();
+  current_.swap(next_);
+  return out;
+}
+
+BandField BandReferenceSolver::storedField(int back)
+{
+  band_state::checkStoredField(back, steps_, source_.has_value());
+  // After a step, current_ holds what it collided and next_ what the step
+  // before collided; the first, free step leaves both at the initial state.
+  const std::vector<glm::vec4>& copy = back == 1 ? current_ : next_;
+  BandField out(initial_.sharedBricks(), initial_.farValue());
+  out.farSides() = initial_.farSides();
+  for (size_t i = 0; i < copy.size(); ++i) out.values()[i] = copy[i].x;
+  return out;
+}
+
 BandField BandReferenceSolver::field()
 {
   // Beyond the band nothing moves: the far sides are the initial field's.

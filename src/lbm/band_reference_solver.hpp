@@ -25,6 +25,8 @@ public:
   void step(int count) override;
   int stepsTaken() const override { return steps_; }
   BandField field() override;
+  BandField previousField() override;
+  BandField storedField(int back) override;
 
 private:
   template <bool Collide>

@@ -62,6 +62,14 @@ public:
   // The field X after the steps taken so far, on the same bricks; beyond
   // them (far value and sides) as the field initialize() was given.
   virtual BandField field() = 0;
+  // X one step before that, as LatticeSolver::previousField.
+  virtual BandField previousField() = 0;
+  // X one or two steps before the last (`back`), read from what the two
+  // copies of the moments keep: a collision stores rho* = X + S/2, so
+  // without a source each copy holds the X its collision had. No pass over
+  // the band, only a copy of one float a cell. Throws std::logic_error with
+  // a source or before `back` steps.
+  virtual BandField storedField(int back) = 0;
 };
 
 }  // namespace lbmshape

@@ -47,6 +47,13 @@ std::vector<float> omegaFromGamma(const BandField& gamma)
   return omega;
 }
 
+void checkStoredField(int back, int stepsTaken, bool source)
+{
+  if (back != 1 && back != 2) throw std::logic_error("the stored field is 1 or 2 steps back");
+  if (stepsTaken < back) throw std::logic_error("the stored field needs as many steps taken as it goes back");
+  if (source) throw std::logic_error("with a source, rho* is not the field");
+}
+
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)
 {
   if (&field.bricks() != &bricks && (field.bricks().activeCount() != bricks.activeCount() ||

@@ -38,6 +38,10 @@ std::vector<int32_t> slotsToStep(const BrickSet& bricks, const std::vector<uint8
 // omega per cell from gamma per cell, checking every value, as on the grid.
 std::vector<float> omegaFromGamma(const BandField& gamma);
 
+// Throws std::logic_error unless storedField(back) can be read: 1 or 2
+// steps back, at least that many steps taken, no source.
+void checkStoredField(int back, int stepsTaken, bool source);
+
 // Throws std::invalid_argument unless `field` lies on `bricks`.
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what);
 

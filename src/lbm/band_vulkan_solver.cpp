@@ -390,6 +390,9 @@ void BandVulkanSolver::step(int count)
   // The state initialize() leaves is the one after the first step
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && r_->steps == 0) --count, ++r_->steps;
+  // Once a step is taken, field() makes every stored value on the device:
+  // only the far sides of the initial field are still needed.
+  if (r_->steps > 0) std::vector<float>().swap(r_->initial.values());
   if (count <= 0) return;
   auto& program = r_->context.program(r_->program(true));
   const auto bind = vk::PipelineBindPoint::eCompute;
@@ -411,17 +414,50 @@ void BandVulkanSolver::step(int count)
     r_->steps += batch;
     count -= batch;
   }
-  // Once a step is taken, field() makes every stored value on the device:
-  // only the far sides of the initial field are still needed.
-  std::vector<float>().swap(r_->initial.values());
+}
+
+BandField BandVulkanSolver::previousField()
+{
+  requireTwoSteps();
+  r_->current = 1 - r_->current;
+  BandField out = field();
+  r_->current = 1 - r_->current;
+  return out;
+}
+
+BandField BandVulkanSolver::storedField(int back)
+{
+  band_state::checkStoredField(back, r_->steps, r_->sourceHost.has_value());
+  // Moment 0 of every brick of the copy: the first quarter of each slot.
+  const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
+  BandField out(r_->initial.sharedBricks(), r_->initial.farValue());
+  out.farSides() = r_->initial.farSides();
+  const uint64_t slotBytes = 4 * brickCells, slots = r_->bricks->activeCount();
+  const uint64_t slotsPerChunk = std::max<uint64_t>(1, r_->staging.bytes() / slotBytes);
+  for (uint64_t first = 0; first < slots; first += slotsPerChunk) {
+    const uint64_t count = std::min(slotsPerChunk, slots - first);
+    std::vector<vk::BufferCopy> regions(count);
+    for (uint64_t k = 0; k < count; ++k)
+      regions[k] = vk::BufferCopy((first + k) * momentBytesPerSlot, k * slotBytes, slotBytes);
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
+      cmd.copyBuffer(copy.handle(), r_->staging.handle(), regions);
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
+    });
+    std::memcpy(out.values().data() + first * brickCells, r_->staging.mapped(), count * slotBytes);
+  }
+  return out;
 }
 
 BandField BandVulkanSolver::field()
 {
-  // Beyond the band nothing moves: the far sides are the initial field's.
-  BandField out = r_->initial;
-  if (r_->steps == 0) return out;
-  out.values().resize(r_->cells);
+  // Beyond the band nothing moves: the far sides are the initial field's
+  // (its values, kept until the first real step, are not copied).
+  if (r_->steps == 0) return r_->initial;
+  BandField out(r_->initial.sharedBricks(), r_->initial.farValue());
+  out.farSides() = r_->initial.farSides();
   auto& program = r_->context.program(r_->program(false));
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);

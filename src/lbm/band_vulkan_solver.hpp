@@ -38,6 +38,8 @@ public:
   void step(int count) override;
   int stepsTaken() const override;
   BandField field() override;
+  BandField previousField() override;
+  BandField storedField(int back) override;
 
   // Bytes the solver keeps on the device per stored cell (both copies of
   // the moments, the field, the brick tables, and per-cell omega or source

@@ -53,6 +53,10 @@ public:
 
   // The field X after the steps taken so far.
   virtual Volume field() = 0;
+  // X one step before that: the copy the last step read stays intact until
+  // the next step, so this costs what field() does. Throws std::logic_error
+  // before two steps.
+  virtual Volume previousField() = 0;
 };
 
 }  // namespace lbmshape

@@ -90,6 +90,15 @@ void ReferenceSolver::step(int count)
   }
 }
 
+Volume ReferenceSolver::previousField()
+{
+  requireTwoSteps();
+  current_.swap(next_);
+  Volume out = field();
+  current_.swap(next_);
+  return out;
+}
+
 Volume ReferenceSolver::field()
 {
   Volume out(extent_);

@@ -23,6 +23,7 @@ public:
   void step(int count) override;
   int stepsTaken() const override { return steps_; }
   Volume field() override;
+  Volume previousField() override;
 
 private:
   template <bool Collide>

@@ -3,6 +3,7 @@
 // the benchmarks drive either through this.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 
 namespace lbmshape {
@@ -13,6 +14,15 @@ public:
   virtual std::string backendName() const = 0;
   virtual void step(int count) = 0;
   virtual int stepsTaken() const = 0;
+
+protected:
+  // For previousField(): the copy the last step read is the state one step
+  // earlier, provided two steps were taken (a narrow band's first step only
+  // marks its initial state as stepped).
+  void requireTwoSteps() const
+  {
+    if (stepsTaken() < 2) throw std::logic_error("the field before the last step needs two steps taken");
+  }
 };
 
 }  // namespace lbmshape

@@ -335,6 +335,15 @@ void VulkanSolver::step(int count)
   }
 }
 
+Volume VulkanSolver::previousField()
+{
+  requireTwoSteps();
+  r_->current = 1 - r_->current;
+  Volume out = field();
+  r_->current = 1 - r_->current;
+  return out;
+}
+
 Volume VulkanSolver::field()
 {
   auto& program = r_->context.program(r_->latticeProgram("lbm_field"));

@@ -27,6 +27,7 @@ public:
   void step(int count) override;
   int stepsTaken() const override;
   Volume field() override;
+  Volume previousField() override;
 
 private:
   struct Resources;

@@ -15,6 +15,7 @@
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/render_job.hpp"
+#include "pipeline/smoothing_stop.hpp"
 #include "render/curvature_colours.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "lbm/band_width.hpp"
@@ -23,6 +24,7 @@
 #include "sdf/signed_distance.hpp"
 #include "surface/band_marching_cubes.hpp"
 #include "surface/marching_cubes.hpp"
+#include "surface/volume_keeping.hpp"
 
 namespace lbmshape {
 namespace {
@@ -80,12 +82,78 @@ void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, 
 void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
 void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
 
-// Runs the smoothing steps on `solver`, starting from `field`; a band
-// solver streams the cells within `halfWidth` of the surface. `field` is
-// let go once the solver has taken it, so that its memory is free while the
+// A smoothed field and the steps that made it.
+template <class Field>
+struct SmoothedField {
+  Field field;
+  int steps = 0;
+};
+
+// --steps auto on the grid: each step's field read back (a pass over the
+// lattice) to measure the surface's speed, and when it has levelled off
+// the field one step back, which the lattice's other copy still holds.
+SmoothedField<Volume> stepsTheNoiseNeeds(LatticeSolver& solver, Volume x0, Progress& progress)
+{
+  using namespace smoothing_stop;
+  InterruptibleSteps stepper(solver);
+  SurfaceSpeed speed(x0.values());
+  x0 = Volume();
+  double previous = 0.0;
+  for (int n = 1; n < mostSteps; ++n) {
+    stepper.advanceTo(n, stepsDone(solver), &progress);
+    const double now = speed.advance(solver.field().values());
+    if (levelledOff(n, previous, now)) return {solver.previousField(), n - 1};
+    previous = now;
+  }
+  stepper.advanceTo(mostSteps, stepsDone(solver), &progress);
+  return {solver.field(), mostSteps};
+}
+
+// The same on the band, read one step late and with no pass over it: after
+// step k its two copies of the moments hold the fields of steps k - 1 and
+// k - 2 (BandSolver::storedField), so the speed of step k - 1 is known, and
+// if it has levelled off the field to keep is still there.
+SmoothedField<BandField> stepsTheNoiseNeeds(BandSolver& solver, BandField x0, Progress& progress)
+{
+  using namespace smoothing_stop;
+  InterruptibleSteps stepper(solver);
+  SurfaceSpeed speed(x0.values());
+  x0 = BandField();
+  double previous = 0.0;
+  for (int k = 2; k <= mostSteps; ++k) {
+    stepper.advanceTo(k, stepsDone(solver), &progress);
+    const int n = k - 1;
+    const double now = speed.advance(solver.storedField(1).values());
+    if (levelledOff(n, previous, now)) return {solver.storedField(2), n - 1};
+    previous = now;
+  }
+  return {solver.field(), mostSteps};
+}
+
+// The steps of one start of `solver` from `x0`: --steps of them, or as many
+// as the noise needs (smoothing_stop.hpp). `x0` is let go once it is not
+// needed.
+template <class Solver, class Field>
+SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o, Progress& progress,
+                              const char* part = "steps", double share = 1.0)
+{
+  if (o.steps) {
+    x0 = Field();
+    stepShowingProgress(solver, *o.steps, progress, part, share);
+    return {solver.field(), *o.steps};
+  }
+  progress.beginPart(part, smoothing_stop::mostSteps, share);
+  SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress);
+  log::verbose("the noise is gone after " + std::to_string(smoothed.steps) + " steps");
+  return smoothed;
+}
+
+// Runs the smoothing on `solver`, starting from `field`; a band solver
+// streams the cells within `halfWidth` of the surface. `field` is let go
+// once the solver has taken it, so that its memory is free while the
 // lattice runs.
 template <class Solver, class Field>
-Field smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWidth, Progress& progress)
+SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWidth, Progress& progress)
 {
   switch (o.smoothing) {
   case Smoothing::Isotropic:
@@ -95,29 +163,27 @@ Field smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWi
     if (o.smoothing == Smoothing::Anisotropic) solver.setPaperRule(o.gamma);
     else solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
-    field = Field();
-    stepShowingProgress(solver, o.steps, progress);
-    return solver.field();
+    return runSteps(solver, std::move(field), o, progress);
   case Smoothing::PreserveFeatures: {
     const int probeSteps = featureProbeSteps(o.gamma);
-    const double probeShare = double(probeSteps) / (probeSteps + o.steps);
+    const int steps = o.steps.value_or(smoothing_stop::mostSteps);
+    const double probeShare = double(probeSteps) / (probeSteps + steps);
     solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
     stepShowingProgress(solver, probeSteps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
     start(solver, field, halfWidth);
-    field = Field();
-    stepShowingProgress(solver, o.steps, progress, "steps", 1.0 - probeShare);
-    return solver.field();
+    return runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
   }
   }
   throw std::logic_error("unknown smoothing");
 }
 
-// The longest run of steps a denoise makes from one start.
+// The most steps a denoise makes from one start.
 int longestRun(const DenoiseOptions& o)
 {
-  return o.smoothing == Smoothing::PreserveFeatures ? std::max(o.steps, featureProbeSteps(o.gamma)) : o.steps;
+  const int steps = o.steps.value_or(smoothing_stop::mostSteps);
+  return o.smoothing == Smoothing::PreserveFeatures ? std::max(steps, featureProbeSteps(o.gamma)) : steps;
 }
 
 // The lattice stages of a denoise: signed distance, smoothing, surface.
@@ -125,7 +191,25 @@ struct Smoothed {
   TriangleMesh mesh;
   nlohmann::json lattice;  // what the lattice held: cells, bytes
   size_t cells = 0;        // cells updated per step
+  int steps = 0;           // lattice steps taken (the last start's)
+  double volumeShift = 0;  // voxels the field was shifted by to keep the volume
 };
+
+// The largest level-set shift that keeping the volume may apply, in voxels:
+// the shrinking of a denoise at its defaults is a few tenths of a voxel, and
+// a shift must stay well inside the narrow band (at least 3 voxels wide).
+constexpr double maxVolumeShift = 2.0;
+
+// Shifts the smoothed field so that it encloses `enclosed` voxels, as the
+// input's field did; returns the shift.
+template <class Field>
+double keepVolume(Field& smoothed, double enclosed)
+{
+  const double shift = volumeKeepingShift(smoothed, enclosed, maxVolumeShift);
+  shiftField(smoothed, shift);
+  log::verbose("volume kept by a level-set shift of " + std::to_string(shift) + " voxels");
+  return shift;
+}
 
 Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
                          const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
@@ -133,14 +217,18 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
   device.checkFits(frame.extent);
   Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
+  const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;  // the mesh's, before any --noise
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
-  Volume smoothed =
+  SmoothedField<Volume> smoothed =
       clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, 0.0, progress); });
   solver.reset();  // its memory goes before marching cubes takes its own
-  return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
+  const double shift = o.keepVolume ? keepVolume(smoothed.field, enclosed) : 0.0;
+  return {clock.time("extract", [&] { return extractSurface(smoothed.field, frame); }),
           {{"kind", "grid"}, {"cells", frame.extent.cells()}},
-          frame.extent.cells()};
+          frame.extent.cells(),
+          smoothed.steps,
+          shift};
 }
 
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
@@ -157,17 +245,21 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   requireEnclosedVolume(field, input);
   const std::shared_ptr<const BrickSet> shared = field.sharedBricks();
   const BrickSet& bricks = *shared;
+  const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;
   auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared); });
-  BandField smoothed = clock.time(
+  SmoothedField<BandField> smoothed = clock.time(
       "lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
   solver.reset();  // its memory goes before marching cubes takes its own
-  return {clock.time("extract", [&] { return extractSurface(smoothed, frame); }),
+  const double shift = o.keepVolume ? keepVolume(smoothed.field, enclosed) : 0.0;
+  return {clock.time("extract", [&] { return extractSurface(smoothed.field, frame); }),
           {{"kind", "band"},
            {"half_width", halfWidth},
            {"bricks", bricks.activeCount()},
            {"cells", bricks.storedCells()},
            {"fraction_of_grid", double(bricks.storedCells()) / double(frame.extent.cells())}},
-          bricks.storedCells()};
+          bricks.storedCells(),
+          smoothed.steps,
+          shift};
 }
 
 }  // namespace
@@ -183,7 +275,7 @@ void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
 void checkDenoiseOptions(const DenoiseOptions& o)
 {
   relaxation::checkGamma(o.gamma, "--gamma");
-  if (o.steps < 0 || o.steps > parameter_bounds::maxSteps)
+  if (o.steps && (*o.steps < 0 || *o.steps > parameter_bounds::maxSteps))
     throw UsageError("--steps must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
   checkGridAndNoise(o.grid, o.noise);
 }
@@ -219,7 +311,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
   checkDenoiseOptions(o);
-  relaxation::warnIfInaccurate(o.gamma, o.steps, "--gamma");
+  if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps, "--gamma");
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output, o.compression);
   if (o.colourByCurvature) requireColourFormat(output, output.string());
@@ -236,7 +328,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                             : smoothOnTheBand(mesh, frame, input, o, device, clock);
   TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
-    throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(o.steps) +
+    throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
@@ -250,7 +342,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
 
   const MeshTopology outputTopology = analyzeTopology(result);
   const double lbmMs = clock.ms("lbm");
-  const double updates = double(smoothed.cells) * o.steps;
+  const double updates = double(smoothed.cells) * smoothed.steps;
   nlohmann::json report = {
       {"command", "denoise"},
       {"input", meshSummary(mesh, inputTopology)},
@@ -260,12 +352,15 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
                 {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
       {"device", device.name()},
       {"gamma", o.gamma},
-      {"steps", o.steps},
+      {"steps", smoothed.steps},
+      {"steps_chosen", o.steps ? "given" : "auto"},
       {"smoothing", smoothingName(o.smoothing)},
+      {"keep_volume", o.keepVolume},
+      {"volume_shift_voxels", smoothed.volumeShift},
       {"noise", o.noise.amplitude},
       {"lattice", smoothed.lattice},
       {"ms", clock.toJson()},
-      {"mlups", lbmMs > 0 && o.steps > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
+      {"mlups", lbmMs > 0 && smoothed.steps > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
       {"volume_change", inputTopology.closedManifold && inputTopology.signedVolume != 0
                             ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
                             : nlohmann::json(nullptr)}};

@@ -48,7 +48,7 @@ TEST_P(DenoiseBadInput, ExitCodeOneLineNoOutput)
   const auto before = folder.entries();
   testing::CliResult r = testing::runLbmshape({"denoise", input, output, "--res", "24"});
   EXPECT_EQ(r.exitCode, GetParam().exitCode) << r.err;
-  auto lines = testing::nonEmptyLines(r.err);
+  auto lines = testing::messageLines(r.err);
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_EQ(lines[0].rfind("lbmshape: error: ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find(GetParam().mentions), std::string::npos) << lines[0];
@@ -268,6 +268,28 @@ TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
   };
   EXPECT_EQ(bytes(folder / "a.obj"), bytes(folder / "b.obj")) << "the same seed gives the same mesh";
   EXPECT_GT(compare(input, (folder / "a.obj").string())["mean"].get<double>(), 0.0);
+}
+
+TEST(NoiseCli, WithResSigmaIsInVoxelsOfDenoisesGrid)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path());
+  const testing::CliResult r =
+      testing::runLbmshape({"noise", input, (folder / "n.obj").string(), "--sigma", "0.5", "--res", "40", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto noise = nlohmann::json::parse(r.out);
+  const testing::CliResult d = testing::runLbmshape(
+      {"denoise", input, (folder / "d.obj").string(), "--res", "40", "--steps", "0", "--json"});
+  ASSERT_EQ(d.exitCode, 0) << d.err;
+  const double voxel = nlohmann::json::parse(d.out)["grid"]["voxel"].get<double>();
+  EXPECT_EQ(noise["sigma_unit"], "voxel");
+  EXPECT_NEAR(noise["sigma_absolute"].get<double>(), 0.5 * voxel, 1e-12 * voxel);
+  // And that is the noise the mesh gets: of its thousands of vertices some
+  // move by more than one sigma.
+  const auto c = nlohmann::json::parse(
+      testing::runLbmshape({"compare", input, (folder / "n.obj").string(), "--json", "--samples", "20000"}).out);
+  EXPECT_GT(c["hausdorff"].get<double>(), 0.5 * voxel);
+  EXPECT_EQ(testing::runLbmshape({"noise", input, (folder / "m.obj").string(), "--res", "3"}).exitCode, 2);
 }
 
 TEST(NoiseCli, SigmaThatIsNotAFiniteSizeIsAUsageError)

@@ -134,7 +134,7 @@ TEST_P(MorphBadInput, ExitCodeAndOneLine)
   testing::CliResult r = testing::runLbmshape(args);
   EXPECT_EQ(r.exitCode, GetParam().exitCode) << r.err;
   if (GetParam().exitCode != 0) {
-    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    EXPECT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
     EXPECT_FALSE(fs::exists(folder / "out")) << "nothing written, not even the folder";
   }
 }

@@ -96,7 +96,7 @@ TEST_F(MorphThroughNothing, AMorphThatEndsWithNothingFails)
   testing::CliResult r = testing::runLbmshape(
       {"morph", left, right, out.string(), "--align", "none", "--res", "24", "--frames", "5", "--steps", "6", "--cs", "0.2"});
   EXPECT_EQ(r.exitCode, 5) << r.err;
-  ASSERT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+  ASSERT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("frame 4, the last, has no surface"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(frame(out, 4))) << "the empty last frame is not written";
   EXPECT_FALSE(fs::exists(out / "morph.glb"));
@@ -112,7 +112,7 @@ TEST_F(MorphThroughNothing, ATargetWithNoInsideOnTheGridIsAnInputError)
   testing::CliResult r = testing::runLbmshape(
       {"morph", left, speck, out.string(), "--align", "none", "--res", "24", "--frames", "5", "--steps", "40"});
   EXPECT_EQ(r.exitCode, 3) << r.err;
-  ASSERT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+  ASSERT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("speck.obj: it encloses no volume"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 }

@@ -187,6 +187,46 @@ TEST_P(BandSolverTest, DiffusesWithGammaEqualToTauMinusHalfOverThree)
   }
 }
 
+// The field one step back is the copy the last step read: what field()
+// gave after the step before, on the band and on the grid alike.
+TEST_P(BandSolverTest, PreviousFieldIsTheFieldOneStepBack)
+{
+  const Extent3 extent{21, 19, 23};
+  const Volume field = testing::sphereDistance(extent, 10.0, 9.5, 11.0, 6.5);
+  auto bricks = testing::bricksNear(field, 6.0);
+  auto band = solver(bricks);
+  auto grid = testing::makeSolver(GetParam(), extent);
+  band->setUniformGamma(0.2);
+  grid->setUniformGamma(0.2);
+  band->initialize(testing::bandOf(field, bricks), 5.0);
+  grid->initialize(field);
+  EXPECT_THROW(band->previousField(), std::logic_error);
+  band->step(3);
+  grid->step(3);
+  const BandField bandAfter3 = band->field();
+  const Volume gridAfter3 = grid->field();
+  band->step(1);
+  grid->step(1);
+  EXPECT_EQ(band->previousField().values(), bandAfter3.values());
+  EXPECT_EQ(grid->previousField().values(), gridAfter3.values());
+  EXPECT_NE(band->field().values(), bandAfter3.values());  // and the last step did change it
+  // The band's copies hold the same fields without a pass, in the grid.
+  auto inTheGrid = [&](const BandField& f) {
+    std::vector<float> values;
+    for (size_t i = 0; i < f.values().size(); ++i) {
+      const glm::ivec3 c = bricks->cell(int32_t(i / brickCells), int(i % brickCells));
+      if (extent.contains(c.x, c.y, c.z)) values.push_back(f.values()[i]);
+    }
+    return values;
+  };
+  EXPECT_EQ(inTheGrid(band->storedField(1)), inTheGrid(bandAfter3));
+  const BandField bandAfter4 = band->field();
+  band->step(1);
+  EXPECT_EQ(inTheGrid(band->storedField(2)), inTheGrid(bandAfter3));
+  EXPECT_EQ(inTheGrid(band->storedField(1)), inTheGrid(bandAfter4));
+  EXPECT_THROW(band->storedField(3), std::logic_error);
+}
+
 LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
 
 // The Vulkan solver against the CPU reference: near the grid's faces, with

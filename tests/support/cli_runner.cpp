@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -75,6 +76,14 @@ std::vector<std::string> nonEmptyLines(const std::string& text)
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);)
     if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> messageLines(const std::string& text)
+{
+  static const std::regex progress(R"(^lbmshape: [a-z ]+(\.\.\.|\s+[0-9]+% \(.*\),) [0-9]+\.[0-9] s$)");
+  std::vector<std::string> lines = nonEmptyLines(text);
+  std::erase_if(lines, [](const std::string& line) { return std::regex_match(line, progress); });
   return lines;
 }
 

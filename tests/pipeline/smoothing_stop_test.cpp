@@ -1,0 +1,107 @@
+// --steps auto (pipeline/smoothing_stop.hpp): the surface's speed, the rule
+// that reads the end of the noise off it, and a denoise that takes more steps
+// the noisier its input.
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_geometry.hpp"
+#include "mesh/mesh_noise.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/denoise.hpp"
+#include "pipeline/smoothing_stop.hpp"
+#include "sdf/grid_frame.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+using namespace smoothing_stop;
+
+TEST(SurfaceSpeed, IsTheMeanChangeOverTheLastFieldsSurfaceCells)
+{
+  // Cells 0 and 2 are on the surface (|X| < 1) before; cell 1 is not, and
+  // its large change does not count.
+  SurfaceSpeed speed({0.5f, 3.0f, -0.2f});
+  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.5f}), (0.1 + 0.3) / 2.0, 1e-7);
+  // The surface is now the new field's: cells 0 and 2 again (1.0 is not
+  // below 1 voxel).
+  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.1f}), (0.0 + 0.4) / 2.0, 1e-7);
+}
+
+TEST(SurfaceSpeed, LevelsOffOnlyAfterTheFewestSteps)
+{
+  // Speeds falling by half a step, then by 10 %: the noise is gone at step 4,
+  // so step 3's field is kept.
+  const double speeds[] = {0.0, 0.16, 0.08, 0.04, 0.036, 0.034};
+  int kept = -1;
+  for (int n = 2; n <= 5 && kept < 0; ++n)
+    if (levelledOff(n, speeds[n - 1], speeds[n])) kept = n - 1;
+  EXPECT_EQ(kept, 3);
+  // Level from the start: the fewest steps.
+  EXPECT_FALSE(levelledOff(2, 0.03, 0.03));
+  EXPECT_TRUE(levelledOff(3, 0.03, 0.03));
+}
+
+class AutoSteps : public ::testing::Test {
+protected:
+  ComputeDevice device{"", true};
+  testing::ScratchFolder folder;
+
+  nlohmann::json denoise(const TriangleMesh& mesh, std::optional<int> steps = {}, bool dense = false)
+  {
+    writeMesh(mesh, folder.path() / "in.obj");
+    DenoiseOptions options;
+    options.grid.resolution = 64;
+    options.steps = steps;
+    options.dense = dense;
+    return denoiseFile(folder.path() / "in.obj", folder.path() / "out.obj", options, device).report;
+  }
+};
+
+TEST_F(AutoSteps, TheNoisierTheInputTheMoreSteps)
+{
+  const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 192, 96);
+  // Noise in voxels of the grid at --res 64 (as `lbmshape noise --res 64`).
+  const double voxel = frameWithResolution(bounds(torus), 64, 4.0).voxel, edge = meanEdgeLength(torus);
+  int previous = 0;
+  for (double sigma : {0.0, 0.5, 1.0}) {
+    const nlohmann::json r = denoise(sigma > 0 ? addNormalNoise(torus, sigma * voxel / edge, 3) : torus);
+    EXPECT_EQ(r["steps_chosen"], "auto");
+    const int steps = r["steps"];
+    EXPECT_GE(steps, fewestSteps);
+    EXPECT_LE(steps, mostSteps);
+    if (sigma == 0.0) {
+      EXPECT_EQ(steps, fewestSteps) << "a clean torus needs no more";
+    }
+    if (sigma == 1.0) {
+      EXPECT_GT(steps, fewestSteps + 1) << "sigma 1 voxel";
+    }
+    EXPECT_GE(steps, previous) << "sigma " << sigma;
+    previous = steps;
+  }
+}
+
+// The band reads its fields one step late from its two copies, the grid
+// each step as it is taken: the same rule, so the same steps.
+TEST_F(AutoSteps, TheBandAndTheGridChooseTheSameSteps)
+{
+  const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 192, 96);
+  const double voxel = frameWithResolution(bounds(torus), 64, 4.0).voxel, edge = meanEdgeLength(torus);
+  for (double sigma : {0.0, 0.7}) {
+    const TriangleMesh input = sigma > 0 ? addNormalNoise(torus, sigma * voxel / edge, 5) : torus;
+    const nlohmann::json band = denoise(input), grid = denoise(input, {}, true);
+    EXPECT_EQ(band["lattice"]["kind"], "band");
+    EXPECT_EQ(grid["lattice"]["kind"], "grid");
+    EXPECT_EQ(band["steps"], grid["steps"]) << "sigma " << sigma;
+  }
+}
+
+TEST_F(AutoSteps, GivenStepsAreTaken)
+{
+  const nlohmann::json r = denoise(testing::torusMesh(1.0, 0.4, 64, 32), 5);
+  EXPECT_EQ(r["steps"], 5);
+  EXPECT_EQ(r["steps_chosen"], "given");
+}
+
+}  // namespace
+}  // namespace lbmshape

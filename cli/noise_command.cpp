@@ -40,7 +40,8 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
   const double unit =
       args.resolution ? frameWithResolution(bounds(mesh), *args.resolution, GridOptions{}.marginVoxels).voxel : edge;
   const char* unitName = args.resolution ? "voxels" : "mean edge lengths";
-  writeMesh(addNormalNoise(mesh, args.sigma * unit / edge, args.seed), args.output);
+  // A mesh whose edges all have zero length has no normals to move along.
+  writeMesh(addNormalNoise(mesh, edge > 0.0 ? args.sigma * unit / edge : 0.0, args.seed), args.output);
   common.report({{"command", "noise"},
                  {"input", args.input},
                  {"output", args.output},

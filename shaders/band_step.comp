@@ -137,10 +137,12 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   }
   vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
   if (PAPER_RULE) {
-    const vec4 gamma = clamp(p.gamma0 + (X - rhoBefore) / imageLoad(gammaPerCell, cells), vec4(ADAPTIVE_GAMMA_LOWEST),
-                             vec4(ADAPTIVE_GAMMA_HIGHEST));
+    // precise: no fused multiply-add, as the CPU reference computes it.
+    precise vec4 gamma = clamp(p.gamma0 + (X - rhoBefore) / imageLoad(gammaPerCell, cells),
+                               vec4(ADAPTIVE_GAMMA_LOWEST), vec4(ADAPTIVE_GAMMA_HIGHEST));
     imageStore(gammaPerCell, cells, gamma);
-    omega = 1.0 / (3.0 * gamma + 0.5);
+    precise vec4 tau = 3.0 * gamma + 0.5;
+    omega = 1.0 / tau;
   }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
   nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + 0.5 * S;

@@ -34,11 +34,14 @@ void main()
   vec4 X = fieldFromDistributions(S);
   vec4 omega;
   if (PAPER_RULE) {
-    const vec4 gamma = clamp(params.gamma0 + (X - fieldBefore.cells[ownBlock]) / gammaPerCell.cells[ownBlock],
-                             vec4(ADAPTIVE_GAMMA_LOWEST), vec4(ADAPTIVE_GAMMA_HIGHEST));
+    // precise: no fused multiply-add, as the CPU reference computes it; the
+    // rule divides by gamma, so a difference in rounding would grow.
+    precise vec4 gamma = clamp(params.gamma0 + (X - fieldBefore.cells[ownBlock]) / gammaPerCell.cells[ownBlock],
+                               vec4(ADAPTIVE_GAMMA_LOWEST), vec4(ADAPTIVE_GAMMA_HIGHEST));
     gammaPerCell.cells[ownBlock] = gamma;
     fieldBefore.cells[ownBlock] = X;
-    omega = 1.0 / (3.0 * gamma + 0.5);
+    precise vec4 tau = 3.0 * gamma + 0.5;
+    omega = 1.0 / tau;
   } else {
     omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, ownBlock) : vec4(params.omega);
   }

@@ -35,6 +35,7 @@ void BandReferenceSolver::setPaperRule(double gamma0)
 {
   setUniformGamma(gamma0);
   paperRuleGamma0_ = gamma0;
+  paperRuleReady_ = false;
 }
 
 void BandReferenceSolver::applyPaperRule()
@@ -61,6 +62,7 @@ void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t
     xBefore_ = field;
     gammaBefore_ = BandField(field.sharedBricks(), float(*paperRuleGamma0_));
     std::fill(gammaBefore_.values().begin(), gammaBefore_.values().end(), float(*paperRuleGamma0_));
+    paperRuleReady_ = true;
   }
   current_ = band_state::collidedEquilibrium(field, source_);
   next_ = current_;  // bricks a step skips keep their moments in both copies
@@ -73,6 +75,7 @@ void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t
 
 void BandReferenceSolver::step(int count)
 {
+  requirePaperRuleInitialized(paperRuleGamma0_.has_value(), paperRuleReady_);
   // The state initialize() leaves is already the one after the first step
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && steps_ == 0) --count, ++steps_;

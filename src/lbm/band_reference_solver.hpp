@@ -44,6 +44,7 @@ private:
   float uniformOmega_ = 1.0f;
   std::vector<float> omegaPerCell_;     // empty: uniform
   std::optional<double> paperRuleGamma0_;
+  bool paperRuleReady_ = false;  // initialize() has seeded the rule's state
   BandField xBefore_, gammaBefore_;     // the paper's rule: what each cell's last step pulled and used
   std::optional<BandSource> source_;
   int steps_ = 0;

@@ -110,6 +110,7 @@ struct BandVulkanSolver::Resources {
   float uniformOmega = 1.0f;
   std::vector<float> omegaPerCell;     // host copy: initialize() needs it
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
+  bool paperRuleReady = false;            // initialize() has seeded its gamma
   std::optional<BandSource> sourceHost;
   BandField initial;                   // X at initialisation (its values until the first step), with its far sides
 
@@ -314,6 +315,7 @@ void BandVulkanSolver::setPaperRule(double gamma0)
 {
   setUniformGamma(gamma0);
   r_->paperRuleGamma0 = gamma0;
+  r_->paperRuleReady = false;
   r_->perCellBuffer();
 }
 
@@ -346,6 +348,7 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   if (r_->paperRuleGamma0) {
     const std::vector<float> gamma(r_->cells, float(*r_->paperRuleGamma0));
     r_->upload(gamma.data(), 4 * r_->cells, r_->omega);
+    r_->paperRuleReady = true;
   }
   // rho* and j* = 0 per brick, laid out [moment][cell], built a chunk at a
   // time in the staging buffer; the second copy is the first's, on the
@@ -387,6 +390,7 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
 
 void BandVulkanSolver::step(int count)
 {
+  requirePaperRuleInitialized(r_->paperRuleGamma0.has_value(), r_->paperRuleReady);
   // The state initialize() leaves is the one after the first step
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && r_->steps == 0) --count, ++r_->steps;

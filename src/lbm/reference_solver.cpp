@@ -36,6 +36,7 @@ void ReferenceSolver::setPaperRule(double gamma0)
 {
   setUniformGamma(gamma0);
   paperRuleGamma0_ = gamma0;
+  paperRuleReady_ = false;
 }
 
 void ReferenceSolver::applyPaperRule()
@@ -77,11 +78,13 @@ void ReferenceSolver::initialize(const Volume& field)
     // The first step's X before is what it pulls: gamma0 is its gamma.
     xBefore_ = this->field();
     gammaBefore_ = Volume(extent_, float(*paperRuleGamma0_));
+    paperRuleReady_ = true;
   }
 }
 
 void ReferenceSolver::step(int count)
 {
+  requirePaperRuleInitialized(paperRuleGamma0_.has_value(), paperRuleReady_);
   for (int s = 0; s < count; ++s) {
     if (paperRuleGamma0_) applyPaperRule();
     sweep<true>(nullptr);

@@ -16,6 +16,13 @@ public:
   virtual int stepsTaken() const = 0;
 
 protected:
+  // For setPaperRule(): it takes effect at initialize(), which seeds each
+  // cell's X before and gamma; stepping between the two would read neither.
+  static void requirePaperRuleInitialized(bool set, bool initialized)
+  {
+    if (set && !initialized) throw std::logic_error("setPaperRule takes effect at initialize(): initialize first");
+  }
+
   // For previousField(): the copy the last step read is the state one step
   // earlier, provided two steps were taken (a narrow band's first step only
   // marks its initial state as stepped).

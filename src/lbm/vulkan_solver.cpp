@@ -106,6 +106,7 @@ struct VulkanSolver::Resources {
   float uniformOmega = 1.0f;
   bool perCellOmega = false;
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
+  bool paperRuleReady = false;            // initialize() has seeded its gamma and X before
   std::optional<LinearSource> source;    // host copy: initialize() needs A
 
   gpu::ProgramSpec latticeProgram(const char* shader) const
@@ -263,6 +264,7 @@ void VulkanSolver::setPaperRule(double gamma0)
 {
   setUniformGamma(gamma0);
   r_->paperRuleGamma0 = gamma0;
+  r_->paperRuleReady = false;
 }
 
 void VulkanSolver::setSource(std::optional<LinearSource> source)
@@ -281,7 +283,15 @@ void VulkanSolver::initialize(const Volume& fieldValues)
   // The field buffer holds X at the start: under the paper's rule, the
   // first step's X before.
   r_->upload(solver_state::initialDensity(fieldValues, r_->source), r_->field);
-  if (r_->paperRuleGamma0) r_->upload(Volume(extent(), float(*r_->paperRuleGamma0)), r_->omega);
+  if (r_->paperRuleGamma0) {
+    // gamma0 in every cell, the rows' padding too (whose X before and X
+    // are 0: a 0 there would make the rule divide by it).
+    const float gamma0 = float(*r_->paperRuleGamma0);
+    uint32_t bits;
+    std::memcpy(&bits, &gamma0, 4);
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(r_->omega.handle(), 0, VK_WHOLE_SIZE, bits); });
+    r_->paperRuleReady = true;
+  }
   auto& program = r_->context.program(r_->initProgram());
   const LatticeLayout& l = r_->layout;
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
@@ -314,6 +324,7 @@ void VulkanSolver::initialize(const Volume& fieldValues)
 
 void VulkanSolver::step(int count)
 {
+  requirePaperRuleInitialized(r_->paperRuleGamma0.has_value(), r_->paperRuleReady);
   auto& program = r_->context.program(r_->latticeProgram("lbm_step"));
   const StepParameters push = r_->parameters();
   const auto bind = vk::PipelineBindPoint::eCompute;

@@ -82,11 +82,13 @@ void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, 
 void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
 void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
 
-// A smoothed field and the steps that made it.
+// A smoothed field, the steps that made it, and the steps the lattice ran
+// (with --steps auto, one or two more, to see the speed level off).
 template <class Field>
 struct SmoothedField {
   Field field;
   int steps = 0;
+  int stepsRun = 0;
 };
 
 // --steps auto on the grid: each step's field read back (a pass over the
@@ -99,14 +101,14 @@ SmoothedField<Volume> stepsTheNoiseNeeds(LatticeSolver& solver, Volume x0, Progr
   SurfaceSpeed speed(x0.values());
   x0 = Volume();
   double previous = 0.0;
-  for (int n = 1; n < mostSteps; ++n) {
+  for (int n = 1;; ++n) {
     stepper.advanceTo(n, stepsDone(solver), &progress);
-    const double now = speed.advance(solver.field().values());
-    if (levelledOff(n, previous, now)) return {solver.previousField(), n - 1};
+    Volume x = solver.field();
+    const double now = speed.advance(x.values());
+    if (levelledOff(n, previous, now)) return {solver.previousField(), n - 1, n};
+    if (n == mostSteps) return {std::move(x), n, n};
     previous = now;
   }
-  stepper.advanceTo(mostSteps, stepsDone(solver), &progress);
-  return {solver.field(), mostSteps};
 }
 
 // The same on the band, read one step late and with no pass over it: after
@@ -120,14 +122,15 @@ SmoothedField<BandField> stepsTheNoiseNeeds(BandSolver& solver, BandField x0, Pr
   SurfaceSpeed speed(x0.values());
   x0 = BandField();
   double previous = 0.0;
-  for (int k = 2; k <= mostSteps; ++k) {
+  for (int k = 2;; ++k) {
     stepper.advanceTo(k, stepsDone(solver), &progress);
     const int n = k - 1;
-    const double now = speed.advance(solver.storedField(1).values());
-    if (levelledOff(n, previous, now)) return {solver.storedField(2), n - 1};
+    BandField x = solver.storedField(1);
+    const double now = speed.advance(x.values());
+    if (levelledOff(n, previous, now)) return {solver.storedField(2), n - 1, k};
+    if (n == mostSteps) return {std::move(x), n, k};
     previous = now;
   }
-  return {solver.field(), mostSteps};
 }
 
 // The steps of one start of `solver` from `x0`: --steps of them, or as many
@@ -140,7 +143,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
   if (o.steps) {
     x0 = Field();
     stepShowingProgress(solver, *o.steps, progress, part, share);
-    return {solver.field(), *o.steps};
+    return {solver.field(), *o.steps, *o.steps};
   }
   progress.beginPart(part, smoothing_stop::mostSteps, share);
   SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress);
@@ -191,7 +194,8 @@ struct Smoothed {
   TriangleMesh mesh;
   nlohmann::json lattice;  // what the lattice held: cells, bytes
   size_t cells = 0;        // cells updated per step
-  int steps = 0;           // lattice steps taken (the last start's)
+  int steps = 0;           // the steps whose field was kept (the last start's)
+  int stepsRun = 0;        // the steps the lattice ran for it
   double volumeShift = 0;  // voxels the field was shifted by to keep the volume
 };
 
@@ -228,6 +232,7 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
           {{"kind", "grid"}, {"cells", frame.extent.cells()}},
           frame.extent.cells(),
           smoothed.steps,
+          smoothed.stepsRun,
           shift};
 }
 
@@ -259,6 +264,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
            {"fraction_of_grid", double(bricks.storedCells()) / double(frame.extent.cells())}},
           bricks.storedCells(),
           smoothed.steps,
+          smoothed.stepsRun,
           shift};
 }
 
@@ -342,7 +348,8 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
 
   const MeshTopology outputTopology = analyzeTopology(result);
   const double lbmMs = clock.ms("lbm");
-  const double updates = double(smoothed.cells) * smoothed.steps;
+  if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps, "--gamma");
+  const double updates = double(smoothed.cells) * smoothed.stepsRun;
   nlohmann::json report = {
       {"command", "denoise"},
       {"input", meshSummary(mesh, inputTopology)},
@@ -354,13 +361,14 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
       {"gamma", o.gamma},
       {"steps", smoothed.steps},
       {"steps_chosen", o.steps ? "given" : "auto"},
+      {"steps_run", smoothed.stepsRun},
       {"smoothing", smoothingName(o.smoothing)},
       {"keep_volume", o.keepVolume},
       {"volume_shift_voxels", smoothed.volumeShift},
       {"noise", o.noise.amplitude},
       {"lattice", smoothed.lattice},
       {"ms", clock.toJson()},
-      {"mlups", lbmMs > 0 && smoothed.steps > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
+      {"mlups", lbmMs > 0 && smoothed.stepsRun > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
       {"volume_change", inputTopology.closedManifold && inputTopology.signedVolume != 0
                             ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
                             : nlohmann::json(nullptr)}};

@@ -194,6 +194,28 @@ TEST(PaperRule, TheBandSolverAppliesItAsTheHostLoopDid)
   EXPECT_GT(maxDifference(isotropic.field().values(), b.values()), 0.05);
 }
 
+// The rule's state (each cell's X before and gamma) is seeded by
+// initialize(): stepping with a rule set after it is a programming error.
+TEST(PaperRule, TakesEffectAtInitialize)
+{
+  const Extent3 extent{12, 11, 13};
+  const Volume start = noisySphere(extent);
+  ReferenceSolver grid(extent);
+  grid.setUniformGamma(gamma0);
+  grid.initialize(start);
+  grid.setPaperRule(gamma0);
+  EXPECT_THROW(grid.step(1), std::logic_error);
+  grid.initialize(start);
+  EXPECT_NO_THROW(grid.step(2));
+  auto bricks = testing::bricksNear(start, 6.0);
+  BandReferenceSolver band(bricks);
+  band.initialize(testing::bandOf(start, bricks), 5.0);
+  band.setPaperRule(gamma0);
+  EXPECT_THROW(band.step(2), std::logic_error);
+  band.initialize(testing::bandOf(start, bricks), 5.0);
+  EXPECT_NO_THROW(band.step(2));
+}
+
 TEST(PaperRule, RefusesASource)
 {
   const Extent3 extent{8, 8, 8};

@@ -1,6 +1,9 @@
 // The Vulkan step must compute what the CPU reference computes: same field
-// after 50 steps, to 1e-5 relative, for every kind of relaxation and source,
-// on grids whose sizes are odd, non-cubic, or smaller than one vec4 block.
+// after 50 steps, to 1e-5 of the field's largest magnitude, for every kind of
+// relaxation and source, on grids whose sizes are odd, non-cubic, or smaller
+// than one vec4 block. (Relative to each cell's own value the comparison
+// would fail on conformant hardware wherever a source drives the field
+// through zero: on an NVIDIA H100, 5.6e-3 there, from fused multiply-adds.)
 #include <gtest/gtest.h>
 
 #include "lbm/reference_solver.hpp"
@@ -48,7 +51,7 @@ TEST_P(GpuMatchesReference, FieldAgreesAfter50Steps)
   vulkan.step(50);
   Volume expected = reference.field();
   Volume got = vulkan.field();
-  EXPECT_LT(testing::maxRelativeDifference(got, expected), 1e-5);
+  EXPECT_LT(testing::maxDifferenceForItsScale(got, expected), 1e-5);
   // The field must have changed, or the comparison proves nothing.
   EXPECT_GT(testing::maxRelativeDifference(expected, testing::randomField(c.extent, 0.5f, 1.5f, 3)), 1e-2);
 }

@@ -49,6 +49,16 @@ double sum(const Volume& v)
   return s;
 }
 
+double maxDifferenceForItsScale(const Volume& a, const Volume& b)
+{
+  double worst = 0, scale = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(double(a[i]) - b[i]));
+    scale = std::max(scale, std::abs(double(b[i])));
+  }
+  return scale > 0 ? worst / scale : worst;
+}
+
 double maxRelativeDifference(const Volume& a, const Volume& b, double floor)
 {
   double worst = 0;

@@ -16,5 +16,9 @@ Volume sphereDistance(Extent3 extent, double cx, double cy, double cz, double ra
 double sum(const Volume& v);
 // max over cells of |a - b| / max(|b|, floor)
 double maxRelativeDifference(const Volume& a, const Volume& b, double floor = 1e-6);
+// max over cells of |a - b|, divided by max over cells of |b|: a difference
+// measured against the field's scale, which stays meaningful where the
+// field itself passes through zero.
+double maxDifferenceForItsScale(const Volume& a, const Volume& b);
 
 }  // namespace lbmshape::testing

@@ -20,6 +20,14 @@ public:
   const BrickSet& bricks() const { return *bricks_; }
   const std::shared_ptr<const BrickSet>& sharedBricks() const { return bricks_; }
   const Extent3& extent() const { return bricks_->cells(); }
+  // A field on the same bricks with the same far value and sides, its
+  // stored values 0: what a solver fills with the values it computes.
+  BandField sameShape() const
+  {
+    BandField out(bricks_, farValue_);
+    out.farSide_ = farSide_;
+    return out;
+  }
   float farValue() const { return farValue_; }
 
   // Stored values, slot * brickCells + cellInBrick; cells beyond the grid

@@ -42,9 +42,7 @@ void BandReferenceSolver::applyPaperRule()
 {
   BandField x = field();
   gammaBefore_ = adaptive_gamma::paperRule(xBefore_, x, gammaBefore_, *paperRuleGamma0_);
-  omegaPerCell_.resize(x.values().size());
-  for (size_t i = 0; i < omegaPerCell_.size(); ++i)
-    omegaPerCell_[i] = relaxation::singlePrecisionOmega(gammaBefore_.values()[i]);
+  omegaPerCell_ = band_state::omegaFromGamma(gammaBefore_);
   xBefore_ = std::move(x);
 }
 
@@ -102,8 +100,7 @@ BandField BandReferenceSolver::storedField(int back)
   // After a step, current_ holds what it collided and next_ what the step
   // before collided; the first, free step leaves both at the initial state.
   const std::vector<glm::vec4>& copy = back == 1 ? current_ : next_;
-  BandField out(initial_.sharedBricks(), initial_.farValue());
-  out.farSides() = initial_.farSides();
+  BandField out = initial_.sameShape();
   for (size_t i = 0; i < copy.size(); ++i) out.values()[i] = copy[i].x;
   return out;
 }

@@ -190,21 +190,38 @@ struct BandVulkanSolver::Resources {
     });
   }
 
-  // Copies `bytes` of a device buffer into host memory, after what the
-  // command buffer `before` records (a barrier to transfer reads included).
+  // Copies `units` pieces of `unitBytes` of a device buffer, piece u at
+  // offset u * sourceStride, packed into host memory, through the staging
+  // buffer a chunk at a time, after what the command buffer `before`
+  // records (a barrier to transfer reads included).
   template <class Before>
-  void download(const GpuBuffer& source, uint64_t bytes, void* data, Before before)
+  void downloadUnits(const GpuBuffer& source, uint64_t units, uint64_t unitBytes, uint64_t sourceStride, void* data,
+                     Before before)
   {
-    for (uint64_t first = 0; first < bytes; first += staging.bytes()) {
-      const uint64_t chunk = std::min(staging.bytes(), bytes - first);
+    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unitBytes);
+    std::vector<vk::BufferCopy> regions;
+    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
+      const uint64_t count = std::min(unitsPerChunk, units - first);
+      regions.clear();
+      if (sourceStride == unitBytes)  // contiguous: one copy
+        regions.emplace_back(first * unitBytes, 0, count * unitBytes);
+      else
+        for (uint64_t k = 0; k < count; ++k) regions.emplace_back((first + k) * sourceStride, k * unitBytes, unitBytes);
       context.runAndWait([&](vk::CommandBuffer cmd) {
         if (first == 0) before(cmd);
-        cmd.copyBuffer(source.handle(), staging.handle(), vk::BufferCopy(first, 0, chunk));
+        cmd.copyBuffer(source.handle(), staging.handle(), regions);
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
                             vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
       });
-      std::memcpy(static_cast<std::byte*>(data) + first, staging.mapped(), chunk);
+      std::memcpy(static_cast<std::byte*>(data) + first * unitBytes, staging.mapped(), count * unitBytes);
     }
+  }
+
+  // Copies `bytes` of a device buffer into host memory (downloadUnits).
+  template <class Before>
+  void download(const GpuBuffer& source, uint64_t bytes, void* data, Before before)
+  {
+    downloadUnits(source, bytes, 1, 1, data, before);
   }
 
   // The omega buffer at its full size, one float a stored cell.
@@ -434,24 +451,14 @@ BandField BandVulkanSolver::storedField(int back)
   band_state::checkStoredField(back, r_->steps, r_->sourceHost.has_value());
   // Moment 0 of every brick of the copy: the first quarter of each slot.
   const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
-  BandField out(r_->initial.sharedBricks(), r_->initial.farValue());
-  out.farSides() = r_->initial.farSides();
-  const uint64_t slotBytes = 4 * brickCells, slots = r_->bricks->activeCount();
-  const uint64_t slotsPerChunk = std::max<uint64_t>(1, r_->staging.bytes() / slotBytes);
-  for (uint64_t first = 0; first < slots; first += slotsPerChunk) {
-    const uint64_t count = std::min(slotsPerChunk, slots - first);
-    std::vector<vk::BufferCopy> regions(count);
-    for (uint64_t k = 0; k < count; ++k)
-      regions[k] = vk::BufferCopy((first + k) * momentBytesPerSlot, k * slotBytes, slotBytes);
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
-                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
-      cmd.copyBuffer(copy.handle(), r_->staging.handle(), regions);
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
-                          vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
-    });
-    std::memcpy(out.values().data() + first * brickCells, r_->staging.mapped(), count * slotBytes);
-  }
+  BandField out = r_->initial.sameShape();
+  r_->downloadUnits(copy, r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot, out.values().data(),
+                    [](vk::CommandBuffer cmd) {
+                      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer,
+                                          {}, vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite,
+                                                                vk::AccessFlagBits::eTransferRead),
+                                          {}, {});
+                    });
   return out;
 }
 
@@ -460,8 +467,7 @@ BandField BandVulkanSolver::field()
   // Beyond the band nothing moves: the far sides are the initial field's
   // (its values, kept until the first real step, are not copied).
   if (r_->steps == 0) return r_->initial;
-  BandField out(r_->initial.sharedBricks(), r_->initial.farValue());
-  out.farSides() = r_->initial.farSides();
+  BandField out = r_->initial.sameShape();
   auto& program = r_->context.program(r_->program(false));
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);

@@ -43,8 +43,7 @@ void ReferenceSolver::applyPaperRule()
 {
   Volume x = field();
   gammaBefore_ = adaptive_gamma::paperRule(xBefore_, x, gammaBefore_, *paperRuleGamma0_);
-  omegaPerCell_ = Volume(extent_);
-  for (size_t i = 0; i < omegaPerCell_.size(); ++i) omegaPerCell_[i] = relaxation::singlePrecisionOmega(gammaBefore_[i]);
+  omegaPerCell_ = solver_state::omegaFromGammaVolume(gammaBefore_);
   xBefore_ = std::move(x);
 }
 

@@ -40,7 +40,7 @@ protected:
   void expectRefused(const testing::CliResult& result)
   {
     EXPECT_EQ(result.exitCode, 3) << result.err;
-    const auto lines = testing::nonEmptyLines(result.err);
+    const auto lines = testing::messageLines(result.err);
     ASSERT_EQ(lines.size(), 1u) << result.err;
     EXPECT_EQ(lines[0].rfind("lbmshape: error: cannot read " + input_.string(), 0), 0u) << lines[0];
     EXPECT_NE(lines[0].find(GetParam().refusal), std::string::npos) << lines[0];
@@ -126,7 +126,7 @@ TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
         {"--device", "reference", "morph", a, a, (folder / "frames").string(), "--res", "400"}}) {
     const auto result = testing::runLbmshapeWithin(1000, args);
     EXPECT_EQ(result.exitCode, 5) << args[4] << "\n" << result.err;
-    const auto lines = testing::nonEmptyLines(result.err);
+    const auto lines = testing::messageLines(result.err);
     ASSERT_EQ(lines.size(), 1u) << result.err;
     EXPECT_NE(lines[0].find("needs about"), std::string::npos) << lines[0];
     EXPECT_NE(lines[0].find("would fit"), std::string::npos) << lines[0];
@@ -145,7 +145,7 @@ TEST(MemoryPressure, AnAnimationThatCannotFitIsRefusedBeforeAnyWorkSayingWhatWou
       1000, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(), (folder / "frames").string(), "--res",
              "96", "--frames", "100000"});
   EXPECT_EQ(result.exitCode, 5) << result.err;
-  const auto lines = testing::nonEmptyLines(result.err);
+  const auto lines = testing::messageLines(result.err);
   ASSERT_EQ(lines.size(), 1u) << result.err;
   EXPECT_NE(lines[0].find("the 100000 frames of morph.glb need about"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("frames would fit, or give --no-animation"), std::string::npos) << lines[0];

@@ -137,7 +137,7 @@ TEST_P(RenderBadArguments, ExitCodeOneLineNoPicture)
   args.insert(args.end(), c.options.begin(), c.options.end());
   const testing::CliResult r = testing::runLbmshape(args);
   EXPECT_EQ(r.exitCode, c.exitCode) << r.err;
-  const auto lines = testing::nonEmptyLines(r.err);
+  const auto lines = testing::messageLines(r.err);
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_NE(lines[0].find(c.mentions), std::string::npos) << lines[0];
   EXPECT_EQ(folder.entries(), before) << "no picture, no temporary file";

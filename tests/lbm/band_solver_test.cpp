@@ -268,7 +268,8 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
     worst = std::max(worst, double(std::abs(a.values()[i] - b.values()[i])));
     scale = std::max(scale, double(std::abs(b.values()[i])));
   }
-  EXPECT_LE(worst, 1e-5 * scale) << "max |X|: " << scale;
+  EXPECT_LE(worst, (variant == 4 ? testing::paperRuleDeviceTolerance : testing::deviceTolerance) * scale)
+      << "max |X|: " << scale;
   EXPECT_GT(scale, 1.0);
 }
 

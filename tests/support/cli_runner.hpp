@@ -52,7 +52,8 @@ std::string lbmshapeBinary();
 // Lines of text, without empty ones.
 std::vector<std::string> nonEmptyLines(const std::string& text);
 // The same without progress lines ("lbmshape: sdf  42% (part), 1.0 s"),
-// which a stage prints once it has run for a second: on a busy machine
+// which a stage prints once it has run for a second, and the time of a stage
+// that took over a second ("lbmshape: sdf  4012.3 ms"): on a busy machine
 // they come before an error too, and are not part of what it says.
 std::vector<std::string> messageLines(const std::string& text);
 

@@ -96,8 +96,12 @@ VulkanInstance::VulkanInstance(bool validation)
   try {
     instance_ = vk::raii::Instance(context_, info);
   } catch (const vk::SystemError& e) {
+    // The second hint is for headless NVIDIA machines, where the driver's own
+    // manifest (libGLX_nvidia.so.0) can fail to start without a display
+    // while its EGL library starts (docs/performance.md, "On a real GPU").
     throw DeviceError(std::string("cannot create a Vulkan instance (") + e.what() +
-                      "); install a Vulkan driver (on Debian: apt-get install mesa-vulkan-drivers)");
+                      "); install a Vulkan driver (on Debian: apt-get install mesa-vulkan-drivers), or on a headless "
+                      "NVIDIA machine point VK_DRIVER_FILES at a manifest naming libEGL_nvidia.so.0");
   }
   if (validation) {
     using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;

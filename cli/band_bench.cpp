@@ -1,10 +1,12 @@
 #include "band_bench.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "bench/band_bench.hpp"
+#include "bench/denoise_stages.hpp"
 #include "core/log.hpp"
 #include "gpu/gpu_context.hpp"
 #include "lbm/band_reference_solver.hpp"
@@ -16,7 +18,8 @@ namespace {
 nlohmann::json timingJson(const BandStepTiming& t)
 {
   return {{"ms_per_step", t.perStep.msPerStep}, {"best_ms_per_step", t.perStep.bestMsPerStep},
-          {"first_step_ms", t.perStep.firstStepMs}, {"mlups", t.perStep.mlups}, {"stored_mlups", t.storedMlups}};
+          {"first_step_ms", t.perStep.firstStepMs}, {"warmup_steps", t.perStep.warmupSteps}, {"mlups", t.perStep.mlups},
+          {"stored_mlups", t.storedMlups}};
 }
 
 void printTiming(const char* name, const BandStepTiming& t)
@@ -42,6 +45,10 @@ void runBandBench(const CommonOptions& common, const Extent3& extent, const Benc
   log::info("timing the CPU band reference on " + extent.toString() + "...");
   BandReferenceSolver reference(band.field.sharedBricks());
   const BandStepTiming cpu = timeBandSolver(reference, band, settings);
+  // A denoise counts MLUPS on every stored cell: compared with the same.
+  log::info("timing a whole denoise on " + extent.toString() + "...");
+  const nlohmann::json stages = timeDenoiseStages(std::max({extent.nx, extent.ny, extent.nz}), false, compute,
+                                                  vulkan ? vulkan->storedMlups : cpu.storedMlups);
   compute.requireCleanValidation();
 
   const double bytesPerCell = BandVulkanSolver::deviceBytesPerCell(false, false);
@@ -61,7 +68,8 @@ void runBandBench(const CommonOptions& common, const Extent3& extent, const Benc
                    {"vulkan", vulkan ? timingJson(*vulkan) : nlohmann::json(nullptr)},
                    {"reference", timingJson(cpu)},
                    {"vulkan_over_reference",
-                    vulkan ? nlohmann::json(vulkan->perStep.mlups / cpu.perStep.mlups) : nlohmann::json(nullptr)}});
+                    vulkan ? nlohmann::json(vulkan->perStep.mlups / cpu.perStep.mlups) : nlohmann::json(nullptr)},
+                   {"denoise", stages}});
     return;
   }
   std::cout << "device: " << compute.name() << "\n";
@@ -73,6 +81,7 @@ void runBandBench(const CommonOptions& common, const Extent3& extent, const Benc
   if (vulkan) printTiming("vulkan", *vulkan);
   printTiming("reference", cpu);
   if (vulkan) std::printf("  vulkan / reference %.2fx\n", vulkan->perStep.mlups / cpu.perStep.mlups);
+  std::cout << describeDenoiseStages(stages);
 }
 
 }  // namespace lbmshape::cli

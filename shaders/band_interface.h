@@ -40,11 +40,10 @@
 // Specialization constants.
 #define BAND_SPEC_PER_CELL_OMEGA 0
 #define BAND_SPEC_HAS_SOURCE 1
-#define BAND_SPEC_COLLIDE 2
-#define BAND_SPEC_W_REST 3
-#define BAND_SPEC_W_AXIAL 4
-#define BAND_SPEC_W_DIAGONAL 5
-#define BAND_SPEC_PAPER_RULE 6
+#define BAND_SPEC_W_REST 2
+#define BAND_SPEC_W_AXIAL 3
+#define BAND_SPEC_W_DIAGONAL 4
+#define BAND_SPEC_PAPER_RULE 5
 
 // The push constants, as a list of (type, name) for both languages.
 #define BAND_STEP_PARAMETERS(FIELD) \
@@ -57,7 +56,8 @@
   FIELD(int, slotsPerFieldPool)     \
   FIELD(float, omega)               \
   FIELD(float, decay)               \
-  FIELD(float, gamma0)
+  FIELD(float, gamma0)              \
+  FIELD(int, collide) /* 1: a step; 0: the field pass, X to the field buffer */
 
 #define BAND_DECLARE_FIELD(type, name) type name;
 
@@ -66,7 +66,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 10 * 4, "push constants: 10 words");
+static_assert(sizeof(StepParameters) == 11 * 4, "push constants: 11 words");
 }  // namespace lbmshape::band_shader
 #endif
 

@@ -3,8 +3,10 @@
 // One step of the narrow-band lattice in moment form (src/lbm/band_solver.hpp
 // has the scheme; band_reference_solver.cpp is the same arithmetic on the
 // CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
-// J, apply the source, collide and store (rho*, j*). With COLLIDE false it
-// stores X instead: the field of the current state.
+// J, apply the source, collide and store (rho*, j*). With the push constant
+// `collide` 0 it stores X instead: the field of the current state. (A push
+// constant, not a specialization constant: one pipeline serves both, and
+// lavapipe spends about 100 ms compiling each.)
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
@@ -21,7 +23,6 @@
 layout(local_size_x = BAND_WORKGROUP_SIZE) in;
 layout(constant_id = BAND_SPEC_PER_CELL_OMEGA) const bool PER_CELL_OMEGA = false;
 layout(constant_id = BAND_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
-layout(constant_id = BAND_SPEC_COLLIDE) const bool COLLIDE = true;
 layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
 layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
 layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
@@ -130,7 +131,7 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   }
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
-  if (!COLLIDE) {
+  if (p.collide == 0) {
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
     return;

@@ -30,6 +30,7 @@ StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, doub
   Stopwatch first;
   solver.step(1);
   timing.firstStepMs = first.ms();
+  for (Stopwatch warm; warm.ms() < settings.warmupMs; ++timing.warmupSteps) solver.step(1);
 
   std::vector<double> perStep;
   for (int r = 0; r < settings.runs; ++r) {

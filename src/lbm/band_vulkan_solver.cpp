@@ -82,7 +82,7 @@ struct BandVulkanSolver::Resources {
                                                    vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
     descriptorPool = vk::raii::DescriptorPool(
         c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
-    const auto& setLayout = c.program(program(true)).setLayout;
+    const auto& setLayout = c.program(program()).setLayout;
     std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
     sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
     writeDescriptors();
@@ -232,13 +232,13 @@ struct BandVulkanSolver::Resources {
     writeDescriptors();
   }
 
-  gpu::ProgramSpec program(bool collide) const
+  // The step's pipeline, which also makes the field (parameters(true)).
+  gpu::ProgramSpec program() const
   {
     using gpu::specBool, gpu::specFloat;
     return {"band_step", bindings(),
-            {specBool(!omegaPerCell.empty()), specBool(sourceHost.has_value()), specBool(collide),
-             specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight),
-             specBool(paperRuleGamma0.has_value())},
+            {specBool(!omegaPerCell.empty()), specBool(sourceHost.has_value()), specFloat(d3q19::restWeight),
+             specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight), specBool(paperRuleGamma0.has_value())},
             sizeof(band_shader::StepParameters)};
   }
 
@@ -255,6 +255,7 @@ struct BandVulkanSolver::Resources {
     p.omega = uniformOmega;
     p.decay = sourceHost ? sourceHost->decay : 0.0f;
     p.gamma0 = float(paperRuleGamma0.value_or(0.0));
+    p.collide = everySlot ? 0 : 1;
     return p;
   }
 
@@ -399,10 +400,11 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   r_->current = 0;
   r_->steps = 0;
   r_->initial = field;
-  // The step's and field()'s pipelines, compiled in the set-up rather than
-  // during the steps (VulkanSolver::initialize says why).
-  r_->context.program(r_->program(true));
-  r_->context.program(r_->program(false));
+  // The pipeline of the steps and of field(), compiled in the set-up rather
+  // than during the steps (VulkanSolver::initialize says why); the
+  // constructor made it already unless a per-cell gamma, a source or the
+  // paper's rule was chosen since.
+  r_->context.program(r_->program());
 }
 
 void BandVulkanSolver::step(int count)
@@ -415,7 +417,7 @@ void BandVulkanSolver::step(int count)
   // only the far sides of the initial field are still needed.
   if (r_->steps > 0) std::vector<float>().swap(r_->initial.values());
   if (count <= 0) return;
-  auto& program = r_->context.program(r_->program(true));
+  auto& program = r_->context.program(r_->program());
   const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
@@ -468,7 +470,7 @@ BandField BandVulkanSolver::field()
   // (its values, kept until the first real step, are not copied).
   if (r_->steps == 0) return r_->initial;
   BandField out = r_->initial.sameShape();
-  auto& program = r_->context.program(r_->program(false));
+  auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(true));

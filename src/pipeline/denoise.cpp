@@ -313,47 +313,28 @@ GridFrame placeGrid(const Bounds& bounds, const GridOptions& options)
   return frameWithResolution(bounds, options.resolution, options.marginVoxels);
 }
 
-DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
-                          const DenoiseOptions& o, const ComputeDevice& device)
-{
-  checkDenoiseOptions(o);
-  if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps, "--gamma");
-  checkNotTheInput(output, input, o.replaceInput);
-  checkMeshDestination(output, o.compression);
-  if (o.colourByCurvature) requireColourFormat(output, output.string());
-  if (o.preview) checkPreview(*o.preview, device);
-  StageClock clock;
+namespace {
 
-  TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
-  const MeshTopology inputTopology = analyzeTopology(mesh);
+// The smoothing of denoiseMesh, its stages timed into `clock`, and the part
+// of the report that is about the smoothing.
+DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& name, const DenoiseOptions& o,
+                         const ComputeDevice& device, StageClock& clock)
+{
   const GridFrame frame = placeGrid(bounds(mesh), o.grid);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
-
   const bool dense = o.dense || o.noise.amplitude > 0.0;
-  Smoothed smoothed = dense ? smoothOnTheGrid(mesh, frame, input, o, device, clock)
-                            : smoothOnTheBand(mesh, frame, input, o, device, clock);
+  Smoothed smoothed = dense ? smoothOnTheGrid(mesh, frame, name, o, device, clock)
+                            : smoothOnTheBand(mesh, frame, name, o, device, clock);
   TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
                          " steps; use fewer --steps, a smaller --gamma or a finer --res");
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
-  clock.time("write", [&] { writeMesh(result, output, EmptyMesh::Refused, o.compression); });
-  device.requireCleanValidation();
-  if (o.preview)
-    clock.time("preview", [&] {
-      writePreview({{&mesh, "input: " + input.filename().string()}, {&result, "output: " + output.filename().string()}},
-                   render::parseView("front"), *o.preview, device);
-    });
-
-  const MeshTopology outputTopology = analyzeTopology(result);
-  const double lbmMs = clock.ms("lbm");
   if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps, "--gamma");
+  const double lbmMs = clock.ms("lbm");
   const double updates = double(smoothed.cells) * smoothed.stepsRun;
   nlohmann::json report = {
-      {"command", "denoise"},
-      {"input", meshSummary(mesh, inputTopology)},
-      {"output", meshSummary(result, outputTopology)},
       {"grid", {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}},
                 {"voxel", frame.voxel},
                 {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
@@ -367,16 +348,66 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
       {"volume_shift_voxels", smoothed.volumeShift},
       {"noise", o.noise.amplitude},
       {"lattice", smoothed.lattice},
-      {"ms", clock.toJson()},
       {"mlups", lbmMs > 0 && smoothed.stepsRun > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
-      {"volume_change", inputTopology.closedManifold && inputTopology.signedVolume != 0
-                            ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
-                            : nlohmann::json(nullptr)}};
+      {"curvature_scale", curvatureScale ? nlohmann::json(*curvatureScale) : nlohmann::json(nullptr)}};
+  return {std::move(result), std::move(report)};
+}
+
+void warnIfFewGivenSteps(const DenoiseOptions& o)
+{
+  if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps, "--gamma");
+}
+
+}  // namespace
+
+DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
+                          const ComputeDevice& device)
+{
+  checkDenoiseOptions(o);
+  warnIfFewGivenSteps(o);
+  StageClock clock;
+  DenoiseResult smoothed = smoothMesh(mesh, name, o, device, clock);
+  device.requireCleanValidation();
+  smoothed.report["ms"] = clock.toJson();
+  return smoothed;
+}
+
+DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
+                          const DenoiseOptions& o, const ComputeDevice& device)
+{
+  checkDenoiseOptions(o);
+  warnIfFewGivenSteps(o);
+  checkNotTheInput(output, input, o.replaceInput);
+  checkMeshDestination(output, o.compression);
+  if (o.colourByCurvature) requireColourFormat(output, output.string());
+  if (o.preview) checkPreview(*o.preview, device);
+  StageClock clock;
+
+  const TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
+  const MeshTopology inputTopology = analyzeTopology(mesh);
+  DenoiseResult smoothed = smoothMesh(mesh, input, o, device, clock);
+  const TriangleMesh& result = smoothed.mesh;
+  clock.time("write", [&] { writeMesh(result, output, EmptyMesh::Refused, o.compression); });
+  device.requireCleanValidation();
+  if (o.preview)
+    clock.time("preview", [&] {
+      writePreview({{&mesh, "input: " + input.filename().string()}, {&result, "output: " + output.filename().string()}},
+                   render::parseView("front"), *o.preview, device);
+    });
+
+  const MeshTopology outputTopology = analyzeTopology(result);
+  nlohmann::json& report = smoothed.report;
+  report["command"] = "denoise";
+  report["input"] = meshSummary(mesh, inputTopology);
+  report["output"] = meshSummary(result, outputTopology);
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
-  report["curvature_scale"] = curvatureScale ? nlohmann::json(*curvatureScale) : nlohmann::json(nullptr);
+  report["ms"] = clock.toJson();
+  report["volume_change"] = inputTopology.closedManifold && inputTopology.signedVolume != 0
+                                ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
+                                : nlohmann::json(nullptr);
   report["preview"] = o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr);
-  return {std::move(result), std::move(report)};
+  return smoothed;
 }
 
 }  // namespace lbmshape

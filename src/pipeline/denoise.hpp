@@ -79,8 +79,19 @@ void reportCurvatureColours(double scale, const std::string& whose);
 // The grid for a mesh.
 GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);
 
-// Reads `input`, smooths it, and writes `output` (format by extension). The
-// output path is checked first, so a bad extension or folder costs nothing.
+// Smooths a mesh in memory: the grid around it, its signed distance, the
+// lattice, marching cubes (and the curvature colours if asked; the options
+// about files, compression and --preview have no effect here). `name` names
+// the mesh in errors. The report: grid, device, gamma, steps, steps_chosen,
+// steps_run, smoothing, keep_volume, volume_shift_voxels, noise, lattice,
+// mlups, curvature_scale and ms (sdf, setup, lbm, extract, total).
+DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& options,
+                          const ComputeDevice& device);
+
+// Reads `input`, smooths it as denoiseMesh does, and writes `output` (format
+// by extension). The output path is checked first, so a bad extension or
+// folder costs nothing. The report adds the input and output meshes' figures
+// and paths, volume_change, preview, and the read and write stages.
 DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
                           const DenoiseOptions& options, const ComputeDevice& device);
 

@@ -1,5 +1,6 @@
 // The --json results that scripts rely on: one object on stdout, with the
 // keys the documentation promises, and values that make sense together.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -40,6 +41,22 @@ std::string selectedDeviceName()
   return "";
 }
 
+// The whole denoise a bench times beside its lattice, on the grid of the
+// bench's longest side, and its figures against the bench's own.
+void expectDenoiseStages(const nlohmann::json& stages, int res, const char* kind, double benchMlups)
+{
+  EXPECT_EQ(stages["res"], res);
+  EXPECT_EQ(stages["lattice"]["kind"], kind);
+  const auto& ms = stages["ms"];
+  for (const char* stage : {"sdf", "setup", "lbm", "extract"}) EXPECT_GE(ms[stage].get<double>(), 0.0) << stage;
+  EXPECT_GE(stages["steps_run"].get<int>(), 2) << "the automatic steps, on a noisy sphere";
+  const double share = stages["lattice_share"];
+  EXPECT_NEAR(share, ms["lbm"].get<double>() / ms["total"].get<double>(), 1e-9);
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  EXPECT_NEAR(stages["mlups_over_bench"].get<double>(), stages["mlups"].get<double>() / benchMlups, 1e-9);
+}
+
 TEST(JsonResults, BenchReportsConsistentFigures)
 {
   auto j = parseStdout(testing::runLbmshape({"bench", "--json", "--size", "24,20,16", "--steps", "5", "--runs", "2"}));
@@ -58,7 +75,17 @@ TEST(JsonResults, BenchReportsConsistentFigures)
   EXPECT_NEAR(j["vulkan_over_reference"].get<double>(),
               j["vulkan"]["mlups"].get<double>() / j["reference"]["mlups"].get<double>(), 1e-9);
   EXPECT_GT(j["roofline_fraction"].get<double>(), 0.0);
+  EXPECT_LE(j["roofline_fraction"].get<double>(), 1.0);
   EXPECT_GT(j["memory_bandwidth"]["gbps"].get<double>(), 0.1);
+  // The roofline is the measured bandwidth's, or the lattice's own where higher.
+  EXPECT_NEAR(j["roofline_mlups"].get<double>(),
+              std::max(j["memory_bandwidth"]["gbps"].get<double>(), j["vulkan"]["gbps"].get<double>()) / 152e-3,
+              1e-6 * j["roofline_mlups"].get<double>());
+  // Half a second of untimed steps before the runs (24x20x16 takes far less
+  // than that a step).
+  EXPECT_GE(j["vulkan"]["warmup_steps"].get<int>(), 1);
+  EXPECT_GE(j["reference"]["warmup_steps"].get<int>(), 1);
+  expectDenoiseStages(j["denoise"], 24, "grid", j["vulkan"]["mlups"].get<double>());
 }
 
 TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
@@ -84,6 +111,7 @@ TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
   }
   EXPECT_NEAR(j["vulkan_over_reference"].get<double>(),
               j["vulkan"]["mlups"].get<double>() / j["reference"]["mlups"].get<double>(), 1e-9);
+  expectDenoiseStages(j["denoise"], 48, "band", j["vulkan"]["stored_mlups"].get<double>());
 
   auto narrow = parseStdout(
       testing::runLbmshape({"bench", "--band", "--half-width", "2", "--json", "--size", "48,40,40", "--steps", "1", "--runs", "1"}));

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "mesh/icosphere.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace lbmshape::testing {
@@ -14,7 +15,7 @@ TriangleMesh box(const glm::dvec3& lo, const glm::dvec3& hi);
 // Corners (0,0,0), (1,0,0), (0,1,0), (0,0,1); outward triangles.
 TriangleMesh tetrahedron();
 // An icosahedron split `subdivisions` times (20 * 4^n triangles), vertices on the sphere; outward.
-TriangleMesh icosphere(int subdivisions, double radius = 1.0, glm::dvec3 centre = glm::dvec3(0.0));
+using lbmshape::icosphere;
 // A torus around z: `rings` steps around the axis, `sides` around the tube; outward.
 TriangleMesh torusMesh(double R, double r, int rings, int sides);
 // An open sheet: an n x n grid of quads over (u, v) in [0, 1]^2, two

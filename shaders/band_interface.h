@@ -38,12 +38,9 @@
 #define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule
 
 // Specialization constants.
-#define BAND_SPEC_PER_CELL_OMEGA 0
-#define BAND_SPEC_HAS_SOURCE 1
-#define BAND_SPEC_W_REST 2
-#define BAND_SPEC_W_AXIAL 3
-#define BAND_SPEC_W_DIAGONAL 4
-#define BAND_SPEC_PAPER_RULE 5
+#define BAND_SPEC_W_REST 0
+#define BAND_SPEC_W_AXIAL 1
+#define BAND_SPEC_W_DIAGONAL 2
 
 // The push constants, as a list of (type, name) for both languages.
 #define BAND_STEP_PARAMETERS(FIELD) \
@@ -57,7 +54,10 @@
   FIELD(float, omega)               \
   FIELD(float, decay)               \
   FIELD(float, gamma0)              \
-  FIELD(int, collide) /* 1: a step; 0: the field pass, X to the field buffer */
+  FIELD(int, collide) /* 1: a step; 0: the field pass, X to the field buffer */ \
+  FIELD(int, perCellOmega) /* 1: omega from the omega buffer */                  \
+  FIELD(int, hasSource)    /* 1: the morph's source term */                       \
+  FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */
 
 #define BAND_DECLARE_FIELD(type, name) type name;
 
@@ -66,7 +66,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 11 * 4, "push constants: 11 words");
+static_assert(sizeof(StepParameters) == 14 * 4, "push constants: 14 words");
 }  // namespace lbmshape::band_shader
 #endif
 

@@ -4,9 +4,7 @@
 // has the scheme; band_reference_solver.cpp is the same arithmetic on the
 // CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
 // J, apply the source, collide and store (rho*, j*). With the push constant
-// `collide` 0 it stores X instead: the field of the current state. (A push
-// constant, not a specialization constant: one pipeline serves both, and
-// lavapipe spends about 100 ms compiling each.)
+// `collide` 0 it stores X instead: the field of the current state.
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
@@ -21,14 +19,17 @@
 #include "band_interface.h"
 
 layout(local_size_x = BAND_WORKGROUP_SIZE) in;
-layout(constant_id = BAND_SPEC_PER_CELL_OMEGA) const bool PER_CELL_OMEGA = false;
-layout(constant_id = BAND_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
 layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
 layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
 layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
-layout(constant_id = BAND_SPEC_PAPER_RULE) const bool PAPER_RULE = false;
 
 layout(push_constant) uniform Parameters { BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD) } p;
+// The variants are push constants, not specialization constants: one
+// pipeline serves every kind of step and the field pass (lavapipe spends
+// about 100 ms compiling each pipeline), at the cost of uniform branches.
+#define PER_CELL_OMEGA (p.perCellOmega != 0)
+#define HAS_SOURCE (p.hasSource != 0)
+#define PAPER_RULE (p.paperRule != 0)
 
 layout(set = 0, binding = BAND_BINDING_MOMENTS) uniform samplerBuffer moments;
 layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBits;

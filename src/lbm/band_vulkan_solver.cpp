@@ -232,13 +232,13 @@ struct BandVulkanSolver::Resources {
     writeDescriptors();
   }
 
-  // The step's pipeline, which also makes the field (parameters(true)).
+  // The one pipeline of every kind of step and of the field pass: what
+  // differs between them is in the push constants (parameters()).
   gpu::ProgramSpec program() const
   {
-    using gpu::specBool, gpu::specFloat;
+    using gpu::specFloat;
     return {"band_step", bindings(),
-            {specBool(!omegaPerCell.empty()), specBool(sourceHost.has_value()), specFloat(d3q19::restWeight),
-             specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight), specBool(paperRuleGamma0.has_value())},
+            {specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
             sizeof(band_shader::StepParameters)};
   }
 
@@ -256,6 +256,9 @@ struct BandVulkanSolver::Resources {
     p.decay = sourceHost ? sourceHost->decay : 0.0f;
     p.gamma0 = float(paperRuleGamma0.value_or(0.0));
     p.collide = everySlot ? 0 : 1;
+    p.perCellOmega = omegaPerCell.empty() ? 0 : 1;
+    p.hasSource = sourceHost ? 1 : 0;
+    p.paperRule = paperRuleGamma0 ? 1 : 0;
     return p;
   }
 
@@ -400,11 +403,6 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   r_->current = 0;
   r_->steps = 0;
   r_->initial = field;
-  // The pipeline of the steps and of field(), compiled in the set-up rather
-  // than during the steps (VulkanSolver::initialize says why); the
-  // constructor made it already unless a per-cell gamma, a source or the
-  // paper's rule was chosen since.
-  r_->context.program(r_->program());
 }
 
 void BandVulkanSolver::step(int count)

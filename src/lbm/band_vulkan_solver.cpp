@@ -281,6 +281,19 @@ BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<con
   std::vector<glm::ivec4> origins(b.activeCount());
   for (size_t s = 0; s < origins.size(); ++s) origins[s] = glm::ivec4(brickEdge * b.brick(int32_t(s)), 0);
   r_->upload(origins.data(), origins.size() * 16, r_->origins);
+  // Lavapipe turns a pipeline into machine code at its first dispatch (some
+  // 250 ms on the 2-core host, where pipeline creation took 100): one
+  // dispatch of no work here puts that in the set-up, where a real GPU's
+  // driver compiles, rather than in the first step.
+  auto& program = context.program(r_->program());
+  band_shader::StepParameters idle = r_->parameters(false);
+  idle.works = 0;
+  context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, idle);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->sets[0], {});
+    cmd.dispatch(1, 1, 1);
+  });
 }
 
 BandVulkanSolver::~BandVulkanSolver() = default;

@@ -11,6 +11,7 @@
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_validation.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
@@ -365,8 +366,12 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
 {
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
+  // What readMesh checks of a file, for a mesh that comes from a program:
+  // indices in range, finite coordinates, a surface that is not flat.
+  TriangleMesh checked = mesh;
+  validateInputMesh(checked, name);
   StageClock clock;
-  DenoiseResult smoothed = smoothMesh(mesh, name, o, device, clock);
+  DenoiseResult smoothed = smoothMesh(checked, name, o, device, clock);
   device.requireCleanValidation();
   smoothed.report["ms"] = clock.toJson();
   return smoothed;

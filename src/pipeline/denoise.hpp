@@ -82,7 +82,8 @@ GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);
 // Smooths a mesh in memory: the grid around it, its signed distance, the
 // lattice, marching cubes (and the curvature colours if asked; the options
 // about files, compression and --preview have no effect here). `name` names
-// the mesh in errors. The report: grid, device, gamma, steps, steps_chosen,
+// the mesh in errors; the mesh is checked as a file's is (InputError for an
+// index out of range, a coordinate that is not finite, a flat surface). The report: grid, device, gamma, steps, steps_chosen,
 // steps_run, smoothing, keep_volume, volume_shift_voxels, noise, lattice,
 // mlups, curvature_scale and ms (sdf, setup, lbm, extract, total).
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& options,

@@ -1,0 +1,40 @@
+# `cmake --install build [--prefix DIR]`: the lbmshape binary, liblbmshape.so
+# with its headers under include/lbmshape, a CMake package
+# (find_package(lbmshape), target lbmshape::lbmshape) and a pkg-config file.
+# examples/denoise_in_memory builds against the result (tests/install/).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in ${PROJECT_BINARY_DIR}/include/lbmshape/version.hpp @ONLY)
+target_include_directories(lbmshape_shared INTERFACE "$<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>")
+
+if(LBMSHAPE_COMMAND_LINE)
+  install(TARGETS lbmshape RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+install(TARGETS lbmshape_shared EXPORT lbmshapeTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/include/lbmshape/lbmshape.hpp ${PROJECT_BINARY_DIR}/include/lbmshape/version.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape)
+# The API's headers include the library's own by their path under src/, and
+# the lattice's few constants shared with the shaders (shaders/*.h).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape
+        FILES_MATCHING PATTERN "*.hpp")
+file(GLOB shader_headers ${PROJECT_SOURCE_DIR}/shaders/*.h)
+install(FILES ${shader_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape)
+
+set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lbmshape)
+install(EXPORT lbmshapeTargets NAMESPACE lbmshape:: DESTINATION ${package_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lbmshapeConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/lbmshapeConfig.cmake INSTALL_DESTINATION ${package_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/lbmshapeConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/lbmshapeConfig.cmake ${PROJECT_BINARY_DIR}/lbmshapeConfigVersion.cmake
+        DESTINATION ${package_dir})
+
+# pkg-config lbmshape. The prefix is the one configured (CMAKE_INSTALL_PREFIX);
+# an install elsewhere with --prefix is rewritten at install time.
+configure_file(${PROJECT_SOURCE_DIR}/cmake/lbmshape.pc.in ${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured @ONLY)
+install(CODE "
+  file(READ \"${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured\" pc)
+  string(REPLACE \"prefix=${CMAKE_INSTALL_PREFIX}\" \"prefix=\${CMAKE_INSTALL_PREFIX}\" pc \"\${pc}\")
+  file(WRITE \"${PROJECT_BINARY_DIR}/lbmshape.pc\" \"\${pc}\")")
+install(FILES ${PROJECT_BINARY_DIR}/lbmshape.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,27 @@
+// lbmshape as a library: the public API, for programs that link
+// liblbmshape (find_package(lbmshape) and the target lbmshape::lbmshape, or
+// pkg-config lbmshape). Everything works on meshes in memory; the files are
+// optional.
+//
+//   lbmshape::ComputeDevice device("", false);   // the best Vulkan device, no validation
+//   lbmshape::DenoiseOptions options;            // the command line's defaults
+//   options.grid.resolution = 128;
+//   lbmshape::DenoiseResult r = lbmshape::denoiseMesh(mesh, "my scan", options, device);
+//   // r.mesh: the smoothed surface; r.report: the figures `denoise --json` prints
+//
+// Errors are exceptions derived from lbmshape::Error (core/error.hpp):
+// UsageError (a parameter out of range), InputError (a mesh that cannot be
+// read or encloses nothing), OutputError, DeviceError, NumericalError.
+#pragma once
+
+#include "core/error.hpp"
+#include "library_version.hpp"
+#include "lbmshape/version.hpp"
+#include "mesh/icosphere.hpp"
+#include "mesh/mesh_noise.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "pipeline/compute_device.hpp"
+#include "pipeline/denoise.hpp"
+#include "pipeline/morph.hpp"

@@ -1,0 +1,175 @@
+// lbmshape for Python (pybind11): meshes as numpy arrays in and out.
+//
+//   import lbmshape
+//   V2, F2 = lbmshape.denoise(V, F, res=128)      # V: (n, 3) floats, F: (m, 3) ints
+//   V2, F2, report = lbmshape.denoise(V, F, res=128, report=True)
+//   V, F = lbmshape.read_mesh("scan.ply"); lbmshape.write_mesh("out.glb", V2, F2)
+//
+// The Vulkan device is opened at the first call and kept (lbmshape.Device
+// chooses another); the GIL is released while the device works, so other
+// Python threads run. Errors: lbmshape.UsageError (a ValueError: a parameter
+// out of range), lbmshape.InputError (a ValueError: a mesh that is unusable),
+// lbmshape.OutputError (an OSError), lbmshape.DeviceError (a RuntimeError),
+// all from lbmshape.Error.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "core/error.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/compute_device.hpp"
+#include "pipeline/denoise.hpp"
+
+namespace py = pybind11;
+
+namespace lbmshape::python {
+namespace {
+
+using Vertices = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast>;
+
+// The mesh of two arrays, checked for shape and index range here (the rest,
+// finite coordinates and a surface that is not flat, denoiseMesh checks).
+TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles)
+{
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3)
+    throw UsageError("vertices must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
+                     (vertices.ndim() == 2 ? " with " + std::to_string(vertices.shape(1)) + " columns" : std::string()));
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3)
+    throw UsageError("triangles must be an array of shape (m, 3) of vertex indices");
+  TriangleMesh mesh;
+  const auto v = vertices.unchecked<2>();
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) mesh.positions.push_back({v(i, 0), v(i, 1), v(i, 2)});
+  const auto t = triangles.unchecked<2>();
+  for (py::ssize_t i = 0; i < t.shape(0); ++i) {
+    for (int k = 0; k < 3; ++k)
+      if (t(i, k) < 0 || t(i, k) >= v.shape(0))
+        throw UsageError("triangles[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) + ", but there are " +
+                         std::to_string(v.shape(0)) + " vertices");
+    mesh.triangles.push_back({uint32_t(t(i, 0)), uint32_t(t(i, 1)), uint32_t(t(i, 2))});
+  }
+  return mesh;
+}
+
+py::tuple toArrays(const TriangleMesh& mesh)
+{
+  Vertices vertices({py::ssize_t(mesh.positions.size()), py::ssize_t(3)});
+  auto v = vertices.mutable_unchecked<2>();
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) v(py::ssize_t(i), k) = mesh.positions[i][k];
+  Triangles triangles({py::ssize_t(mesh.triangles.size()), py::ssize_t(3)});
+  auto t = triangles.mutable_unchecked<2>();
+  for (size_t i = 0; i < mesh.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) t(py::ssize_t(i), k) = mesh.triangles[i][k];
+  return py::make_tuple(vertices, triangles);
+}
+
+// The device the functions use unless given one: opened at first use.
+std::shared_ptr<ComputeDevice>& defaultDevice()
+{
+  static std::shared_ptr<ComputeDevice> device;
+  if (!device) device = std::make_shared<ComputeDevice>("", false);
+  return device;
+}
+
+Smoothing smoothingNamed(const std::string& name)
+{
+  if (name == "isotropic") return Smoothing::Isotropic;
+  if (name == "anisotropic") return Smoothing::Anisotropic;
+  if (name == "preserve-features") return Smoothing::PreserveFeatures;
+  throw UsageError("smoothing must be 'isotropic', 'anisotropic' or 'preserve-features', not '" + name + "'");
+}
+
+py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps, double gamma,
+                   const std::string& smoothing, bool keepVolume, bool dense, std::shared_ptr<ComputeDevice> device,
+                   bool report)
+{
+  DenoiseOptions options;
+  options.grid.resolution = res;
+  options.steps = steps;
+  options.gamma = gamma;
+  options.smoothing = smoothingNamed(smoothing);
+  options.keepVolume = keepVolume;
+  options.dense = dense;
+  const TriangleMesh mesh = toMesh(vertices, triangles);
+  if (!device) device = defaultDevice();
+  std::optional<DenoiseResult> result;
+  {
+    py::gil_scoped_release released;
+    result = denoiseMesh(mesh, "the vertices and triangles", options, *device);
+  }
+  py::tuple arrays = toArrays(result->mesh);
+  if (!report) return arrays;
+  py::object figures = py::module_::import("json").attr("loads")(result->report.dump());
+  return py::make_tuple(arrays[0], arrays[1], figures);
+}
+
+}  // namespace
+}  // namespace lbmshape::python
+
+PYBIND11_MODULE(lbmshape, m)
+{
+  using namespace lbmshape;
+  using namespace lbmshape::python;
+  m.doc() = "Surface denoising with a lattice Boltzmann scheme on Vulkan (lbmshape)";
+  m.attr("__version__") = LBMSHAPE_VERSION;
+
+  static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<UsageError> usage(m, "UsageError", PyExc_ValueError);
+  static py::exception<InputError> input(m, "InputError", PyExc_ValueError);
+  static py::exception<OutputError> output(m, "OutputError", PyExc_OSError);
+  static py::exception<DeviceError> device(m, "DeviceError", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const UsageError& e) {
+      PyErr_SetString(usage.ptr(), e.what());
+    } catch (const InputError& e) {
+      PyErr_SetString(input.ptr(), e.what());
+    } catch (const OutputError& e) {
+      PyErr_SetString(output.ptr(), e.what());
+    } catch (const DeviceError& e) {
+      PyErr_SetString(device.ptr(), e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    }
+  });
+
+  py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(m, "Device",
+                                                            "A Vulkan device, or the CPU reference solver ('reference')")
+      .def(py::init<const std::string&, bool>(), py::arg("name") = "", py::arg("validation") = false,
+           "name: empty for the best device, an index, part of a device's name, or 'reference'")
+      .def_property_readonly("name", &ComputeDevice::name);
+
+  m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
+        py::arg("steps") = py::none(), py::arg("gamma") = 0.2, py::arg("smoothing") = "isotropic",
+        py::arg("keep_volume") = true, py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
+        "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
+        "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");
+  m.def(
+      "read_mesh",
+      [](const std::filesystem::path& path) {
+        TriangleMesh mesh;
+        {
+          py::gil_scoped_release released;
+          mesh = readMesh(path);
+        }
+        return toArrays(mesh);
+      },
+      py::arg("path"), "Read an OBJ, PLY, OFF, STL, glTF or GLB file: (vertices, triangles)");
+  m.def(
+      "write_mesh",
+      [](const std::filesystem::path& path, const Vertices& vertices, const Triangles& triangles) {
+        const TriangleMesh mesh = toMesh(vertices, triangles);
+        py::gil_scoped_release released;
+        writeMesh(mesh, path);
+      },
+      py::arg("path"), py::arg("vertices"), py::arg("triangles"),
+      "Write a mesh; the format follows the extension (.obj, .ply, .off, .stl, .gltf, .glb)");
+}

@@ -1,0 +1,117 @@
+"""The Python module on numpy arrays: a noisy sphere smoothed in memory, its
+report, files read and written, errors as exceptions that name what is
+wrong, and the GIL released while the device works."""
+import os
+import tempfile
+import threading
+import unittest
+
+import numpy as np
+
+import lbmshape
+
+
+def icosphere(subdivisions=4):
+    """A unit icosphere, outward: (vertices, triangles)."""
+    t = (1 + 5 ** 0.5) / 2
+    v = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+         (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    f = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+         (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+         (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    v = [np.array(p, float) / np.linalg.norm(p) for p in v]
+    for _ in range(subdivisions):
+        middle, finer = {}, []
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                m = v[a] + v[b]
+                v.append(m / np.linalg.norm(m))
+                middle[key] = len(v) - 1
+            return middle[key]
+
+        for a, b, c in f:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            finer += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+        f = finer
+    return np.array(v), np.array(f, dtype=np.int64)
+
+
+def noisy_sphere():
+    v, f = icosphere()
+    rng = np.random.default_rng(5)
+    return v * (1 + 0.02 * rng.standard_normal((len(v), 1))), f
+
+
+def closed(f):
+    """Every edge in exactly two triangles."""
+    edges = np.sort(np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(np.all(counts == 2))
+
+
+class Denoise(unittest.TestCase):
+    def test_a_noisy_sphere_comes_back_closed_and_rounder(self):
+        v, f = noisy_sphere()
+        v2, f2 = lbmshape.denoise(v, f, res=48)
+        self.assertEqual(v2.shape[1], 3)
+        self.assertEqual(f2.shape[1], 3)
+        self.assertGreater(len(f2), 1000)
+        self.assertTrue(closed(f2))
+        before = np.abs(np.linalg.norm(v, axis=1) - 1).max()
+        after = np.abs(np.linalg.norm(v2, axis=1) - 1).max()
+        self.assertLess(after, before)
+
+    def test_the_report_is_denoise_json(self):
+        v, f = noisy_sphere()
+        v2, f2, report = lbmshape.denoise(v, f, res=40, steps=3, report=True)
+        self.assertEqual(report["steps"], 3)
+        self.assertEqual(report["steps_chosen"], "given")
+        self.assertEqual(report["grid"]["size"], [40, 40, 40])
+        self.assertIn("lbm", report["ms"])
+
+    def test_bad_arrays_and_parameters_name_what_is_wrong(self):
+        v, f = noisy_sphere()
+        with self.assertRaisesRegex(lbmshape.UsageError, "vertices must be an array of shape"):
+            lbmshape.denoise(v[:, :2], f)
+        with self.assertRaisesRegex(ValueError, r"triangles\[0\] has index"):
+            lbmshape.denoise(v, f + len(v))
+        with self.assertRaisesRegex(ValueError, "gamma"):
+            lbmshape.denoise(v, f, gamma=-1)
+        with self.assertRaisesRegex(ValueError, "smoothing must be"):
+            lbmshape.denoise(v, f, smoothing="gentle")
+        flat = v.copy()
+        flat[:, 2] = 0
+        with self.assertRaises(lbmshape.InputError):
+            lbmshape.denoise(flat, f)
+
+    def test_other_python_threads_run_while_the_device_works(self):
+        v, f = noisy_sphere()
+        ticks, done = [0], threading.Event()
+        worker = threading.Thread(target=lambda: (lbmshape.denoise(v, f, res=64, steps=7), done.set()))
+        worker.start()
+        while not done.is_set():
+            ticks[0] += 1
+        worker.join()
+        self.assertGreater(ticks[0], 1000, "the main thread was held while the device worked")
+
+
+class Files(unittest.TestCase):
+    def test_a_mesh_written_reads_back(self):
+        v, f = icosphere(2)
+        with tempfile.TemporaryDirectory() as folder:
+            for name in ("s.obj", "s.ply", "s.glb"):
+                path = os.path.join(folder, name)
+                lbmshape.write_mesh(path, v, f)
+                v2, f2 = lbmshape.read_mesh(path)
+                self.assertEqual(f2.shape, f.shape, name)
+                self.assertLess(np.abs(v2 - v).max(), 1e-6, name)
+
+    def test_a_missing_file_is_an_input_error(self):
+        with self.assertRaisesRegex(lbmshape.InputError, "no_such.obj"):
+            lbmshape.read_mesh("/no/such/folder/no_such.obj")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,7 @@
+#include "library_version.hpp"
+
+namespace lbmshape {
+
+const char* libraryVersion() { return LBMSHAPE_VERSION; }
+
+}  // namespace lbmshape

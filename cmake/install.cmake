@@ -1,6 +1,7 @@
-# `cmake --install build [--prefix DIR]`: the lbmshape binary, liblbmshape.so
-# with its headers under include/lbmshape, a CMake package
-# (find_package(lbmshape), target lbmshape::lbmshape) and a pkg-config file.
+# `cmake --install build [--prefix DIR]`: the lbmshape binary with its man
+# page and bash completion, liblbmshape.so with its headers under
+# include/lbmshape, a CMake package (find_package(lbmshape), target
+# lbmshape::lbmshape) and a pkg-config file.
 # examples/denoise_in_memory builds against the result (tests/install/).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -10,6 +11,21 @@ target_include_directories(lbmshape_shared INTERFACE "$<BUILD_INTERFACE:${PROJEC
 
 if(LBMSHAPE_COMMAND_LINE)
   install(TARGETS lbmshape RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # Bash completion (zsh through bashcompinit), reading the binary's --help.
+  install(FILES ${PROJECT_SOURCE_DIR}/completion/lbmshape.bash
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME lbmshape)
+  # The man page, from the binary's --help (help2man; Debian: help2man).
+  find_program(HELP2MAN help2man)
+  if(HELP2MAN)
+    add_custom_command(OUTPUT ${PROJECT_BINARY_DIR}/lbmshape.1
+                       COMMAND ${PROJECT_SOURCE_DIR}/scripts/make-man-page.sh $<TARGET_FILE:lbmshape> ${PROJECT_BINARY_DIR}/lbmshape.1
+                       DEPENDS lbmshape ${PROJECT_SOURCE_DIR}/scripts/make-man-page.sh
+                       COMMENT "Writing the man page lbmshape(1)" VERBATIM)
+    add_custom_target(man_page ALL DEPENDS ${PROJECT_BINARY_DIR}/lbmshape.1)
+    install(FILES ${PROJECT_BINARY_DIR}/lbmshape.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  else()
+    message(STATUS "help2man not found: no man page (on Debian: apt-get install help2man)")
+  endif()
 endif()
 install(TARGETS lbmshape_shared EXPORT lbmshapeTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

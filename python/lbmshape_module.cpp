@@ -4,6 +4,8 @@
 //   V2, F2 = lbmshape.denoise(V, F, res=128)      # V: (n, 3) floats, F: (m, 3) ints
 //   V2, F2, report = lbmshape.denoise(V, F, res=128, report=True)
 //   V, F = lbmshape.read_mesh("scan.ply"); lbmshape.write_mesh("out.glb", V2, F2)
+//   frames = lbmshape.morph(V, F, V2, F2, frames=24)  # [(vertices, triangles), ...]
+//   lbmshape.morph(V, F, V2, F2, on_frame=lambda k, v, f: ...)  # each as it is made
 //
 // The Vulkan device is opened at the first call and kept (lbmshape.Device
 // chooses another); the GIL is released while the device works, so other
@@ -25,6 +27,7 @@
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/compute_device.hpp"
 #include "pipeline/denoise.hpp"
+#include "pipeline/morph.hpp"
 
 namespace py = pybind11;
 
@@ -110,6 +113,58 @@ py::object denoise(const Vertices& vertices, const Triangles& triangles, int res
   return py::make_tuple(arrays[0], arrays[1], figures);
 }
 
+Alignment alignmentNamed(const std::string& name)
+{
+  if (name == "none") return Alignment::None;
+  if (name == "center") return Alignment::Center;
+  if (name == "fit") return Alignment::Fit;
+  throw UsageError("align must be 'none', 'center' or 'fit', not '" + name + "'");
+}
+
+// The morph's frames, each handed to `onFrame(index, vertices, triangles)`
+// as the frame writer's thread makes it (with the GIL taken for the call),
+// or gathered into a list. An exception the callback raises stops the morph
+// and is raised again, as RuntimeError, with its message.
+py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangles, const Vertices& targetVertices,
+                 const Triangles& targetTriangles, int frames, int res, std::optional<int> steps, double cs, double gamma,
+                 const std::string& align, bool band, std::shared_ptr<ComputeDevice> device, py::object onFrame,
+                 bool report)
+{
+  MorphOptions options;
+  options.frames = frames;
+  options.grid.resolution = res;
+  options.steps = steps;
+  options.cs = cs;
+  options.gamma = gamma;
+  options.align = alignmentNamed(align);
+  options.band = band;
+  const TriangleMesh source = toMesh(sourceVertices, sourceTriangles), target = toMesh(targetVertices, targetTriangles);
+  if (!device) device = defaultDevice();
+  py::list gathered;
+  const FrameSink sink = [&](int index, const TriangleMesh& mesh) {
+    py::gil_scoped_acquire held;
+    std::string failure;
+    try {
+      py::tuple arrays = toArrays(mesh);
+      if (onFrame.is_none())
+        gathered.append(arrays);
+      else
+        onFrame(index, arrays[0], arrays[1]);
+    } catch (py::error_already_set& e) {
+      failure = e.what();  // read while the GIL is held; the C++ side gets a plain error
+    }
+    if (!failure.empty()) throw std::runtime_error("the on_frame callback raised: " + failure);
+  };
+  nlohmann::json figures;
+  {
+    py::gil_scoped_release released;
+    figures = morphMeshes(source, target, options, *device, sink);
+  }
+  py::object result = onFrame.is_none() ? py::object(gathered) : py::object(py::none());
+  if (!report) return result;
+  return py::make_tuple(result, py::module_::import("json").attr("loads")(figures.dump()));
+}
+
 }  // namespace
 }  // namespace lbmshape::python
 
@@ -152,6 +207,13 @@ PYBIND11_MODULE(lbmshape, m)
         py::arg("keep_volume") = true, py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
         "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
         "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");
+  m.def("morph", &morph, py::arg("source_vertices"), py::arg("source_triangles"), py::arg("target_vertices"),
+        py::arg("target_triangles"), py::arg("frames") = 48, py::arg("res") = 128, py::arg("steps") = py::none(),
+        py::arg("cs") = 0.1, py::arg("gamma") = 0.05, py::arg("align") = "fit", py::arg("band") = false,
+        py::arg("device") = nullptr, py::arg("on_frame") = py::none(), py::arg("report") = false,
+        "Morph one closed mesh into another, as `lbmshape morph` with the same defaults: a list of `frames` "
+        "(vertices, triangles) pairs, or each passed to on_frame(index, vertices, triangles) as it is made (then "
+        "None); with report=True also the figures `morph --json` prints, as a dict.");
   m.def(
       "read_mesh",
       [](const std::filesystem::path& path) {

@@ -9,7 +9,7 @@ packages=(
   glslang-tools glslang-dev
   libglm-dev libtinygltf-dev libstb-dev libopenmesh-dev libmeshoptimizer-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
-  pybind11-dev python3-dev python3-numpy
+  pybind11-dev python3-dev python3-numpy help2man
 )
 # The Khronos glTF-Validator runs on Node. A machine may already have Node
 # with its own npm from elsewhere (then Debian's npm package conflicts), so

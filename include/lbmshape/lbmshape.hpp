@@ -8,6 +8,8 @@
 //   options.grid.resolution = 128;
 //   lbmshape::DenoiseResult r = lbmshape::denoiseMesh(mesh, "my scan", options, device);
 //   // r.mesh: the smoothed surface; r.report: the figures `denoise --json` prints
+//   lbmshape::morphMeshes(source, target, lbmshape::MorphOptions{}, device,
+//                         [](int k, const lbmshape::TriangleMesh& frame) { /* each frame, in order */ });
 //
 // Errors are exceptions derived from lbmshape::Error (core/error.hpp):
 // UsageError (a parameter out of range), InputError (a mesh that cannot be

@@ -1,6 +1,7 @@
 """The Python module on numpy arrays: a noisy sphere smoothed in memory, its
-report, files read and written, errors as exceptions that name what is
-wrong, and the GIL released while the device works."""
+report, a morph's frames as a list or through a callback, files read and
+written, errors as exceptions that name what is wrong, and the GIL released
+while the device works."""
 import os
 import tempfile
 import threading
@@ -95,6 +96,50 @@ class Denoise(unittest.TestCase):
             ticks[0] += 1
         worker.join()
         self.assertGreater(ticks[0], 1000, "the main thread was held while the device worked")
+
+
+def ellipsoid():
+    """The unit icosphere stretched along x: a shape a sphere can become."""
+    v, f = icosphere(3)
+    return v * np.array([1.4, 0.8, 0.8]), f
+
+
+class Morph(unittest.TestCase):
+    def test_the_frames_come_as_a_list_and_end_near_the_target(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        frames, report = lbmshape.morph(v, f, vt, ft, frames=5, res=32, align="none", report=True)
+        self.assertEqual(len(frames), 5)
+        for vk, fk in frames:
+            self.assertEqual(vk.shape[1], 3)
+            self.assertTrue(closed(fk))
+        self.assertIsNone(report["folder"])
+        self.assertLess(report["final"]["mean_distance_to_target_voxels"], 0.25)
+        first_x = np.abs(frames[0][0][:, 0]).max()
+        last_x = np.abs(frames[-1][0][:, 0]).max()
+        self.assertGreater(last_x, first_x + 0.2, "the last frame is stretched as the target is")
+
+    def test_on_frame_sees_every_frame_in_order(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        seen = []
+        result = lbmshape.morph(v, f, vt, ft, frames=4, res=24, steps=20, align="none",
+                                on_frame=lambda k, vk, fk: seen.append((k, len(fk))))
+        self.assertIsNone(result)
+        self.assertEqual([k for k, _ in seen], [0, 1, 2, 3])
+        self.assertTrue(all(n > 0 for _, n in seen))
+
+    def test_an_error_in_on_frame_stops_the_morph_with_its_message(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+
+        def refuse(k, vk, fk):
+            raise KeyError("no room for frame %d" % k)
+
+        with self.assertRaisesRegex(RuntimeError, "no room for frame 0"):
+            lbmshape.morph(v, f, vt, ft, frames=4, res=24, steps=20, align="none", on_frame=refuse)
+        with self.assertRaisesRegex(ValueError, "align must be"):
+            lbmshape.morph(v, f, vt, ft, align="left")
 
 
 class Files(unittest.TestCase):

@@ -23,6 +23,14 @@ FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, st
   thread_ = std::thread([this] { run(); });
 }
 
+FrameWriter::FrameWriter(const GridFrame& grid, FrameSink sink, int frameCount, Keep keep, Inspect inspect,
+                         Decorate decorate)
+    : grid_(grid), frameCount_(frameCount), digits_(4), keep_(keep), inspect_(std::move(inspect)),
+      compression_(GltfCompression::None), decorate_(std::move(decorate)), sink_(std::move(sink))
+{
+  thread_ = std::thread([this] { run(); });
+}
+
 FrameWriter::~FrameWriter()
 {
   {
@@ -131,7 +139,10 @@ void FrameWriter::run()
                              "or place the shapes to overlap with --align");
       const double extractMs = extract.ms();
       Stopwatch write;
-      writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
+      if (sink_)
+        sink_(job.first, mesh);
+      else
+        writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
       const double writeMs = write.ms();
       Stopwatch inspect;
       if (inspect_) inspect_(job.first, job.second, mesh);

@@ -26,6 +26,10 @@ namespace lbmshape {
 // A frame's field: on the whole grid, or on the narrow band.
 using FrameField = std::variant<std::shared_ptr<const Volume>, std::shared_ptr<const BandField>>;
 
+// Where a morph's frames go when they are not files: called with each
+// frame's index and mesh, in frame order, on the frame writer's thread.
+using FrameSink = std::function<void(int frame, const TriangleMesh& mesh)>;
+
 class FrameWriter {
 public:
   // Which meshes stay in memory once written: every frame's (for the
@@ -43,6 +47,9 @@ public:
   // Frame k goes to folder/frame_<k, 4 digits or more><extension>.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount, Keep keep,
               Inspect inspect = {}, GltfCompression compression = GltfCompression::None, Decorate decorate = {});
+  // Frame k goes to `sink` instead of a file.
+  FrameWriter(const GridFrame& grid, FrameSink sink, int frameCount, Keep keep, Inspect inspect = {},
+              Decorate decorate = {});
   ~FrameWriter();  // stops the thread; frames still queued are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -89,6 +96,7 @@ private:
   Inspect inspect_;
   GltfCompression compression_;
   Decorate decorate_;
+  FrameSink sink_;  // set: frames go here, not to files
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;

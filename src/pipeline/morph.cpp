@@ -21,6 +21,7 @@
 #include "mesh/gltf_animation.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_validation.hpp"
 #include "pipeline/animation_memory.hpp"
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/interruptible_steps.hpp"
@@ -226,16 +227,22 @@ void checkMorphOptions(const MorphOptions& o)
   checkGridAndNoise(o.grid, o.noise);
 }
 
-nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
-                          const MorphOptions& o, const ComputeDevice& device)
-{
-  checkMorphOptions(o);
-  std::optional<FolderLock> lock = checkFolder(folder, o.force);
-  if (o.preview) checkPreview(*o.preview, device, folder);
-  StageClock clock;
+namespace {
 
-  TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
-  TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
+// Where a morph's frames go: files in a folder, with the animation and the
+// preview (`folder`, and `lock` when checkFolder took the folder's lock),
+// or a program's FrameSink.
+struct FrameDestination {
+  const fs::path* folder = nullptr;
+  std::optional<FolderLock>* lock = nullptr;
+  const FrameSink* sink = nullptr;
+};
+
+// The morph itself, from the meshes read (or given) to the report; `sourcePath`
+// and `targetPath` name them in errors and in the report.
+nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path& sourcePath, const fs::path& targetPath,
+                        const MorphOptions& o, const ComputeDevice& device, StageClock& clock, const FrameDestination& to)
+{
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
@@ -266,30 +273,39 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   const double colourScale = o.colourByCurvature ? render::curvatureScale(targetLevel) : 0.0;
   if (o.colourByCurvature) reportCurvatureColours(colourScale, "the target's");
   MorphFrameReport frameReport(std::move(targetLevel), frame, o.frames, o.frameFigures);
-  FolderIfLeftEmpty newFolder(folder);
-  prepareFolder(folder);  // only now: a bad input leaves no folder behind
-  if (!lock) lock.emplace(folder);
-  newFolder.created();
+  std::optional<FolderIfLeftEmpty> newFolder;
+  if (to.folder) {
+    newFolder.emplace(*to.folder);
+    prepareFolder(*to.folder);  // only now: a bad input leaves no folder behind
+    if (!*to.lock) to.lock->emplace(*to.folder);
+    newFolder->created();
+  }
   lattice->start(device, o, clock);
   SteppingSolver& solver = lattice->solver();
 
-  FrameWriter writer(frame, folder, "." + o.format, o.frames,
-                     o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame,
-                     o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
-                       frameReport.surface(k, field, mesh);
-                     })
-                                    : FrameWriter::Inspect(),
-                     o.compression,
-                     o.colourByCurvature ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
-                       mesh.colours = render::curvatureColours(mesh, scale);
-                     })
-                                    : FrameWriter::Decorate());
+  const FrameWriter::Keep keep = o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
+  const FrameWriter::Inspect inspect =
+      o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
+        frameReport.surface(k, field, mesh);
+      })
+                     : FrameWriter::Inspect();
+  const FrameWriter::Decorate decorate =
+      o.colourByCurvature ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
+        mesh.colours = render::curvatureColours(mesh, scale);
+      })
+                          : FrameWriter::Decorate();
+  std::optional<FrameWriter> frames;
+  if (to.folder)
+    frames.emplace(frame, *to.folder, "." + o.format, o.frames, keep, inspect, o.compression, decorate);
+  else
+    frames.emplace(frame, *to.sink, o.frames, keep, inspect, decorate);
+  FrameWriter& writer = *frames;
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
   const std::function<std::string()> whatWasDone = [&] {
-    return std::to_string(writer.stop()) + " complete frames in " + folder.string() + " (at step " +
-           std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
+    return std::to_string(writer.stop()) + " complete frames" + (to.folder ? " in " + to.folder->string() : "") +
+           " (at step " + std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
   };
   // Steps up to `step`, gamma and Cs following the schedule. A new Cs is an
   // upload of the force's field: only when it changes (start() set o.cs).
@@ -353,12 +369,14 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   StageClock::report("write", writer.writeMs());
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
-  interrupt::check(std::to_string(o.frames) + " complete frames in " + folder.string());
-  if (o.animation) clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, folder / "morph.glb", o.compression); });
+  interrupt::check(std::to_string(o.frames) + " complete frames" + (to.folder ? " in " + to.folder->string() : ""));
+  if (to.folder && o.animation)
+    clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, *to.folder / "morph.glb", o.compression); });
   device.requireCleanValidation();
-  if (o.preview) clock.time("preview", [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
+  if (to.folder && o.preview)
+    clock.time("preview", [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
 
-  newFolder.keep();
+  if (newFolder) newFolder->keep();
   const bool converged = lastError < o.tolerance;
   if (!converged && !stepsGiven(o))
     log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (--tolerance " +
@@ -374,7 +392,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   return {{"command", "morph"},
           {"source", sourcePath.string()},
           {"target", targetPath.string()},
-          {"folder", folder.string()},
+          {"folder", to.folder ? nlohmann::json(to.folder->string()) : nlohmann::json(nullptr)},
           {"frames", o.frames},
           {"frame_steps", frameSteps},
           {"steps", steps},
@@ -411,9 +429,39 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
                      {"closed_manifold", last.closedManifold},
                      {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
                      {"triangles", meshes.back().triangleCount()}}},
-          {"animation", o.animation ? nlohmann::json((folder / "morph.glb").string()) : nlohmann::json(nullptr)},
+          {"animation", to.folder && o.animation ? nlohmann::json((*to.folder / "morph.glb").string()) : nlohmann::json(nullptr)},
           {"curvature_scale", o.colourByCurvature ? nlohmann::json(colourScale) : nlohmann::json(nullptr)},
-          {"preview", o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
+          {"preview", to.folder && o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
+}
+
+}  // namespace
+
+nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
+                          const MorphOptions& o, const ComputeDevice& device)
+{
+  checkMorphOptions(o);
+  std::optional<FolderLock> lock = checkFolder(folder, o.force);
+  if (o.preview) checkPreview(*o.preview, device, folder);
+  StageClock clock;
+  TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
+  TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
+  return runMorph(std::move(source), std::move(target), sourcePath, targetPath, o, device, clock,
+                  {.folder = &folder, .lock = &lock});
+}
+
+nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
+                           const ComputeDevice& device, const FrameSink& sink)
+{
+  MorphOptions o = options;
+  o.animation = false;  // about files: the program has every frame
+  o.preview.reset();
+  checkMorphOptions(o);
+  TriangleMesh checkedSource = source, checkedTarget = target;
+  validateInputMesh(checkedSource, "the source mesh");
+  validateInputMesh(checkedTarget, "the target mesh");
+  StageClock clock;
+  return runMorph(std::move(checkedSource), std::move(checkedTarget), "the source mesh", "the target mesh", o, device,
+                  clock, {.sink = &sink});
 }
 
 }  // namespace lbmshape

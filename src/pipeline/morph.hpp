@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/compute_device.hpp"
+#include "pipeline/frame_writer.hpp"
 #include "pipeline/denoise.hpp"
 
 namespace lbmshape {
@@ -78,5 +79,13 @@ inline long givenStepCount(const MorphOptions& o)
 // batches of lattice steps) after writing only complete frames.
 nlohmann::json morphFiles(const std::filesystem::path& source, const std::filesystem::path& target,
                           const std::filesystem::path& folder, const MorphOptions& options, const ComputeDevice& device);
+
+// The same morph on meshes in memory: each frame goes to `sink` (on the
+// frame writer's thread, in order, while the lattice computes the next),
+// nothing to files (the options' animation, preview, format and compression
+// do not apply). The meshes are checked as files' are. The report is
+// morphFiles', with "folder" and "animation" null.
+nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
+                           const ComputeDevice& device, const FrameSink& sink);
 
 }  // namespace lbmshape

@@ -18,7 +18,8 @@ endfunction()
 
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed bin/lbmshape lib/liblbmshape.so include/lbmshape/lbmshape.hpp include/lbmshape/version.hpp
-                  lib/cmake/lbmshape/lbmshapeConfig.cmake lib/pkgconfig/lbmshape.pc)
+                  lib/cmake/lbmshape/lbmshapeConfig.cmake lib/pkgconfig/lbmshape.pc
+                  share/bash-completion/completions/lbmshape ${MAN_PAGE})
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "cmake --install left out ${installed}")
   endif()

@@ -1,0 +1,96 @@
+// The library's in-memory entry points give what the file-based ones write:
+// denoiseMesh as denoiseFile, morphMeshes as morphFiles, frame for frame;
+// and they check a mesh from a program as a file's is checked.
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "mesh/mesh_noise.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "pipeline/denoise.hpp"
+#include "pipeline/morph.hpp"
+#include "support/scratch_folder.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+// Largest distance between corresponding vertices (same counts required).
+double largestVertexDifference(const TriangleMesh& a, const TriangleMesh& b)
+{
+  double worst = 0.0;
+  for (size_t i = 0; i < a.positions.size(); ++i) worst = std::max(worst, glm::length(a.positions[i] - b.positions[i]));
+  return worst;
+}
+
+TEST(InMemory, DenoiseMeshGivesTheFilesResult)
+{
+  ComputeDevice device{"", true};
+  testing::ScratchFolder folder;
+  // OBJ keeps doubles to 17 digits: the file is the mesh.
+  const TriangleMesh noisy = addNormalNoise(testing::icosphere(4), 0.3, 3);
+  writeMesh(noisy, folder / "noisy.obj");
+  DenoiseOptions o;
+  o.grid.resolution = 40;
+  const DenoiseResult inMemory = denoiseMesh(noisy, "a noisy sphere", o, device);
+  const DenoiseResult fromFile = denoiseFile(folder / "noisy.obj", folder / "smooth.obj", o, device);
+  ASSERT_EQ(inMemory.mesh.triangles, fromFile.mesh.triangles);
+  EXPECT_EQ(largestVertexDifference(inMemory.mesh, fromFile.mesh), 0.0);
+  EXPECT_EQ(inMemory.report["steps"], fromFile.report["steps"]);
+  EXPECT_FALSE(inMemory.report.contains("input")) << "no file, no input figures";
+}
+
+TEST(InMemory, MorphMeshesHandsOverTheFramesMorphFilesWrites)
+{
+  ComputeDevice device{"", true};
+  testing::ScratchFolder folder;
+  const TriangleMesh sphere = testing::icosphere(3, 1.0), torus = testing::torusMesh(1.0, 0.45, 64, 32);
+  writeMesh(sphere, folder / "sphere.obj");
+  writeMesh(torus, folder / "torus.obj");
+  MorphOptions o;
+  o.grid.resolution = 40;
+  o.align = Alignment::None;
+  o.format = "obj";
+  o.frames = 5;
+  o.steps = 40;
+  std::vector<int> order;
+  std::vector<TriangleMesh> frames;
+  const nlohmann::json report = morphMeshes(sphere, torus, o, device, [&](int k, const TriangleMesh& mesh) {
+    order.push_back(k);
+    frames.push_back(mesh);
+  });
+  morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "frames", o, device);
+  EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
+  ASSERT_EQ(frames.size(), 5u);
+  for (int k = 0; k < o.frames; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.obj", k);
+    const TriangleMesh written = readMesh(folder / "frames" / name);
+    ASSERT_EQ(frames[size_t(k)].triangles.size(), written.triangles.size()) << "frame " << k;
+    // OBJ frames hold the vertices to 9 significant digits.
+    EXPECT_LT(largestVertexDifference(frames[size_t(k)], written), 1e-6) << "frame " << k;
+  }
+  EXPECT_TRUE(report["folder"].is_null());
+  EXPECT_TRUE(report["animation"].is_null());
+  EXPECT_EQ(report["frames"], 5);
+}
+
+TEST(InMemory, AMeshWithAnIndexOutOfRangeIsAnInputErrorNamingIt)
+{
+  ComputeDevice device{"", true};
+  TriangleMesh broken = testing::icosphere(2);
+  broken.triangles[7][1] = uint32_t(broken.positions.size() + 5);
+  try {
+    denoiseMesh(broken, "the scan", DenoiseOptions{}, device);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the scan"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(morphMeshes(testing::icosphere(2), broken, MorphOptions{}, device, {}), InputError);
+}
+
+}  // namespace
+}  // namespace lbmshape

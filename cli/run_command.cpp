@@ -1,8 +1,10 @@
 #include "run_command.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <set>
+#include <system_error>
 
 #include <vulkan/vulkan.hpp>
 
@@ -20,7 +22,33 @@ namespace fs = std::filesystem;
 struct RunArguments {
   std::string jobsFile;
   bool failFast = false;
+  std::string shard;  // "K/N": only jobs K, K + N, K + 2N, ... (numbered from 1)
 };
+
+// One of N parts of a jobs file, for running it on N machines or processes
+// (GNU parallel, a Slurm array: docs/scaling.md): part K holds jobs K, K + N,
+// K + 2N, ..., so that every job is in exactly one part.
+struct Shard {
+  size_t part = 1, parts = 1;
+  bool holds(size_t jobNumber) const { return (jobNumber - 1) % parts == part - 1; }
+};
+
+Shard parseShard(const std::string& text)
+{
+  // K and N as whole numbers, nothing else around them.
+  const char* const first = text.data();
+  const char* const last = first + text.size();
+  long part = 0, parts = 0;
+  const auto k = std::from_chars(first, last, part);
+  const bool wellFormed = k.ec == std::errc() && k.ptr != last && *k.ptr == '/' &&
+                          [&] {
+                            const auto n = std::from_chars(k.ptr + 1, last, parts);
+                            return n.ec == std::errc() && n.ptr == last;
+                          }();
+  if (!wellFormed || parts < 1 || parts > 1000000 || part < 1 || part > parts)
+    throw UsageError("--shard must be K/N with 1 <= K <= N <= 1000000 (part K of N, e.g. 2/4), not '" + text + "'");
+  return {size_t(part), size_t(parts)};
+}
 
 // A jobs file is an array of flat objects: nesting beyond this is no jobs
 // file, and nesting without bound would overflow the stack in nlohmann's
@@ -111,6 +139,7 @@ nlohmann::json runJob(const nlohmann::json& job, const fs::path& base, const Com
 
 void runJobs(CommonOptions& common, const RunArguments& a)
 {
+  const Shard shard = a.shard.empty() ? Shard{} : parseShard(a.shard);
   const fs::path file = a.jobsFile;
   const nlohmann::json jobs = readJobs(file);
   const fs::path base = file.parent_path();
@@ -118,11 +147,14 @@ void runJobs(CommonOptions& common, const RunArguments& a)
   nlohmann::json results = nlohmann::json::array();
   int failed = 0, firstFailureCode = 0;
   std::string firstFailure;
+  size_t jobsInPart = 0;
+  for (size_t i = 0; i < jobs.size(); ++i) jobsInPart += shard.holds(i + 1);
   for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!shard.holds(i + 1)) continue;
     nlohmann::json result = {{"job", i + 1}};
     std::string what = "job " + std::to_string(i + 1);
     try {
-      interrupt::check(std::to_string(i) + " of " + std::to_string(jobs.size()) + " jobs done");
+      interrupt::check(std::to_string(results.size()) + " of " + std::to_string(jobsInPart) + " jobs done");
       if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string()) result["command"] = jobs[i]["command"];
       result["report"] = runJob(jobs[i], base, common, what);
       result["ok"] = true;
@@ -142,12 +174,13 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     if (failed && a.failFast) break;
   }
   common.report({{"command", "run"}, {"jobs", jobs.size()}, {"run", results.size()}, {"failed", failed},
-                 {"results", results}});
+                 {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)}, {"results", results}});
   if (failed)
     throw Error(ExitCode(firstFailureCode), std::to_string(failed) + " of " + std::to_string(results.size()) +
                                                 " jobs failed" + (a.failFast ? " (stopped at the first, --fail-fast)" : "") +
                                                 "; first: " + firstFailure);
-  log::info("all " + std::to_string(jobs.size()) + " jobs succeeded");
+  log::info("all " + std::to_string(results.size()) + " jobs" + (a.shard.empty() ? "" : " of part " + a.shard) +
+            " succeeded");
 }
 
 }  // namespace
@@ -158,6 +191,8 @@ void addRunCommand(CLI::App& app, CommonOptions& common)
   auto* cmd = app.add_subcommand("run", "Run a JSON list of denoise and morph jobs in one process");
   cmd->add_option("jobs", a->jobsFile, "Jobs file: a JSON array of {\"command\": ..., paths, options}")->required();
   cmd->add_flag("--fail-fast", a->failFast, "Stop at the first job that fails");
+  cmd->add_option("--shard", a->shard,
+                  "Run only part K of N of the jobs (K/N: jobs K, K+N, K+2N, ...), one part per machine or process");
   cmd->callback([&common, a] { runJobs(common, *a); });
 }
 

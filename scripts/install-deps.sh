@@ -18,7 +18,10 @@ packages=(
 # need clang with libFuzzer and the sanitizers.
 for option in "$@"; do
   case $option in
-    --with-test-tools) { command -v node && command -v npm; } >/dev/null || packages+=(nodejs npm) ;;
+    --with-test-tools)
+      { command -v node && command -v npm; } >/dev/null || packages+=(nodejs npm)
+      packages+=(parallel)  # the batch recipe's test (docs/scaling.md)
+      ;;
     --with-fuzz-tools) packages+=(clang libclang-rt-14-dev) ;;
     *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
   esac

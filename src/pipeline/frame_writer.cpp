@@ -115,7 +115,9 @@ void FrameWriter::run()
     std::pair<int, FrameField> job;
     {
       std::unique_lock lock(mutex_);
-      changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      // After an error nothing more is made: the first error is the one the
+      // lattice's thread sees (a later frame's would replace it).
+      changed_.wait(lock, [&] { return stopping_ || (!queue_.empty() && !error_); });
       if (stopping_) return;
       job = queue_.front();
       queue_.pop_front();
@@ -161,7 +163,7 @@ void FrameWriter::run()
       busy_ = false;
     } catch (...) {
       std::lock_guard lock(mutex_);
-      error_ = std::current_exception();
+      if (!error_) error_ = std::current_exception();
       busy_ = false;
     }
     changed_.notify_all();

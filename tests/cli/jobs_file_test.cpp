@@ -2,7 +2,9 @@
 // that fails (a missing file, an option of the wrong kind) is reported with
 // its own exit code and does not stop the others, unless --fail-fast.
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -198,6 +200,56 @@ TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)
   EXPECT_EQ(report["failed"], failures);
   // 16.0 was read as 16 cells along the longest side.
   EXPECT_EQ(report["results"][3]["report"]["grid"]["size"][0], 16);
+}
+
+// Five small denoise jobs, for splitting into parts.
+nlohmann::json fiveDenoiseJobs()
+{
+  nlohmann::json jobs = nlohmann::json::array();
+  for (int k = 1; k <= 5; ++k)
+    jobs.push_back({{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "s" + std::to_string(k) + ".obj"}, {"res", 16}});
+  return jobs;
+}
+
+TEST_F(JobsFile, ShardsSplitTheJobsSoEachRunsExactlyOnce)
+{
+  const fs::path file = write(fiveDenoiseJobs());
+  std::vector<int> ran;
+  for (const char* shard : {"1/2", "2/2"}) {
+    testing::CliResult r = testing::runLbmshape({"run", file.string(), "--shard", shard, "--json", "-q"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["jobs"], 5);
+    EXPECT_EQ(report["shard"], shard);
+    for (const auto& result : report["results"]) ran.push_back(result["job"].get<int>());
+  }
+  EXPECT_EQ(ran, (std::vector<int>{1, 3, 5, 2, 4})) << "part K of N: jobs K, K + N, ...";
+  for (int k = 1; k <= 5; ++k) EXPECT_TRUE(fs::exists(folder / ("s" + std::to_string(k) + ".obj"))) << k;
+}
+
+TEST_F(JobsFile, AShardThatIsNoPartIsAUsageErrorBeforeAnyJob)
+{
+  const fs::path file = write(fiveDenoiseJobs());
+  for (const char* shard : {"0/2", "3/2", "2", "1/0", "a/b", "1/2x", "-1/2"}) {
+    testing::CliResult r = testing::runLbmshape({"run", file.string(), "--shard", shard});
+    EXPECT_EQ(r.exitCode, 2) << shard << ": " << r.err;
+    EXPECT_NE(r.err.find("--shard must be K/N"), std::string::npos) << r.err;
+    EXPECT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(folder / "s1.obj"));
+}
+
+// The batch recipe of docs/scaling.md: GNU parallel runs the parts at once.
+TEST_F(JobsFile, GnuParallelRunsThePartsSideBySide)
+{
+  if (std::system("command -v parallel > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "GNU parallel is not installed (Debian: apt-get install parallel; scripts/install-deps.sh "
+                    "--with-test-tools installs it)";
+  const fs::path file = write(fiveDenoiseJobs());
+  const std::string command = "parallel --halt now,fail=1 '" + testing::lbmshapeBinary() + "' -q run '" + file.string() +
+                              "' --shard {}/3 ::: 1 2 3";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  for (int k = 1; k <= 5; ++k) EXPECT_TRUE(fs::exists(folder / ("s" + std::to_string(k) + ".obj"))) << k;
 }
 
 }  // namespace

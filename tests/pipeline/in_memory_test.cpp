@@ -78,6 +78,29 @@ TEST(InMemory, MorphMeshesHandsOverTheFramesMorphFilesWrites)
   EXPECT_EQ(report["frames"], 5);
 }
 
+// A sink that fails stops the morph with its own error, the first one:
+// no frame after it is made (a later frame's error would hide the cause).
+TEST(InMemory, TheFirstErrorOfTheSinkStopsTheMorph)
+{
+  ComputeDevice device{"", true};
+  MorphOptions o;
+  o.grid.resolution = 24;
+  o.align = Alignment::None;
+  o.frames = 6;
+  o.steps = 30;
+  int calls = 0;
+  try {
+    morphMeshes(testing::icosphere(3), testing::scaled(testing::icosphere(3), 0.7), o, device, [&](int k, const TriangleMesh&) {
+      ++calls;
+      throw OutputError("no room for frame " + std::to_string(k));
+    });
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "no room for frame 0");
+  }
+  EXPECT_EQ(calls, 1);
+}
+
 TEST(InMemory, AMeshWithAnIndexOutOfRangeIsAnInputErrorNamingIt)
 {
   ComputeDevice device{"", true};

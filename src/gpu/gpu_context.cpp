@@ -67,6 +67,10 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
                                                                     vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily))});
   }
   fence_ = vk::raii::Fence(device_, vk::FenceCreateInfo());
+  // Two timestamps around each compute submission: the device's busy time,
+  // beside the wall time, shows how long it waits for the host.
+  if (physical_->getQueueFamilyProperties().at(queueFamily_).timestampValidBits > 0)
+    timestamps_ = vk::raii::QueryPool(device_, vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
   pipelineCache_.emplace(device_, defaultPipelineCachePath(properties_));
   log::verbose("pipeline cache: " +
                (pipelineCache_->path().empty() ? std::string("off") : pipelineCache_->path().string()) + " (" +
@@ -107,7 +111,20 @@ ComputeProgram& GpuContext::program(const ProgramSpec& spec)
 void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
   vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
-  submitAndWait(queue_, buffers[0], record);
+  if (!*timestamps_) {
+    submitAndWait(queue_, buffers[0], record);
+    return;
+  }
+  submitAndWait(queue_, buffers[0], [&](vk::CommandBuffer cmd) {
+    cmd.resetQueryPool(*timestamps_, 0, 2);
+    cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
+    record(cmd);
+    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
+  });
+  const auto [result, ticks] = timestamps_.getResults<uint64_t>(0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t),
+                                                               vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+  if (result == vk::Result::eSuccess && ticks[1] >= ticks[0])
+    deviceBusyMs_ += double(ticks[1] - ticks[0]) * double(properties_.limits.timestampPeriod) * 1e-6;
 }
 
 void GpuContext::requireDrawing(const std::string& otherwise) const

@@ -68,6 +68,11 @@ public:
   // Time spent creating pipelines so far (ms): the start-up cost the
   // pipeline cache is there to cut.
   double pipelineCreationMs() const { return pipelineCreationMs_; }
+  // Time the device spent on runAndWait's submissions so far (ms), from
+  // timestamps written at their start and end; 0 where the queue has no
+  // timestamps. Against the wall time of the same work it shows how long
+  // the device waited for the host.
+  double deviceBusyMs() const { return deviceBusyMs_; }
   size_t pipelineCacheLoadedBytes() const { return pipelineCache_->loadedBytes(); }
 
 private:
@@ -95,6 +100,8 @@ private:
   std::optional<PipelineCacheFile> pipelineCache_;
   std::map<std::string, std::unique_ptr<ComputeProgram>> programs_;
   double pipelineCreationMs_ = 0.0;
+  vk::raii::QueryPool timestamps_{nullptr};  // two, around each compute submission
+  double deviceBusyMs_ = 0.0;
 };
 
 }  // namespace lbmshape::gpu

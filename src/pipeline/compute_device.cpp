@@ -27,6 +27,8 @@ const gpu::DeviceDescription& ComputeDevice::description() const
   return instance_->devices()[chosen_];
 }
 
+double ComputeDevice::deviceBusyMs() const { return gpu_ ? gpu_->deviceBusyMs() : 0.0; }
+
 gpu::GpuContext* ComputeDevice::gpu() const
 {
   if (isReference()) return nullptr;

@@ -34,6 +34,9 @@ public:
   bool isReference() const { return request_ == "reference"; }
   // The chosen Vulkan device, opened on first use; null for the reference.
   gpu::GpuContext* gpu() const;
+  // The Vulkan device's busy time so far (ms, GpuContext::deviceBusyMs); 0
+  // before it is opened and for the reference.
+  double deviceBusyMs() const;
 
   // The Vulkan device that draws pictures (render, --preview): the chosen
   // one, or for the reference solver the best there is, opened on first use.

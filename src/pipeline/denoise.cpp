@@ -370,10 +370,11 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
   // indices in range, finite coordinates, a surface that is not flat.
   TriangleMesh checked = mesh;
   validateInputMesh(checked, name);
-  StageClock clock;
+  StageClock clock([&device] { return device.deviceBusyMs(); });
   DenoiseResult smoothed = smoothMesh(checked, name, o, device, clock);
   device.requireCleanValidation();
   smoothed.report["ms"] = clock.toJson();
+  smoothed.report["device_ms"] = clock.deviceToJson();
   return smoothed;
 }
 
@@ -386,7 +387,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   checkMeshDestination(output, o.compression);
   if (o.colourByCurvature) requireColourFormat(output, output.string());
   if (o.preview) checkPreview(*o.preview, device);
-  StageClock clock;
+  StageClock clock([&device] { return device.deviceBusyMs(); });
 
   const TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
   const MeshTopology inputTopology = analyzeTopology(mesh);
@@ -408,6 +409,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
   report["ms"] = clock.toJson();
+  report["device_ms"] = clock.deviceToJson();
   report["volume_change"] = inputTopology.closedManifold && inputTopology.signedVolume != 0
                                 ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
                                 : nlohmann::json(nullptr);

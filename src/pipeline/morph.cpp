@@ -327,11 +327,15 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     interrupt::check(whatWasDone);
     if (!convergedAt) {
       Stopwatch lbm;
+      double deviceBefore = clock.deviceMsNow();
       advanceTo(frameSteps[size_t(k)]);
       lbmMs += lbm.ms();
+      clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
       Stopwatch download;
+      deviceBefore = clock.deviceMsNow();
       current = lattice->field();
       downloadMs += download.ms();
+      clock.recordDevice("download", clock.deviceMsNow() - deviceBefore);
       lastError = lattice->errorNearTarget(current, convergenceBand);
       // Only the paper's scheme stops early: a morph that arrives spreads
       // its frames over the whole way, wherever the tolerance is reached.
@@ -364,7 +368,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   clock.record("extract", writer.extractMs());
   clock.record("write", writer.writeMs());
   clock.record("frame_figures", writer.inspectMs());
-  StageClock::report("lbm", lbmMs);
+  StageClock::report("lbm", lbmMs, clock.deviceMs("lbm"));
   StageClock::report("extract", writer.extractMs());
   StageClock::report("write", writer.writeMs());
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
@@ -419,6 +423,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                     {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
           {"device", device.name()},
           {"ms", clock.toJson()},
+          {"device_ms", clock.deviceToJson()},
           {"lattice_waited_for_writer_ms", waitedMs},
           {"mlups", lbmMs > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
           {"final", {{"mean_distance_to_target", final.mean},
@@ -442,7 +447,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
   if (o.preview) checkPreview(*o.preview, device, folder);
-  StageClock clock;
+  StageClock clock([&device] { return device.deviceBusyMs(); });
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
   TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
   return runMorph(std::move(source), std::move(target), sourcePath, targetPath, o, device, clock,
@@ -459,7 +464,7 @@ nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& targe
   TriangleMesh checkedSource = source, checkedTarget = target;
   validateInputMesh(checkedSource, "the source mesh");
   validateInputMesh(checkedTarget, "the target mesh");
-  StageClock clock;
+  StageClock clock([&device] { return device.deviceBusyMs(); });
   return runMorph(std::move(checkedSource), std::move(checkedTarget), "the source mesh", "the target mesh", o, device,
                   clock, {.sink = &sink});
 }

@@ -160,6 +160,11 @@ TEST(DenoiseCli, WritesValidGltfAndReportsJson)
     for (const char* key : {"input", "output", "grid", "gamma", "steps", "ms", "mlups", "volume_change", "device"})
       EXPECT_TRUE(j.contains(key)) << key;
     for (const char* stage : {"read", "sdf", "lbm", "extract", "write", "total"}) EXPECT_TRUE(j["ms"].contains(stage)) << stage;
+    // The device's busy time within each stage, from timestamps: some in the
+    // lattice stage, and never more than the stage's wall time.
+    ASSERT_TRUE(j["device_ms"].is_object());
+    EXPECT_GT(j["device_ms"].value("lbm", 0.0), 0.0) << j["device_ms"];
+    for (const auto& [stage, ms] : j["device_ms"].items()) EXPECT_LE(ms.get<double>(), j["ms"][stage].get<double>()) << stage;
     EXPECT_TRUE(j["output"]["closed_manifold"].get<bool>());
     EXPECT_LT(std::abs(j["volume_change"].get<double>()), 0.1);
     const auto validation = testing::validateGltf(output);

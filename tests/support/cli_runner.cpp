@@ -82,7 +82,7 @@ std::vector<std::string> nonEmptyLines(const std::string& text)
 std::vector<std::string> messageLines(const std::string& text)
 {
   static const std::regex progress(R"(^lbmshape: [a-z ]+(\.\.\.|\s+[0-9]+% \(.*\),) [0-9]+\.[0-9] s$)");
-  static const std::regex slowStage(R"(^lbmshape: [a-z_]+ +[0-9]+\.[0-9] ms$)");
+  static const std::regex slowStage(R"(^lbmshape: [a-z_]+ +[0-9]+\.[0-9] ms( \(the device busy [0-9.]+ ms of it\))?$)");
   std::vector<std::string> lines = nonEmptyLines(text);
   std::erase_if(lines, [](const std::string& line) {
     return std::regex_match(line, progress) || std::regex_match(line, slowStage);

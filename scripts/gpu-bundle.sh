@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Gathers into .gpu/ what a lent GPU machine (the device tool; no package
+# registry there) needs to measure lbmshape and run its tests: the shared
+# bundle (../shared/gpu/bundle.sh: binaries, test binaries, libraries, the
+# Vulkan loader and validation layer), the shared meshes, the OpenVDB peer
+# with its libraries when VDB_PEER names its binary, and scripts/gpu-run.sh.
+# Then one device call, with carry [".gpu"] (64 MiB at most):
+#   bash .gpu/gpu-run.sh        (results in $OUT/results.tgz: the tool returns at most 8 files)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shared=$(realpath ../shared)
+"$shared/gpu/bundle.sh" >/dev/null
+# glvnd's EGL, which the run that worked (the driver through its EGL
+# library; scripts/gpu-run.sh) had unpacked beside the Vulkan loader.
+o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
+(cd .gpu/deb && apt-get $o download -qq libegl1 libglvnd0 2>/dev/null)
+tar cJf .gpu/assets.tar.xz -C "$shared" assets
+if [[ -n ${VDB_PEER:-} ]]; then
+  rm -rf .gpu/peer && mkdir -p .gpu/peer/lib
+  cp "$VDB_PEER" .gpu/peer/vdb_peer
+  ldd "$VDB_PEER" | awk '/=> \//{print $3}' | grep -v -E '/(libc|libm|libstdc\+\+|libgcc_s|libz|libbz2|liblzma|libzstd|liblz4)\.so' |
+    while read -r l; do cp -L "$l" .gpu/peer/lib/; done
+  strip --strip-unneeded .gpu/peer/lib/* 2>/dev/null || true
+  tar cJf .gpu/peer.tar.xz -C .gpu peer && rm -rf .gpu/peer
+fi
+cp scripts/gpu-run.sh scripts/bench-scale.sh scripts/make-sphere.py .gpu/
+du -sh .gpu

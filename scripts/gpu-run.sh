@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Runs on a lent GPU machine, from the project's root, after
+# scripts/gpu-bundle.sh: finds a Vulkan driver manifest the loader accepts,
+# measures (bench, denoise of the armadillo at 128/256/512 beside OpenVDB,
+# a 48-frame morph at 256, the 12 shared meshes in one jobs file), then runs
+# every test program with the validation layer on, in shards, for at most
+# GPU_TEST_SECONDS (default 150). Everything goes into $OUT/results.tgz,
+# written again after each phase so that a run cut short still returns
+# what it did.
+#
+# Headless, NVIDIA's own manifest (libGLX_nvidia.so.0) does not start
+# ("Could not get 'vkCreateInstance' via 'vk_icdGetInstanceProcAddr'"): a
+# manifest naming libEGL_nvidia.so.0 does, and is tried first.
+set -u
+results=/tmp/gpu-results
+rm -rf "$results" && mkdir -p "$results"
+save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
+trap save EXIT
+root=$PWD
+source .gpu/prepare.sh 2>"$results/prepare.log"
+
+# The driver.
+mkdir -p /tmp/icd
+echo '{"file_format_version":"1.0.1","ICD":{"library_path":"libEGL_nvidia.so.0","api_version":"1.4.312"}}' >/tmp/icd/egl.json
+driver=""
+for manifest in /tmp/icd/egl.json $(ls /usr/local/nvidia/share/vulkan/icd.d/*.json /usr/share/vulkan/icd.d/*.json 2>/dev/null); do
+  if VK_DRIVER_FILES=$manifest .gpu/bin/lbmshape info >>"$results/driver.log" 2>&1; then driver=$manifest; break; fi
+done
+echo "driver manifest: ${driver:-none works}" >>"$results/driver.log"
+save
+[[ -n $driver ]] || exit 1
+export VK_DRIVER_FILES=$driver VK_ICD_FILENAMES=$driver
+
+# The absolute paths the tests were built with: /work/main and /work/shared.
+mkdir -p "$root/../shared" && tar xJf .gpu/assets.tar.xz -C "$root/../shared"
+[[ $root == /work/main ]] || { mkdir -p /work && rm -rf /work/main && ln -s "$root" /work/main; }
+[[ -e /work/shared ]] || ln -s "$(cd "$root/../shared" && pwd)" /work/shared
+mkdir -p build/tests scripts && cp .gpu/bin/lbmshape build/ && cp .gpu/tests/* build/tests/
+cp .gpu/bench-scale.sh .gpu/make-sphere.py scripts/ 2>/dev/null
+if [[ -f .gpu/peer.tar.xz ]]; then
+  tar xJf .gpu/peer.tar.xz -C .gpu
+  export VDB_PEER=$root/.gpu/peer/vdb_peer LD_LIBRARY_PATH=$root/.gpu/peer/lib:$LD_LIBRARY_PATH
+fi
+assets=/work/shared/assets
+
+# Figures, on a quiet machine.
+{ nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv; nproc
+  timeout 30 lbmshape bench --size 256,256,256 --json -q; echo
+  timeout 30 lbmshape bench --band --size 512,512,512 --json -q; echo; } >"$results/bench.log" 2>&1
+for res in 128 256 512; do
+  timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json \
+    >"$results/denoise$res.json" 2>"$results/denoise$res.err"
+done
+python3 scripts/make-sphere.py /tmp/sphere.obj
+timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256 --res 256 --align none --force --json \
+  >"$results/morph256.json" 2>"$results/morph256.err"
+save
+timeout 120 scripts/bench-scale.sh $assets/armadillo.obj 3 128 256 512 >"$results/scale.log" 2>&1
+python3 - "$assets" >/tmp/jobs.json <<'PY'
+import json, os, sys
+print(json.dumps([{"command": "denoise", "input": f"{sys.argv[1]}/{m}", "output": f"/tmp/jobs-{m[:-4]}.glb", "res": 128}
+                  for m in sorted(os.listdir(sys.argv[1])) if m.endswith(".obj")]))
+PY
+{ for run in 1 2 3; do
+    rm -rf /tmp/jobs-cache
+    XDG_CACHE_HOME=/tmp/jobs-cache /usr/bin/time -f "jobs file: %e s, %M KB" timeout 60 lbmshape -q run /tmp/jobs.json --json >"$results/jobs$run.json"
+  done
+  if [[ -n ${VDB_PEER:-} ]]; then
+    for run in 1 2 3; do
+      /usr/bin/time -f "OpenVDB, 12 processes: %e s" bash -c \
+        "for m in $assets/*.obj; do $VDB_PEER denoise \$m /tmp/vdb.obj --res 128 --iters 3 --filter meancurv --threads $(nproc) >/dev/null 2>&1; done"
+    done
+  fi; } >"$results/jobs.log" 2>&1
+save
+
+# The suite, validation on (each program's main sets it), 4 shards a program.
+cd build/tests
+ls *_tests | while read -r program; do for shard in 0 1 2 3; do echo "$program $shard"; done; done |
+  timeout -s KILL "${GPU_TEST_SECONDS:-150}" xargs -P "$(nproc)" -n 2 sh -c \
+    'GTEST_TOTAL_SHARDS=4 GTEST_SHARD_INDEX=$1 ./$0 --gtest_brief=1 >'"$results"'/test-$0-$1.log 2>&1; echo "$0 $1 exit $?"' \
+    >"$results/tests.summary" 2>&1
+pkill -f '_tests --gtest_brief' 2>/dev/null
+grep -h '^\[  FAILED  \]' "$results"/test-*.log | sort -u >"$results/tests.failed"

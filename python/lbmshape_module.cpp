@@ -6,6 +6,7 @@
 //   V, F = lbmshape.read_mesh("scan.ply"); lbmshape.write_mesh("out.glb", V2, F2)
 //   frames = lbmshape.morph(V, F, V2, F2, frames=24)  # [(vertices, triangles), ...]
 //   lbmshape.morph(V, F, V2, F2, on_frame=lambda k, v, f: ...)  # each as it is made
+//   for k, v, f in lbmshape.iter_morph(V, F, V2, F2, frames=24): ...  # a generator
 //
 // The Vulkan device is opened at the first call and kept (lbmshape.Device
 // chooses another); the GIL is released while the device works, so other
@@ -17,6 +18,7 @@
 #include <optional>
 #include <string>
 
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -214,6 +216,57 @@ PYBIND11_MODULE(lbmshape, m)
         "Morph one closed mesh into another, as `lbmshape morph` with the same defaults: a list of `frames` "
         "(vertices, triangles) pairs, or each passed to on_frame(index, vertices, triangles) as it is made (then "
         "None); with report=True also the figures `morph --json` prints, as a dict.");
+  // iter_morph: morph's frames as a generator, in Python on top of morph's
+  // on_frame: the morph runs on a thread of its own, two frames ahead at
+  // most; leaving the loop early stops it.
+  py::exec(R"(
+def iter_morph(*args, **kwargs):
+    """Yield (index, vertices, triangles) for each frame of lbmshape.morph(*args, **kwargs)
+    as it is made. The morph runs on a thread of its own, at most two frames ahead;
+    leaving the loop early stops it."""
+    import queue, threading
+    frames, stop, done, failure = queue.Queue(maxsize=2), threading.Event(), object(), []
+
+    class _Left(Exception):
+        pass
+
+    def on_frame(k, v, f):
+        while not stop.is_set():
+            try:
+                frames.put((k, v, f), timeout=0.05)
+                return
+            except queue.Full:
+                pass
+        raise _Left()
+
+    def run():
+        try:
+            morph(*args, on_frame=on_frame, **kwargs)
+        except BaseException as e:
+            failure.append(e)
+        finally:
+            frames.put(done)
+
+    worker = threading.Thread(target=run, daemon=True)
+    worker.start()
+    try:
+        while True:
+            item = frames.get()
+            if item is done:
+                break
+            yield item
+    finally:
+        stop.set()
+        while worker.is_alive():
+            try:
+                frames.get(timeout=0.05)
+            except queue.Empty:
+                pass
+        worker.join()
+    if failure:
+        raise failure[0]
+)",
+           m.attr("__dict__"));
   m.def(
       "read_mesh",
       [](const std::filesystem::path& path) {

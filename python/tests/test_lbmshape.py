@@ -142,6 +142,29 @@ class Morph(unittest.TestCase):
             lbmshape.morph(v, f, vt, ft, align="left")
 
 
+class IterMorph(unittest.TestCase):
+    def test_the_frames_come_one_by_one_in_order(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        indices = [k for k, vk, fk in lbmshape.iter_morph(v, f, vt, ft, frames=5, res=24, steps=20, align="none")]
+        self.assertEqual(indices, [0, 1, 2, 3, 4])
+
+    def test_leaving_early_stops_the_morph_and_the_device_is_free_again(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        for k, vk, fk in lbmshape.iter_morph(v, f, vt, ft, frames=40, res=24, steps=200, align="none"):
+            if k == 1:
+                break
+        v2, f2 = lbmshape.denoise(v, f, res=24)
+        self.assertGreater(len(f2), 0)
+
+    def test_an_error_of_the_morph_is_raised_by_the_loop(self):
+        v, f = icosphere(3)
+        with self.assertRaisesRegex(ValueError, "align must be"):
+            for _ in lbmshape.iter_morph(v, f, v, f, align="left"):
+                pass
+
+
 class Files(unittest.TestCase):
     def test_a_mesh_written_reads_back(self):
         v, f = icosphere(2)

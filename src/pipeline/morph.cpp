@@ -163,10 +163,12 @@ public:
   FolderIfLeftEmpty(const FolderIfLeftEmpty&) = delete;
   FolderIfLeftEmpty& operator=(const FolderIfLeftEmpty&) = delete;
 
-  // Call once the folder exists. The new folders, the morph's own first,
-  // are listed for a process that ends without unwinding (a second Ctrl-C,
-  // a library's abort), which removes each that is still empty in turn.
-  void created()
+  // Lists the new folders, the morph's own first, for a process that ends
+  // without unwinding (a second Ctrl-C, a library's abort), which removes
+  // each that exists and is empty, in turn. Called before they are made:
+  // listed only after, an abort in between left them
+  // (LastResort.AnAbortBeforeTheFirstFrameLeavesNoNewFolder, now and then).
+  void listForLastResort()
   {
     if (topmostNew_.empty()) return;
     std::error_code ec;
@@ -276,9 +278,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   std::optional<FolderIfLeftEmpty> newFolder;
   if (to.folder) {
     newFolder.emplace(*to.folder);
-    prepareFolder(*to.folder);  // only now: a bad input leaves no folder behind
+    newFolder->listForLastResort();  // before they exist: an abort as they are made still removes them
+    prepareFolder(*to.folder);       // only now: a bad input leaves no folder behind
     if (!*to.lock) to.lock->emplace(*to.folder);
-    newFolder->created();
   }
   lattice->start(device, o, clock);
   SteppingSolver& solver = lattice->solver();

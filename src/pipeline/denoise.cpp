@@ -92,44 +92,35 @@ struct SmoothedField {
   int stepsRun = 0;
 };
 
-// --steps auto on the grid: each step's field read back (a pass over the
-// lattice) to measure the surface's speed, and when it has levelled off
-// the field one step back, which the lattice's other copy still holds.
-SmoothedField<Volume> stepsTheNoiseNeeds(LatticeSolver& solver, Volume x0, Progress& progress)
+// What --steps auto reads from each kind of lattice. The grid computes the
+// field of the step it has reached (a pass over the lattice) and its other
+// copy still holds the step before: it reads at once. The band reads one
+// step late and with no pass: after step k its two copies of the moments
+// hold the fields of steps k - 1 and k - 2 (BandSolver::storedField).
+int readingLag(const LatticeSolver&) { return 0; }
+Volume measuredField(LatticeSolver& solver) { return solver.field(); }
+Volume fieldBeforeIt(LatticeSolver& solver) { return solver.previousField(); }
+int readingLag(const BandSolver&) { return 1; }
+BandField measuredField(BandSolver& solver) { return solver.storedField(1); }
+BandField fieldBeforeIt(BandSolver& solver) { return solver.storedField(2); }
+
+// --steps auto: the surface's speed after each step n, and once it has
+// levelled off the field one step back, which the lattice still holds.
+template <class Solver, class Field>
+SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress)
 {
   using namespace smoothing_stop;
   InterruptibleSteps stepper(solver);
   SurfaceSpeed speed(x0.values());
-  x0 = Volume();
+  x0 = Field();
+  const int lag = readingLag(solver);
   double previous = 0.0;
   for (int n = 1;; ++n) {
-    stepper.advanceTo(n, stepsDone(solver), &progress);
-    Volume x = solver.field();
+    stepper.advanceTo(n + lag, stepsDone(solver), &progress);
+    Field x = measuredField(solver);
     const double now = speed.advance(x.values());
-    if (levelledOff(n, previous, now)) return {solver.previousField(), n - 1, n};
-    if (n == mostSteps) return {std::move(x), n, n};
-    previous = now;
-  }
-}
-
-// The same on the band, read one step late and with no pass over it: after
-// step k its two copies of the moments hold the fields of steps k - 1 and
-// k - 2 (BandSolver::storedField), so the speed of step k - 1 is known, and
-// if it has levelled off the field to keep is still there.
-SmoothedField<BandField> stepsTheNoiseNeeds(BandSolver& solver, BandField x0, Progress& progress)
-{
-  using namespace smoothing_stop;
-  InterruptibleSteps stepper(solver);
-  SurfaceSpeed speed(x0.values());
-  x0 = BandField();
-  double previous = 0.0;
-  for (int k = 2;; ++k) {
-    stepper.advanceTo(k, stepsDone(solver), &progress);
-    const int n = k - 1;
-    BandField x = solver.storedField(1);
-    const double now = speed.advance(x.values());
-    if (levelledOff(n, previous, now)) return {solver.storedField(2), n - 1, k};
-    if (n == mostSteps) return {std::move(x), n, k};
+    if (levelledOff(n, previous, now)) return {fieldBeforeIt(solver), n - 1, n + lag};
+    if (n == mostSteps) return {std::move(x), n, n + lag};
     previous = now;
   }
 }

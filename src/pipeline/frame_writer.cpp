@@ -16,17 +16,23 @@ constexpr size_t queueCapacity = 2;
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
                          Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
-    : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
-      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
-      inspect_(std::move(inspect)), compression_(compression), decorate_(std::move(decorate))
+    : FrameWriter(grid, std::move(folder), std::move(extension), FrameSink(), frameCount, keep, std::move(inspect),
+                  compression, std::move(decorate))
 {
-  thread_ = std::thread([this] { run(); });
 }
 
 FrameWriter::FrameWriter(const GridFrame& grid, FrameSink sink, int frameCount, Keep keep, Inspect inspect,
                          Decorate decorate)
-    : grid_(grid), frameCount_(frameCount), digits_(4), keep_(keep), inspect_(std::move(inspect)),
-      compression_(GltfCompression::None), decorate_(std::move(decorate)), sink_(std::move(sink))
+    : FrameWriter(grid, {}, {}, std::move(sink), frameCount, keep, std::move(inspect), GltfCompression::None,
+                  std::move(decorate))
+{
+}
+
+FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink,
+                         int frameCount, Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
+    : grid_(grid), folder_(std::move(folder)), extension_(std::move(extension)), frameCount_(frameCount),
+      digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
+      inspect_(std::move(inspect)), compression_(compression), decorate_(std::move(decorate)), sink_(std::move(sink))
 {
   thread_ = std::thread([this] { run(); });
 }

@@ -53,14 +53,20 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   for (int attempt = 0; attempt < 100; ++attempt) {
     std::filesystem::path candidate =
         folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
+    // Listed before it is made (a second Ctrl-C or an abort ends the process
+    // without unwinding): listed only after, a signal in between left it.
+    // A name that is taken (a dead process's leftover) is taken off again.
+    const int ticket = temporary_files::remember(candidate);
     int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
       temporary_ = std::move(candidate);
-      ticket_ = temporary_files::remember(temporary_);  // a second Ctrl-C ends the process without unwinding
+      ticket_ = ticket;
       return;
     }
-    if (errno != EEXIST) throw OutputError(failure(target_, std::strerror(errno)));
+    const int error = errno;
+    temporary_files::forget(ticket);
+    if (error != EEXIST) throw OutputError(failure(target_, std::strerror(error)));
   }
   throw OutputError(failure(target_, "no free temporary file name in " + folder.string()));
 }

@@ -17,6 +17,7 @@
 #include "run_command.hpp"
 #include "core/interrupt.hpp"
 #include "core/last_resort.hpp"
+#include "core/parameter_names.hpp"
 #include "core/worker_threads.hpp"
 
 namespace {
@@ -64,6 +65,7 @@ int fail(lbmshape::ExitCode code, const std::string& message)
 int main(int argc, char** argv)
 {
   using namespace lbmshape;
+  useParameterNames(ParameterNaming::CommandLine);  // messages name the flags
   CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan");
   app.set_version_flag("--version", LBMSHAPE_VERSION);
   app.require_subcommand(1);

@@ -25,6 +25,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "pipeline/compute_device.hpp"
@@ -175,6 +176,7 @@ PYBIND11_MODULE(lbmshape, m)
   using namespace lbmshape;
   using namespace lbmshape::python;
   m.doc() = "Surface denoising with a lattice Boltzmann scheme on Vulkan (lbmshape)";
+  useParameterNames(ParameterNaming::Python);  // messages name the keywords
   m.attr("__version__") = LBMSHAPE_VERSION;
 
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);

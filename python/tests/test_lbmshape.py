@@ -78,8 +78,13 @@ class Denoise(unittest.TestCase):
             lbmshape.denoise(v[:, :2], f)
         with self.assertRaisesRegex(ValueError, r"triangles\[0\] has index"):
             lbmshape.denoise(v, f + len(v))
-        with self.assertRaisesRegex(ValueError, "gamma"):
+        with self.assertRaisesRegex(ValueError, "^gamma must be a positive number"):
             lbmshape.denoise(v, f, gamma=-1)
+        # The keyword, not the command line's flag (--res) or the C++ field.
+        with self.assertRaisesRegex(ValueError, "^res must be at least 8$"):
+            lbmshape.denoise(v, f, res=4)
+        with self.assertRaisesRegex(ValueError, "^cs must be a morphing speed"):
+            lbmshape.morph(v, f, v, f, cs=2)
         with self.assertRaisesRegex(ValueError, "smoothing must be"):
             lbmshape.denoise(v, f, smoothing="gentle")
         flat = v.copy()

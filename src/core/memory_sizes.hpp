@@ -12,7 +12,8 @@ namespace lbmshape {
 // "12.3 MiB".
 std::string mebibytes(uint64_t bytes);
 
-// "a grid of about N cells along its longest side (--res N) would fit", for
+// "a grid of about N cells along its longest side (--res N) would fit" (the
+// resolution named as core/parameter_names.hpp says), for
 // a job on `extent` that needs `needed` where `allowed` is available, its
 // size growing as the grid's side to the power `power` (3 for a grid, 2 for
 // a band, which follows the surface's area); with a 5 % margin.

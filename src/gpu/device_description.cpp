@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 
 namespace lbmshape::gpu {
 
@@ -51,7 +52,7 @@ size_t chooseDevice(const std::vector<DeviceDescription>& devices, const std::st
     for (size_t i = 0; i < devices.size(); ++i)
       if (lowercase(devices[i].name).find(lowercase(request)) != std::string::npos) return i;
   }
-  throw UsageError("--device " + request + " matches no Vulkan device (have: " + deviceList(devices) +
+  throw UsageError(nameOf(Parameter::Device) + " " + request + " matches no Vulkan device (have: " + deviceList(devices) +
                    ", or 'reference' for the CPU reference)");
 }
 

@@ -14,7 +14,7 @@ namespace lbmshape::relaxation {
 double tauFromGamma(double gamma) { return gamma / d3q19::soundSpeedSquared + 0.5; }
 double gammaFromTau(double tau) { return d3q19::soundSpeedSquared * (tau - 0.5); }
 
-void checkGamma(double gamma, const char* what)
+void checkGamma(double gamma, const std::string& what)
 {
   if (!std::isfinite(gamma) || gamma <= 0.0) {
     std::ostringstream message;
@@ -46,16 +46,17 @@ double startUpError(double gamma, long steps)
   return (d3q19::soundSpeedSquared - 2.0 * gamma) * tau * (1.0 - decayed) / (2.0 * gamma * double(steps));
 }
 
-void warnIfInaccurate(double gamma, long steps, const char* what)
+void warnIfInaccurate(double gamma, long steps)
 {
   if (steps < 1) return;
   const double error = startUpError(gamma, steps);
   if (std::abs(error) <= accurateStartUpError) return;
   std::ostringstream message;
+  const std::string what = nameOf(Parameter::Gamma);
   message << what << " = " << gamma << " over " << steps << (steps == 1 ? " step" : " steps") << " smooths "
           << std::fixed << std::setprecision(1) << std::abs(error) * 100.0 << (error < 0 ? " % less" : " % more")
           << " than the diffusion equation (2*gamma*steps) because every run starts in equilibrium; "
-          << (error < 0 ? "more steps at a smaller --gamma" : "more steps, or a --gamma nearer 1/6,") << " stay within "
+          << (error < 0 ? "more steps at a smaller " + what : "more steps, or a " + what + " nearer 1/6,") << " stay within "
           << int(accurateStartUpError * 100) << " % (docs/lattice-theory.md, \"The first steps\")";
   log::warning(message.str());
 }

@@ -9,6 +9,10 @@
 // tests/ measures which one the lattice obeys.
 #pragma once
 
+#include <string>
+
+#include "core/parameter_names.hpp"
+
 namespace lbmshape::relaxation {
 
 double tauFromGamma(double gamma);
@@ -21,8 +25,8 @@ inline float singlePrecisionOmega(float gamma) { return 1.0f / (3.0f * gamma + 0
 
 // Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's
 // linear stability range 1/2 < tau (omega < 2), and small enough for the
-// lattice to diffuse (core/parameter_bounds.hpp). `what` names the option.
-void checkGamma(double gamma, const char* what = "gamma");
+// lattice to diffuse (core/parameter_bounds.hpp). `what` names the parameter.
+void checkGamma(double gamma, const std::string& what = nameOf(Parameter::Gamma));
 
 // How far `steps` steps started in equilibrium (f_i = w_i X, as every run
 // starts) miss the smoothing of the diffusion equation, as a fraction of it:
@@ -37,8 +41,8 @@ double startUpError(double gamma, long steps);
 // range where the scheme follows the diffusion equation it stands for.
 inline constexpr double accurateStartUpError = 0.10;
 
-// That warning, on stderr, naming the option and what to change; silent
-// inside the accurate range.
-void warnIfInaccurate(double gamma, long steps, const char* what);
+// That warning, on stderr, naming gamma and what to change; silent inside
+// the accurate range.
+void warnIfInaccurate(double gamma, long steps);
 
 }  // namespace lbmshape::relaxation

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "mesh/colour_space.hpp"
 #include "mesh/glb_container.hpp"
 #include "mesh/gltf_compression.hpp"
@@ -57,7 +58,7 @@ std::vector<float> linearColours(const TriangleMesh& mesh)
 tinygltf::Value integer(size_t value)
 {
   if (value > size_t(std::numeric_limits<int>::max()))
-    throw OutputError("a compressed glTF file of more than 2 GB cannot be written; write fewer frames, or without --compress");
+    throw OutputError("a compressed glTF file of more than 2 GB cannot be written; write fewer frames, or without " + nameOf(Parameter::Compression));
   return tinygltf::Value(int(value));
 }
 
@@ -308,7 +309,7 @@ size_t decodedLength(const tinygltf::Model& model)
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
 {
   const bool binary = format == MeshFormat::Glb;
-  if (model.buffers.size() == 2 && !binary) throw UsageError("--compress writes .glb files, not " + file.target().string());
+  if (model.buffers.size() == 2 && !binary) throw UsageError(nameOf(Parameter::Compression) + " writes .glb files, not " + file.target().string());
   // A compressed file of no surface is the plain file of no surface: nothing
   // to encode, so neither extension.
   const bool compressed = model.buffers.size() == 2 && !model.buffers[0].data.empty();

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/log.hpp"
 #include "mesh/gltf_writer.hpp"
 #include "mesh/mesh_format.hpp"
@@ -24,7 +25,7 @@ MeshFormat outputFormat(const std::filesystem::path& path)
 void requireCompressible(MeshFormat format, const std::filesystem::path& path, GltfCompression compression)
 {
   if (compression != GltfCompression::None && format != MeshFormat::Glb)
-    throw UsageError("--compress writes .glb files, not " + path.string());
+    throw UsageError(nameOf(Parameter::Compression) + " writes .glb files, not " + path.string());
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
   std::error_code ec;
   if (replaceInput || !std::filesystem::equivalent(output, input, ec) || ec) return;
   throw UsageError("the output " + output.string() + " is the input mesh " + input.string() +
-                   ": write the result elsewhere, or give --force to replace the input");
+                   ": write the result elsewhere, or give " + nameOf(Parameter::Force) + " to replace the input");
 }
 
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty, GltfCompression compression)

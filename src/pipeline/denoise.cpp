@@ -6,6 +6,7 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/log.hpp"
 #include "lbm/adaptive_gamma.hpp"
@@ -264,17 +265,17 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
 
 void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
 {
-  if (grid.voxel && !(*grid.voxel > 0.0 && std::isfinite(*grid.voxel))) throw UsageError("--voxel must be a positive size");
-  if (!grid.voxel && grid.resolution < 8) throw UsageError("--res must be at least 8");
-  if (!(grid.marginVoxels >= 1.0)) throw UsageError("--margin must be at least 1 voxel");
-  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude)) throw UsageError("--noise must be zero or positive");
+  if (grid.voxel && !(*grid.voxel > 0.0 && std::isfinite(*grid.voxel))) throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
+  if (!grid.voxel && grid.resolution < 8) throw UsageError(nameOf(Parameter::Resolution) + " must be at least 8");
+  if (!(grid.marginVoxels >= 1.0)) throw UsageError(nameOf(Parameter::Margin) + " must be at least 1 voxel");
+  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude)) throw UsageError(nameOf(Parameter::Noise) + " must be zero or positive");
 }
 
 void checkDenoiseOptions(const DenoiseOptions& o)
 {
-  relaxation::checkGamma(o.gamma, "--gamma");
+  relaxation::checkGamma(o.gamma);
   if (o.steps && (*o.steps < 0 || *o.steps > parameter_bounds::maxSteps))
-    throw UsageError("--steps must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
+    throw UsageError(nameOf(Parameter::Steps) + " must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -282,7 +283,7 @@ void requireColourFormat(const std::filesystem::path& output, const std::string&
 {
   const auto format = meshFormatOf(output);
   if (format != MeshFormat::Glb && format != MeshFormat::Gltf && format != MeshFormat::Obj)
-    throw UsageError("--color curvature writes vertex colours into .glb, .gltf or .obj files, not " + what);
+    throw UsageError(nameOf(Parameter::ColourByCurvature) + " writes vertex colours into .glb, .gltf or .obj files, not " + what);
 }
 
 double colourByCurvature(TriangleMesh& mesh)
@@ -320,10 +321,11 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
   TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
-                         " steps; use fewer --steps, a smaller --gamma or a finer --res");
+                         " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) + " or a finer " +
+                         nameOf(Parameter::Resolution));
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
-  if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps, "--gamma");
+  if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps);
   const double lbmMs = clock.ms("lbm");
   const double updates = double(smoothed.cells) * smoothed.stepsRun;
   nlohmann::json report = {
@@ -347,7 +349,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
 
 void warnIfFewGivenSteps(const DenoiseOptions& o)
 {
-  if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps, "--gamma");
+  if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps);
 }
 
 }  // namespace

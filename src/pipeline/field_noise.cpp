@@ -5,13 +5,14 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 
 namespace lbmshape {
 
 void addFieldNoise(Volume& field, const FieldNoise& noise)
 {
   if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude))
-    throw UsageError("--noise must be zero or a positive fraction of the field's magnitude");
+    throw UsageError(nameOf(Parameter::Noise) + " must be zero or a positive fraction of the field's magnitude");
   if (noise.amplitude == 0.0) return;
   float largest = 0.0f;
   for (size_t i = 0; i < field.size(); ++i) largest = std::max(largest, std::abs(field[i]));

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/stopwatch.hpp"
 #include "core/worker_threads.hpp"
 #include "mesh/mesh_writer.hpp"
@@ -143,8 +144,9 @@ void FrameWriter::run()
       if (empty && job.first == frameCount_ - 1)
         throw NumericalError("frame " + std::to_string(job.first) +
                              ", the last, has no surface: the morph ended with no inside at all, on its way from "
-                             "the source to a target it does not overlap; give it more --steps or a larger --cs, "
-                             "or place the shapes to overlap with --align");
+                             "the source to a target it does not overlap; give it more " + nameOf(Parameter::Steps) +
+                             " or a larger " + nameOf(Parameter::Cs) + ", or place the shapes to overlap with " +
+                             nameOf(Parameter::Align));
       const double extractMs = extract.ms();
       Stopwatch write;
       if (sink_)

@@ -12,6 +12,7 @@
 #include "analysis/surface_comparison.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/folder_lock.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/interrupt.hpp"
@@ -104,7 +105,7 @@ std::optional<FolderLock> checkFolder(const fs::path& folder, bool force)
   if (fs::is_directory(folder, ec)) {
     std::optional<FolderLock> lock(std::in_place, folder);
     if (!fs::is_empty(folder, ec) && !force)
-      throw OutputError(folder.string() + " is not empty; use --force to write the frames into it anyway");
+      throw OutputError(folder.string() + " is not empty; use " + nameOf(Parameter::Force) + " to write the frames into it anyway");
     AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
     return lock;
   }
@@ -204,28 +205,31 @@ std::string frameRanges(const std::vector<int>& frames)
 
 void checkMorphOptions(const MorphOptions& o)
 {
-  relaxation::checkGamma(o.gamma, "--gamma");
+  relaxation::checkGamma(o.gamma);
   if (!(o.cs > 0.0 && o.cs <= parameter_bounds::maxCs))
-    throw UsageError("--cs must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
+    throw UsageError(nameOf(Parameter::Cs) + " must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
                      "each step closes two thirds of the distance to the target)");
   if (o.frames < 2 || o.frames > parameter_bounds::maxFrames)
-    throw UsageError("--frames must be from 2 (the source and the result) to " + std::to_string(parameter_bounds::maxFrames));
-  if (o.stepsPerFrame && o.steps) throw UsageError("give --steps-per-frame or --steps, not both");
+    throw UsageError(nameOf(Parameter::Frames) + " must be from 2 (the source and the result) to " + std::to_string(parameter_bounds::maxFrames));
+  if (o.stepsPerFrame && o.steps) throw UsageError("give " + nameOf(Parameter::StepsPerFrame) + " or " + nameOf(Parameter::Steps) + ", not both");
   // A morph of no steps would only repeat the source; denoise --steps 0 is
   // the way to see a mesh on the grid unchanged.
-  const char* noSteps = " (with 0 steps every frame would be the source; lbmshape denoise --steps 0 shows a mesh on the grid)";
-  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError("--steps-per-frame must be at least 1" + std::string(noSteps));
-  if (o.steps && *o.steps < 1) throw UsageError("--steps must be at least 1" + std::string(noSteps));
+  const std::string noSteps = " (with 0 steps every frame would be the source; " +
+                              std::string(parameterNaming() == ParameterNaming::CommandLine ? "lbmshape denoise --steps 0"
+                                                                                           : "a denoise of 0 steps") +
+                              " shows a mesh on the grid)";
+  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError(nameOf(Parameter::StepsPerFrame) + " must be at least 1" + noSteps);
+  if (o.steps && *o.steps < 1) throw UsageError(nameOf(Parameter::Steps) + " must be at least 1" + noSteps);
   const long total = givenStepCount(o);
   if (total > parameter_bounds::maxSteps)
-    throw UsageError("the morph would run " + std::to_string(total) + " steps (--steps, or --steps-per-frame times " +
-                     "--frames - 1); at most " + std::to_string(parameter_bounds::maxSteps));
-  if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError("--fps must be positive");
-  if (!(o.tolerance > 0.0)) throw UsageError("--tolerance must be positive");
-  if (!meshFormatOf("x." + o.format)) throw UsageError("--format " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
+    throw UsageError("the morph would run " + std::to_string(total) + " steps (" + nameOf(Parameter::Steps) + ", or " + nameOf(Parameter::StepsPerFrame) +
+                     " times " + nameOf(Parameter::Frames) + " - 1); at most " + std::to_string(parameter_bounds::maxSteps));
+  if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError(nameOf(Parameter::Fps) + " must be positive");
+  if (!(o.tolerance > 0.0)) throw UsageError(nameOf(Parameter::Tolerance) + " must be positive");
+  if (!meshFormatOf("x." + o.format)) throw UsageError(nameOf(Parameter::Format) + " " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
   if (o.compression != GltfCompression::None && meshFormatOf("x." + o.format) != MeshFormat::Glb)
-    throw UsageError("--compress writes .glb frames, not --format " + o.format);
-  if (o.colourByCurvature) requireColourFormat("x." + o.format, "--format " + o.format);
+    throw UsageError(nameOf(Parameter::Compression) + " writes .glb frames, not " + nameOf(Parameter::Format) + " " + o.format);
+  if (o.colourByCurvature) requireColourFormat("x." + o.format, nameOf(Parameter::Format) + " " + o.format);
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -385,8 +389,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   if (newFolder) newFolder->keep();
   const bool converged = lastError < o.tolerance;
   if (!converged && !stepsGiven(o))
-    log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (--tolerance " +
-                 std::to_string(o.tolerance) + "); where the target's distance field has kinks (sharp concave edges, thin gaps) the lattice settles a little off it; a larger --tolerance accepts that");
+    log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (" + nameOf(Parameter::Tolerance) + " " +
+                 std::to_string(o.tolerance) + "); where the target's distance field has kinks (sharp concave edges, thin gaps) the lattice settles a little off it; a larger " + nameOf(Parameter::Tolerance) + " accepts that");
 
   const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
   // Against what the grid can hold of the target, every vertex included: how

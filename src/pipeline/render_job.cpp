@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/log.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/stopwatch.hpp"
@@ -100,7 +101,7 @@ Colouring parseColouring(const std::string& text)
   if (text == "curvature") return {Colouring::By::Curvature, {}};
   const std::string prefix = "distance:";
   if (text.rfind(prefix, 0) == 0 && text.size() > prefix.size()) return {Colouring::By::Distance, text.substr(prefix.size())};
-  throw UsageError("--color '" + text + "' is not none, curvature or distance:REFERENCE_MESH");
+  throw UsageError(nameOf(Parameter::Colouring) + " '" + text + "' is not none, curvature or distance:REFERENCE_MESH");
 }
 
 void checkPictureSize(glm::ivec2 size, const std::string& given)
@@ -108,7 +109,7 @@ void checkPictureSize(glm::ivec2 size, const std::string& given)
   namespace bounds = parameter_bounds;
   if (size.x < bounds::minPictureSide || size.y < bounds::minPictureSide || size.x > bounds::maxPictureSide ||
       size.y > bounds::maxPictureSide || long(size.x) * long(size.y) > bounds::maxPicturePixels)
-    throw UsageError("--size " + given + " is outside the pictures lbmshape draws: each side " +
+    throw UsageError(nameOf(Parameter::Size) + " " + given + " is outside the pictures lbmshape draws: each side " +
                      std::to_string(bounds::minPictureSide) + " to " + std::to_string(bounds::maxPictureSide) +
                      " pixels, at most " + std::to_string(bounds::maxPicturePixels) + " pixels in all (4096x4096)");
 }
@@ -118,7 +119,7 @@ glm::ivec2 parsePictureSize(const std::string& text)
   const size_t x = text.find_first_of("xX");
   const std::optional<int> w = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(0, x));
   const std::optional<int> h = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(x + 1));
-  if (!w || !h) throw UsageError("--size '" + text + "' is not WIDTHxHEIGHT in pixels (for example 1024x768)");
+  if (!w || !h) throw UsageError(nameOf(Parameter::Size) + " '" + text + "' is not WIDTHxHEIGHT in pixels (for example 1024x768)");
   checkPictureSize({*w, *h}, text);
   return {*w, *h};
 }
@@ -126,9 +127,9 @@ glm::ivec2 parsePictureSize(const std::string& text)
 void checkRenderOptions(const RenderOptions& o)
 {
   if (o.folderMeshes < 1 || o.folderMeshes > parameter_bounds::maxFolderMeshes)
-    throw UsageError("--count must be 1 to " + std::to_string(parameter_bounds::maxFolderMeshes));
+    throw UsageError(nameOf(Parameter::Count) + " must be 1 to " + std::to_string(parameter_bounds::maxFolderMeshes));
   if (o.columns < 0 || o.columns > parameter_bounds::maxFolderMeshes)
-    throw UsageError("--columns must be 0 (automatic) to " + std::to_string(parameter_bounds::maxFolderMeshes));
+    throw UsageError(nameOf(Parameter::Columns) + " must be 0 (automatic) to " + std::to_string(parameter_bounds::maxFolderMeshes));
   if (o.size) checkPictureSize(*o.size, std::to_string(o.size->x) + "x" + std::to_string(o.size->y));
 }
 
@@ -154,11 +155,11 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
   const render::Layout layout = render::arrange(picture);
   for (const render::Rect& cell : layout.meshCells)
     if (cell.width < parameter_bounds::minPictureSide || cell.height < parameter_bounds::minPictureSide)
-      throw UsageError("--size " + std::to_string(picture.width) + "x" + std::to_string(picture.height) + " leaves cells of " +
+      throw UsageError(nameOf(Parameter::Size) + " " + std::to_string(picture.width) + "x" + std::to_string(picture.height) + " leaves cells of " +
                        std::to_string(cell.width) + "x" + std::to_string(cell.height) + " pixels for " +
                        std::to_string(meshes.size()) + " meshes in " + std::to_string(layout.columns) +
                        " columns; each needs at least " + std::to_string(parameter_bounds::minPictureSide) +
-                       " pixels each way: give a larger --size or other --columns");
+                       " pixels each way: give a larger " + nameOf(Parameter::Size) + " or other " + nameOf(Parameter::Columns));
   gpu::GpuContext& context = device.drawingContext();
   Stopwatch drawing;
   render::Image image = render::drawSurfaces(context, picture, layout);
@@ -228,8 +229,8 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
 
 void checkPreview(const fs::path& png, const ComputeDevice& device, const fs::path& createdLater)
 {
-  render::requirePngPath(png, "--preview");
-  device.drawingContext().requireDrawing(", or leave out --preview");
+  render::requirePngPath(png, nameOf(Parameter::Preview));
+  device.drawingContext().requireDrawing(", or leave out " + nameOf(Parameter::Preview));
   std::error_code ec;
   if (!createdLater.empty() && fs::weakly_canonical(png.parent_path().empty() ? "." : png.parent_path(), ec) ==
                                    fs::weakly_canonical(createdLater, ec))

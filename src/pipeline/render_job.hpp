@@ -27,7 +27,7 @@ struct Colouring {
 };
 // none, curvature or distance:REF; UsageError naming --color otherwise.
 Colouring parseColouring(const std::string& text);
-// "WxH"; UsageError naming --size unless both are whole numbers within
+// "WxH"; UsageError naming the size unless both are whole numbers within
 // parameter_bounds (pictureSide, picturePixels).
 glm::ivec2 parsePictureSize(const std::string& text);
 

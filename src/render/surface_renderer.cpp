@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/log.hpp"
 #include "core/stopwatch.hpp"
 #include "gpu/gpu_buffer.hpp"
@@ -187,9 +188,9 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
       h > limits.maxImageDimension2D)
     throw DeviceError("a picture of " + std::to_string(w) + "x" + std::to_string(h) + " is larger than the Vulkan device draws (" +
                       std::to_string(std::min(limits.maxFramebufferWidth, limits.maxImageDimension2D)) + "x" +
-                      std::to_string(std::min(limits.maxFramebufferHeight, limits.maxImageDimension2D)) + "); use a smaller --size");
+                      std::to_string(std::min(limits.maxFramebufferHeight, limits.maxImageDimension2D)) + "); use a smaller " + nameOf(Parameter::Size));
   if (picture.wireframe && !context.canDrawLines())
-    throw DeviceError("the Vulkan device " + context.description().name + " cannot draw lines (fillModeNonSolid), so no --wireframe");
+    throw DeviceError("the Vulkan device " + context.description().name + " cannot draw lines (fillModeNonSolid), so no " + nameOf(Parameter::Wireframe));
 
   // The vertices are one allocation: refused, before anything is
   // allocated, where the device cannot make it.

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 
 namespace lbmshape::render {
 
@@ -13,7 +14,7 @@ View parseView(const std::string& text)
   if (text == "side") return {90.0, 0.0};
   if (text == "top") return {0.0, 90.0};
   if (text == "iso") return {45.0, std::atan(1.0 / std::sqrt(2.0)) * 180.0 / M_PI};
-  const std::string expected = "--view '" + text + "' is not front, side, top, iso or AZ,EL in degrees (for example 30,20)";
+  const std::string expected = nameOf(Parameter::View) + " '" + text + "' is not front, side, top, iso or AZ,EL in degrees (for example 30,20)";
   const size_t comma = text.find(',');
   if (comma == std::string::npos) throw UsageError(expected);
   const std::string azimuth = text.substr(0, comma), elevation = text.substr(comma + 1);
@@ -24,7 +25,7 @@ View parseView(const std::string& text)
   view.elevationDegrees = std::strtod(elevation.c_str(), &end);
   if (elevation.empty() || *end != '\0' || !std::isfinite(view.elevationDegrees)) throw UsageError(expected);
   if (std::abs(view.elevationDegrees) > 90.0)
-    throw UsageError("--view elevation " + elevation + " is outside [-90, 90] degrees");
+    throw UsageError(nameOf(Parameter::View) + " elevation " + elevation + " is outside [-90, 90] degrees");
   return view;
 }
 

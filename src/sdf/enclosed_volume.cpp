@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 
 namespace lbmshape {
 
@@ -16,7 +17,8 @@ namespace {
 {
   throw InputError("cannot use " + meshPath.string() +
                    ": it encloses no volume (its winding number is below 1/2 at every cell of the grid); an open "
-                   "sheet has no inside, and a solid thinner than a voxel needs a finer --res or --voxel");
+                   "sheet has no inside, and a solid thinner than a voxel needs a finer " + nameOf(Parameter::Resolution) + " or " +
+                   nameOf(Parameter::Voxel));
 }
 }  // namespace
 

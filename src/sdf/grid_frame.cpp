@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 
 namespace lbmshape {
 namespace {
@@ -22,8 +23,8 @@ void checkBox(const Bounds& box)
 GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
 {
   checkBox(box);
-  if (!(voxel > 0.0) || !std::isfinite(voxel)) throw UsageError("--voxel must be a positive size");
-  if (!(marginVoxels >= 0.0)) throw UsageError("--margin must be zero or more voxels");
+  if (!(voxel > 0.0) || !std::isfinite(voxel)) throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
+  if (!(marginVoxels >= 0.0)) throw UsageError(nameOf(Parameter::Margin) + " must be zero or more voxels");
   GridFrame frame;
   frame.voxel = voxel;
   const glm::dvec3 size = box.size();
@@ -34,7 +35,8 @@ GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
     double count = std::ceil(span - 1e-9) + 1.0;
     if (count > 1 << 16) {
       std::ostringstream m;
-      m << "a voxel of " << voxel << " makes the grid " << count << " cells long; use a larger --voxel or --res";
+      m << "a voxel of " << voxel << " makes the grid " << count << " cells long; use a larger " << nameOf(Parameter::Voxel) << " or "
+        << nameOf(Parameter::Resolution);
       throw UsageError(m.str());
     }
     cells[a] = int(count);
@@ -47,10 +49,10 @@ GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
 GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVoxels)
 {
   checkBox(box);
-  if (!(marginVoxels >= 0.0)) throw UsageError("--margin must be zero or more voxels");
+  if (!(marginVoxels >= 0.0)) throw UsageError(nameOf(Parameter::Margin) + " must be zero or more voxels");
   if (resolution < 2.0 * marginVoxels + 4.0) {
     std::ostringstream m;
-    m << "--res " << resolution << " is too coarse for a margin of " << marginVoxels << " voxels; use at least "
+    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of " << marginVoxels << " voxels; use at least "
       << int(std::ceil(2.0 * marginVoxels + 4.0));
     throw UsageError(m.str());
   }

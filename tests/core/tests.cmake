@@ -1,3 +1,4 @@
 lbmshape_test(core_tests
+  ${CMAKE_CURRENT_LIST_DIR}/parameter_names_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/progress_test.cpp
 )

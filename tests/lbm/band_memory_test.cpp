@@ -8,6 +8,7 @@
 
 #include "band/brick_set.hpp"
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "lbm/band_vulkan_solver.hpp"
 #include "support/roomy_device.hpp"
 
@@ -75,7 +76,7 @@ TEST(BandMemory, ABandBeyondTheDeviceIsRefusedWithWhatWouldFit)
   EXPECT_NE(message.find("262144 cells"), std::string::npos) << message;
   EXPECT_NE(message.find("test device holds at most 65536"), std::string::npos) << message;
   // Cells go as the area, the square of the side: half the side fits, less a margin.
-  EXPECT_NE(message.find("--res 30)"), std::string::npos) << message;
+  EXPECT_NE(message.find(nameOf(Parameter::Resolution) + " 30)"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "render/view.hpp"
 
 namespace lbmshape::render {
@@ -49,7 +50,7 @@ TEST(View, AnythingElseIsAUsageErrorNamingTheOption)
       parseView(text);
       ADD_FAILURE() << "accepted '" << text << "'";
     } catch (const UsageError& e) {
-      EXPECT_NE(std::string(e.what()).find("--view"), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(nameOf(Parameter::View) + " ", 0), 0u) << e.what();
     }
   }
 }

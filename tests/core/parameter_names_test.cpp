@@ -1,0 +1,90 @@
+// The library's messages name a parameter as the caller knows it: the option
+// struct's field for a C++ program, the flag on the command line, the keyword
+// in Python (core/parameter_names.hpp).
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "core/parameter_names.hpp"
+#include "pipeline/denoise.hpp"
+#include "pipeline/morph.hpp"
+
+namespace lbmshape {
+namespace {
+
+// Switches the process-wide naming for one test and back.
+class NamingFor {
+public:
+  explicit NamingFor(ParameterNaming naming) : previous_(parameterNaming()) { useParameterNames(naming); }
+  ~NamingFor() { useParameterNames(previous_); }
+
+private:
+  ParameterNaming previous_;
+};
+
+template <typename Check>
+std::string usageMessage(Check check)
+{
+  try {
+    check();
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no UsageError";
+  return "";
+}
+
+TEST(ParameterNames, EachAudienceHasItsOwnName)
+{
+  EXPECT_EQ(nameOf(Parameter::Resolution, ParameterNaming::Library), "grid.resolution");
+  EXPECT_EQ(nameOf(Parameter::Resolution, ParameterNaming::CommandLine), "--res");
+  EXPECT_EQ(nameOf(Parameter::Resolution, ParameterNaming::Python), "res");
+  EXPECT_EQ(nameOf(Parameter::StepsPerFrame, ParameterNaming::CommandLine), "--steps-per-frame");
+  // The Python module has no keyword for the margin: its struct name stands.
+  EXPECT_EQ(nameOf(Parameter::Margin, ParameterNaming::Python), "grid.marginVoxels");
+}
+
+TEST(ParameterNames, ALibraryCallerIsToldTheOptionNotTheFlag)
+{
+  ASSERT_EQ(parameterNaming(), ParameterNaming::Library) << "what a program linking the library gets";
+  DenoiseOptions denoise;
+  denoise.gamma = -1.0;
+  std::string message = usageMessage([&] { checkDenoiseOptions(denoise); });
+  EXPECT_EQ(message.rfind("gamma must be", 0), 0u) << message;
+  EXPECT_EQ(message.find("--"), std::string::npos) << message;
+
+  denoise = DenoiseOptions();
+  denoise.grid.resolution = 4;
+  message = usageMessage([&] { checkDenoiseOptions(denoise); });
+  EXPECT_EQ(message, "grid.resolution must be at least 8");
+
+  MorphOptions morph;
+  morph.steps = 10;
+  morph.stepsPerFrame = 2;
+  message = usageMessage([&] { checkMorphOptions(morph); });
+  EXPECT_EQ(message, "give stepsPerFrame or steps, not both");
+
+  morph = MorphOptions();
+  morph.format = "xyz";
+  message = usageMessage([&] { checkMorphOptions(morph); });
+  EXPECT_EQ(message.rfind("format xyz is not a mesh format", 0), 0u) << message;
+}
+
+TEST(ParameterNames, TheCommandLineIsToldTheFlagAndPythonTheKeyword)
+{
+  DenoiseOptions o;
+  o.grid.resolution = 4;
+  {
+    NamingFor commandLine(ParameterNaming::CommandLine);
+    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "--res must be at least 8");
+  }
+  {
+    NamingFor python(ParameterNaming::Python);
+    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "res must be at least 8");
+  }
+  EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "grid.resolution must be at least 8");
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -7,8 +7,8 @@
 #   scripts/sanitize.sh [ctest args]          the whole suite: the asan preset
 #                                             in build-asan/ (about 6 min to
 #                                             build and 7.5 min to run on 2 cores)
-#   scripts/sanitize.sh --unit [ctest args]   the tests labelled unit (each
-#                                             module and its GPU kernels; no
+#   scripts/sanitize.sh --unit [ctest args]   the tests labelled unit and gpu
+#                                             (each module and its GPU kernels; no
 #                                             whole jobs, no command line, no
 #                                             shared meshes): the asan-unit
 #                                             preset in build-asan-unit/, what

@@ -1,6 +1,7 @@
 #include "gpu/gpu_context.hpp"
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "core/log.hpp"
 #include "core/stopwatch.hpp"
 
@@ -110,17 +111,27 @@ ComputeProgram& GpuContext::program(const ProgramSpec& spec)
 
 void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
+  replayAndWait(this->record(record));
+}
+
+RecordedCommands GpuContext::record(const std::function<void(vk::CommandBuffer)>& commands)
+{
   vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
-  if (!*timestamps_) {
-    submitAndWait(queue_, buffers[0], record);
-    return;
-  }
-  submitAndWait(queue_, buffers[0], [&](vk::CommandBuffer cmd) {
-    cmd.resetQueryPool(*timestamps_, 0, 2);
-    cmd.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
-    record(cmd);
-    cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
+  vk::raii::CommandBuffer cmd = std::move(buffers[0]);
+  recordInto(cmd, {}, [&](vk::CommandBuffer c) {
+    if (!*timestamps_) return commands(c);
+    c.resetQueryPool(*timestamps_, 0, 2);
+    c.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
+    commands(c);
+    c.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
   });
+  return RecordedCommands(std::move(cmd));
+}
+
+void GpuContext::replayAndWait(const RecordedCommands& commands)
+{
+  submitAndWait(queue_, commands.handle());
+  if (!*timestamps_) return;
   const auto [result, ticks] = timestamps_.getResults<uint64_t>(0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t),
                                                                vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
   if (result == vk::Result::eSuccess && ticks[1] >= ticks[0])
@@ -130,21 +141,22 @@ void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record
 void GpuContext::requireDrawing(const std::string& otherwise) const
 {
   if (!graphics_)
-    throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with --device" +
-                      otherwise);
+    throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with " +
+                      nameOf(Parameter::Device) + otherwise);
 }
 
 void GpuContext::drawAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
   requireDrawing();
   vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*graphics_->pool, vk::CommandBufferLevel::ePrimary, 1));
-  submitAndWait(graphics_->queue, buffers[0], record);
+  recordInto(buffers[0], vk::CommandBufferUsageFlagBits::eOneTimeSubmit, record);
+  submitAndWait(graphics_->queue, *buffers[0]);
 }
 
-void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::raii::CommandBuffer& cmd,
-                               const std::function<void(vk::CommandBuffer)>& record)
+void GpuContext::recordInto(vk::raii::CommandBuffer& cmd, vk::CommandBufferUsageFlags usage,
+                            const std::function<void(vk::CommandBuffer)>& record)
 {
-  cmd.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+  cmd.begin(vk::CommandBufferBeginInfo(usage));
   // Whatever earlier submissions wrote is visible to this one: submissions
   // are ordered by the fence wait, but their memory needs this barrier.
   vk::MemoryBarrier previousWrites(vk::AccessFlagBits::eMemoryWrite,
@@ -153,8 +165,11 @@ void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::raii::CommandBuffer& 
                       previousWrites, {}, {});
   record(*cmd);
   cmd.end();
-  vk::CommandBuffer handle = *cmd;
-  queue.submit(vk::SubmitInfo({}, {}, handle), *fence_);
+}
+
+void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd)
+{
+  queue.submit(vk::SubmitInfo({}, {}, cmd), *fence_);
   if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
     throw DeviceError("timed out waiting for the Vulkan device");
   device_.resetFences(*fence_);

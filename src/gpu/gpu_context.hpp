@@ -16,6 +16,7 @@
 #include "gpu/compute_program.hpp"
 #include "gpu/device_description.hpp"
 #include "gpu/pipeline_cache_file.hpp"
+#include "gpu/recorded_commands.hpp"
 #include "gpu/vulkan_instance.hpp"
 
 namespace lbmshape::gpu {
@@ -54,6 +55,10 @@ public:
 
   // Records commands into a fresh command buffer, submits it and waits.
   void runAndWait(const std::function<void(vk::CommandBuffer)>& record);
+  // Records commands for the compute queue once, to be replayed as often
+  // as wanted (gpu/recorded_commands.hpp); then submits them and waits.
+  RecordedCommands record(const std::function<void(vk::CommandBuffer)>& commands);
+  void replayAndWait(const RecordedCommands& commands);
 
   // Whether the device draws lines (fillModeNonSolid, for wireframes).
   bool canDrawLines() const { return fillModeNonSolid_; }
@@ -87,8 +92,11 @@ private:
     vk::raii::Queue queue{nullptr};
     vk::raii::CommandPool pool{nullptr};
   };
-  void submitAndWait(vk::raii::Queue& queue, vk::raii::CommandBuffer& cmd,
-                     const std::function<void(vk::CommandBuffer)>& record);
+  // Begins `cmd` with the barrier that makes earlier submissions' writes
+  // visible, records into it and ends it.
+  static void recordInto(vk::raii::CommandBuffer& cmd, vk::CommandBufferUsageFlags usage,
+                         const std::function<void(vk::CommandBuffer)>& record);
+  void submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd);
 
   uint32_t queueFamily_ = 0;
   vk::raii::Device device_{nullptr};

@@ -104,6 +104,9 @@ struct BandVulkanSolver::Resources {
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
   std::vector<vk::raii::DescriptorSet> sets;  // [k]: reads copy k, writes the other
+  // Batches of steps, recorded once each (by count, first copy, slots, push
+  // constants and pipeline) and replayed; writeDescriptors() clears them.
+  gpu::RecordedCommandCache recordedSteps;
 
   int current = 0;
   int steps = 0;
@@ -124,6 +127,7 @@ struct BandVulkanSolver::Resources {
   // buffer is replaced.
   void writeDescriptors()
   {
+    recordedSteps.clear();  // they bind these sets
     using T = vk::DescriptorType;
     views.clear();
     const vk::BufferView copyViews[2] = {view(moments[0], vk::Format::eR32G32B32A32Sfloat),
@@ -432,18 +436,21 @@ void BandVulkanSolver::step(int count)
   const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    const int first = r_->current;
+    const band_shader::StepParameters push = r_->parameters(false);
+    const std::string key = gpu::keyOf(batch, first, r_->stepWorks, push, static_cast<VkPipeline>(*program.pipeline));
+    r_->context.replayAndWait(r_->recordedSteps.get(r_->context, key, [&](vk::CommandBuffer cmd) {
       cmd.bindPipeline(bind, *program.pipeline);
-      cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(false));
+      cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       for (int s = 0; s < batch; ++s) {
-        r_->dispatch(cmd, program, (r_->current + s) % 2, false);
+        r_->dispatch(cmd, program, (first + s) % 2, false);
         // The next step reads what this one wrote and overwrites what it read.
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
                             vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eShaderRead,
                                               vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
                             {}, {});
       }
-    });
+    }));
     r_->current = (r_->current + batch) % 2;
     r_->steps += batch;
     count -= batch;

@@ -100,6 +100,10 @@ struct VulkanSolver::Resources {
   vk::raii::DescriptorPool pool{nullptr};
   std::vector<vk::raii::DescriptorSet> latticeSets;  // [k]: reads copy k, writes the other
   vk::raii::DescriptorSet initSet{nullptr};
+  // Batches of steps, recorded once each (by count, first copy, push
+  // constants and pipeline: the relaxation's and source's variant) and
+  // replayed; writeDescriptors() clears them.
+  gpu::RecordedCommandCache recordedSteps;
 
   int current = 0;  // copy holding the latest post-collision distributions
   int steps = 0;
@@ -132,6 +136,9 @@ struct VulkanSolver::Resources {
   }
 
   void upload(const Volume& values, GpuBuffer& target);
+  // The first half of upload: the values in the staging buffer, in the
+  // lattice layout, for a copy recorded with others in one submission.
+  void stage(const Volume& values);
   void writeDescriptors();
 };
 
@@ -194,6 +201,7 @@ VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
 
 void VulkanSolver::Resources::writeDescriptors()
 {
+  recordedSteps.clear();  // they bind these sets
   std::vector<vk::WriteDescriptorSet> writes;
   std::array<vk::BufferView, 2> copyViews = {*latticeViews[0], *latticeViews[1]};
   std::array<std::array<vk::DescriptorBufferInfo, groupCount>, 2> groupRanges;  // [k][g]: group g of copy k
@@ -220,15 +228,20 @@ void VulkanSolver::Resources::writeDescriptors()
 // Copies a volume into a device buffer in the lattice layout (padding zero).
 void VulkanSolver::Resources::upload(const Volume& values, GpuBuffer& target)
 {
+  stage(values);
+  context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, layout.volumeBytes));
+  });
+}
+
+void VulkanSolver::Resources::stage(const Volume& values)
+{
   const Extent3& e = layout.extent;
   float* dst = reinterpret_cast<float*>(staging.mapped());
   std::memset(dst, 0, layout.volumeBytes);
   for (int z = 0; z < e.nz; ++z)
     for (int y = 0; y < e.ny; ++y)
       std::memcpy(dst + layout.linearIndex(0, y, z), values.data() + e.index(0, y, z), size_t(e.nx) * 4);
-  context.runAndWait([&](vk::CommandBuffer cmd) {
-    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, layout.volumeBytes));
-  });
 }
 
 VulkanSolver::VulkanSolver(gpu::GpuContext& context, Extent3 extent)
@@ -281,38 +294,41 @@ void VulkanSolver::initialize(const Volume& fieldValues)
   solver_state::checkSameExtent(extent(), fieldValues.extent(), "field");
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->source.has_value());
   // The field buffer holds X at the start: under the paper's rule, the
-  // first step's X before.
-  r_->upload(solver_state::initialDensity(fieldValues, r_->source), r_->field);
-  if (r_->paperRuleGamma0) {
-    // gamma0 in every cell, the rows' padding too (whose X before and X
-    // are 0: a 0 there would make the rule divide by it).
-    const float gamma0 = float(*r_->paperRuleGamma0);
-    uint32_t bits;
-    std::memcpy(&bits, &gamma0, 4);
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(r_->omega.handle(), 0, VK_WHOLE_SIZE, bits); });
-    r_->paperRuleReady = true;
-  }
+  // first step's X before. One submission: the upload, the paper rule's
+  // seed, the equilibrium and under the rule the first X before.
+  r_->stage(solver_state::initialDensity(fieldValues, r_->source));
   auto& program = r_->context.program(r_->initProgram());
+  auto& fieldProgram = r_->context.program(r_->latticeProgram("lbm_field"));
   const LatticeLayout& l = r_->layout;
+  const StepParameters push = r_->parameters();
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.copyBuffer(r_->staging.handle(), r_->field.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
+    if (r_->paperRuleGamma0) {
+      // gamma0 in every cell, the rows' padding too (whose X before and X
+      // are 0: a 0 there would make the rule divide by it).
+      const float gamma0 = float(*r_->paperRuleGamma0);
+      uint32_t bits;
+      std::memcpy(&bits, &gamma0, 4);
+      cmd.fillBuffer(r_->omega.handle(), 0, VK_WHOLE_SIZE, bits);
+    }
+    barrier(cmd, vk::AccessFlagBits::eTransferWrite, vk::PipelineStageFlagBits::eTransfer, shaderRead | shaderWrite,
+            computeStage);
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->initSet, {});
     cmd.dispatch(groups(uint64_t(l.row), initWorkgroupSize), uint32_t(l.extent.ny), uint32_t(l.extent.nz));
-  });
-  r_->current = 0;
-  r_->steps = 0;
-  if (r_->paperRuleGamma0) {
-    // The first step's X before is what it pulls, so that gamma0 is its
-    // gamma: the field pass leaves that in the field buffer.
-    auto& fieldProgram = r_->context.program(r_->latticeProgram("lbm_field"));
-    const StepParameters push = r_->parameters();
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    if (r_->paperRuleGamma0) {
+      // The first step's X before is what it pulls, so that gamma0 is its
+      // gamma: the field pass leaves that in the field buffer.
+      barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
       cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *fieldProgram.pipeline);
       cmd.pushConstants<StepParameters>(*fieldProgram.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *fieldProgram.layout, 0, *r_->latticeSets[0], {});
       r_->dispatchLattice(cmd);
-    });
-  }
+    }
+  });
+  r_->paperRuleReady = r_->paperRuleGamma0.has_value();
+  r_->current = 0;
+  r_->steps = 0;
   // The pipelines of the steps and of field() for this source and
   // relaxation are compiled now, in the job's set-up, and not during its
   // steps: lavapipe ends the process with SIGSEGV when an allocation fails
@@ -329,17 +345,18 @@ void VulkanSolver::step(int count)
   const StepParameters push = r_->parameters();
   const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
-    int batch = std::min(count, stepsPerSubmit);
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    const int batch = std::min(count, stepsPerSubmit);
+    const int first = r_->current;
+    r_->context.replayAndWait(r_->recordedSteps.get(r_->context, gpu::keyOf(batch, first, push, static_cast<VkPipeline>(*program.pipeline)), [&](vk::CommandBuffer cmd) {
       cmd.bindPipeline(bind, *program.pipeline);
       cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       for (int s = 0; s < batch; ++s) {
-        cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(r_->current + s) % 2], {});
+        cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(first + s) % 2], {});
         r_->dispatchLattice(cmd);
         // The next step reads what this one wrote and overwrites what it read.
         barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
       }
-    });
+    }));
     r_->current = (r_->current + batch) % 2;
     r_->steps += batch;
     count -= batch;

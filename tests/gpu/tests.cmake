@@ -1,5 +1,6 @@
 lbmshape_test(gpu_tests
   ${CMAKE_CURRENT_LIST_DIR}/device_bandwidth_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/device_choice_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/recorded_commands_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/validation_layer_test.cpp
 )

@@ -74,4 +74,17 @@ double maxDifference(const BandField& band, const Volume& grid, const std::funct
   return worst;
 }
 
+BandDifference differenceInside(const BandField& got, const BandField& expected, Extent3 extent)
+{
+  BandDifference d;
+  const BrickSet& bricks = expected.bricks();
+  for (size_t i = 0; i < expected.values().size(); ++i) {
+    const glm::ivec3 c = bricks.cell(int32_t(i / brickCells), int(i % brickCells));
+    if (!extent.contains(c.x, c.y, c.z)) continue;
+    d.worst = std::max(d.worst, double(std::abs(got.values()[i] - expected.values()[i])));
+    d.scale = std::max(d.scale, double(std::abs(expected.values()[i])));
+  }
+  return d;
+}
+
 }  // namespace lbmshape::testing

@@ -25,4 +25,13 @@ std::unique_ptr<BandSolver> makeBandSolver(Backend backend, std::shared_ptr<cons
 // max |band - grid| over the stored cells of the band where `where` holds.
 double maxDifference(const BandField& band, const Volume& grid, const std::function<bool(float gridValue)>& where);
 
+// max |got - expected| over the stored cells inside `extent`, and the
+// largest |expected| there: a device's band field against the reference's,
+// whose tolerance scales with the field's magnitude.
+struct BandDifference {
+  double worst = 0.0;
+  double scale = 0.0;
+};
+BandDifference differenceInside(const BandField& got, const BandField& expected, Extent3 extent);
+
 }  // namespace lbmshape::testing

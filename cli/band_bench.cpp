@@ -17,8 +17,11 @@ namespace {
 
 nlohmann::json timingJson(const BandStepTiming& t)
 {
-  return {{"ms_per_step", t.perStep.msPerStep}, {"best_ms_per_step", t.perStep.bestMsPerStep},
-          {"first_step_ms", t.perStep.firstStepMs}, {"warmup_steps", t.perStep.warmupSteps}, {"mlups", t.perStep.mlups},
+  return {{"ms_per_step", t.perStep.msPerStep},
+          {"best_ms_per_step", t.perStep.bestMsPerStep},
+          {"first_step_ms", t.perStep.firstStepMs},
+          {"warmup_steps", t.perStep.warmupSteps},
+          {"mlups", t.perStep.mlups},
           {"stored_mlups", t.storedMlups}};
 }
 
@@ -33,7 +36,8 @@ void printTiming(const char* name, const BandStepTiming& t)
 void runBandBench(const CommonOptions& common, const Extent3& extent, const BenchSettings& settings, double halfWidth)
 {
   const ComputeDevice& compute = common.computeDevice();
-  const BandBenchCase band = sphereBand(extent, halfWidth, [&](const BrickSet& b) { compute.checkBandFits(b, false, false); });
+  const BandBenchCase band =
+      sphereBand(extent, halfWidth, [&](const BrickSet& b) { compute.checkBandFits(b, false, false); });
   const BrickSet& bricks = band.field.bricks();
   gpu::GpuContext* context = compute.gpu();  // none with --device reference
   std::optional<BandStepTiming> vulkan;
@@ -73,11 +77,12 @@ void runBandBench(const CommonOptions& common, const Extent3& extent, const Benc
     return;
   }
   std::cout << "device: " << compute.name() << "\n";
-  std::printf("narrow band in %s around a sphere: %zu bricks, %zu stored cells (%.1f%% of the grid), %zu stepped, "
-              "%zu streaming (half width %.0f); %.1f bytes a stored cell on the device; median of %d runs of %d steps\n",
-              extent.toString().c_str(), bricks.activeCount(), bricks.storedCells(),
-              100.0 * double(bricks.storedCells()) / double(extent.cells()), band.steppedCells, band.streamingCells,
-              halfWidth, bytesPerCell, settings.runs, settings.steps);
+  std::printf(
+      "narrow band in %s around a sphere: %zu bricks, %zu stored cells (%.1f%% of the grid), %zu stepped, "
+      "%zu streaming (half width %.0f); %.1f bytes a stored cell on the device; median of %d runs of %d steps\n",
+      extent.toString().c_str(), bricks.activeCount(), bricks.storedCells(),
+      100.0 * double(bricks.storedCells()) / double(extent.cells()), band.steppedCells, band.streamingCells, halfWidth,
+      bytesPerCell, settings.runs, settings.steps);
   if (vulkan) printTiming("vulkan", *vulkan);
   printTiming("reference", cpu);
   if (vulkan) std::printf("  vulkan / reference %.2fx\n", vulkan->perStep.mlups / cpu.perStep.mlups);

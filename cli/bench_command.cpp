@@ -48,8 +48,11 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0)
 
 nlohmann::json timingJson(const StepTiming& t, bool withBandwidth)
 {
-  nlohmann::json j = {{"ms_per_step", t.msPerStep}, {"best_ms_per_step", t.bestMsPerStep},
-                      {"first_step_ms", t.firstStepMs}, {"warmup_steps", t.warmupSteps}, {"mlups", t.mlups}};
+  nlohmann::json j = {{"ms_per_step", t.msPerStep},
+                      {"best_ms_per_step", t.bestMsPerStep},
+                      {"first_step_ms", t.firstStepMs},
+                      {"warmup_steps", t.warmupSteps},
+                      {"mlups", t.mlups}};
   if (withBandwidth) j["gbps"] = t.gbps;
   return j;
 }
@@ -89,8 +92,8 @@ void printSingle(const SizeResult& r, const std::string& device, const Bandwidth
     std::cout << format("  vulkan     %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s", r.vulkan->msPerStep, r.vulkan->mlups,
                         r.vulkan->gbps)
               << format("  (first step %.0f ms)\n", r.vulkan->firstStepMs);
-  std::cout << format("  reference  %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s\n", r.reference.msPerStep,
-                      r.reference.mlups, r.reference.gbps);
+  std::cout << format("  reference  %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s\n", r.reference.msPerStep, r.reference.mlups,
+                      r.reference.gbps);
   std::cout << format("  memory bandwidth %.1f GB/s -> roofline %.0f MLUPS", bandwidth.gbps, roofline) << " ("
             << bandwidth.method << ")\n";
   if (r.vulkan)
@@ -100,9 +103,10 @@ void printSingle(const SizeResult& r, const std::string& device, const Bandwidth
 
 void printPaper(const std::vector<SizeResult>& results, const std::string& device)
 {
-  std::cout << "Table 1 of the paper (2008: Intel Core 2 6300 CPU, GeForce 8800 GTX GPU) beside this run on "
-            << device << ", ms per step:\n";
-  std::cout << "  figure    application  lattice        paper CPU  paper GPU  reference     vulkan   vulkan speed-up vs paper GPU\n";
+  std::cout << "Table 1 of the paper (2008: Intel Core 2 6300 CPU, GeForce 8800 GTX GPU) beside this run on " << device
+            << ", ms per step:\n";
+  std::cout << "  figure    application  lattice        paper CPU  paper GPU  reference     vulkan   vulkan speed-up "
+               "vs paper GPU\n";
   for (size_t i = 0; i < results.size(); ++i) {
     const auto& row = paper::table1[i];
     const auto& r = results[i];
@@ -129,7 +133,8 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
   }
   for (const auto& e : sizes) checkExtent(e);
   if (options.band) {
-    const double halfWidth = options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, smoothing_stop::mostSteps));
+    const double halfWidth =
+        options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, smoothing_stop::mostSteps));
     if (!(halfWidth >= 1.0 && halfWidth <= 64.0)) throw UsageError("--half-width must be between 1 and 64 voxels");
     runBandBench(common, sizes.front(), options.settings, halfWidth);
     return;
@@ -155,19 +160,22 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
 
   auto resultJson = [&](const SizeResult& r) {
     const double roofline = rooflineMlups(r, bandwidth);
-    nlohmann::json j = {{"device", device},
-                        {"size", {r.extent.nx, r.extent.ny, r.extent.nz}},
-                        {"steps", options.settings.steps},
-                        {"runs", options.settings.runs},
-                        {"bytes_per_update", LatticeLayout::bytesPerUpdate},
-                        {"vulkan", r.vulkan ? timingJson(*r.vulkan, true) : nlohmann::json(nullptr)},
-                        {"reference", timingJson(r.reference, false)},
-                        {"vulkan_over_reference", r.vulkan ? nlohmann::json(r.vulkan->mlups / r.reference.mlups) : nlohmann::json(nullptr)},
-                        {"roofline_fraction", r.vulkan ? nlohmann::json(r.vulkan->mlups / roofline) : nlohmann::json(nullptr)},
-                        {"memory_bandwidth", {{"gbps", bandwidth.gbps}, {"method", bandwidth.method}}},
-                        {"roofline_mlups", roofline}};
-    if (context) j["startup"] = {{"pipeline_creation_ms", context->pipelineCreationMs()},
-                                 {"pipeline_cache_loaded_bytes", context->pipelineCacheLoadedBytes()}};
+    nlohmann::json j = {
+        {"device", device},
+        {"size", {r.extent.nx, r.extent.ny, r.extent.nz}},
+        {"steps", options.settings.steps},
+        {"runs", options.settings.runs},
+        {"bytes_per_update", LatticeLayout::bytesPerUpdate},
+        {"vulkan", r.vulkan ? timingJson(*r.vulkan, true) : nlohmann::json(nullptr)},
+        {"reference", timingJson(r.reference, false)},
+        {"vulkan_over_reference",
+         r.vulkan ? nlohmann::json(r.vulkan->mlups / r.reference.mlups) : nlohmann::json(nullptr)},
+        {"roofline_fraction", r.vulkan ? nlohmann::json(r.vulkan->mlups / roofline) : nlohmann::json(nullptr)},
+        {"memory_bandwidth", {{"gbps", bandwidth.gbps}, {"method", bandwidth.method}}},
+        {"roofline_mlups", roofline}};
+    if (context)
+      j["startup"] = {{"pipeline_creation_ms", context->pipelineCreationMs()},
+                      {"pipeline_cache_loaded_bytes", context->pipelineCacheLoadedBytes()}};
     return j;
   };
 
@@ -189,7 +197,8 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
       nlohmann::json j = resultJson(results[i]);
       j["figure"] = row.figure;
       j["application"] = row.application;
-      j["paper"] = {{"cpu_ms_per_step", row.cpuMs}, {"gpu_ms_per_step", row.gpuMs}, {"texture_megabytes", row.textureMegabytes}};
+      j["paper"] = {
+          {"cpu_ms_per_step", row.cpuMs}, {"gpu_ms_per_step", row.gpuMs}, {"texture_megabytes", row.textureMegabytes}};
       rows.push_back(j);
     }
     common.report({{"device", device}, {"table1", rows}});
@@ -204,17 +213,27 @@ void addBenchCommand(CLI::App& app, const CommonOptions& common)
 {
   auto options = std::make_shared<BenchOptions>();
   auto* bench = app.add_subcommand("bench", "Time the lattice step on the device and on the CPU reference");
-  auto* size = bench->add_option("--size", options->size, "Lattice size NX,NY,NZ")->delimiter(',')->expected(3)->capture_default_str();
+  auto* size = bench->add_option("--size", options->size, "Lattice size NX,NY,NZ")
+                   ->delimiter(',')
+                   ->expected(3)
+                   ->capture_default_str();
   bench->add_option("--steps", options->settings.steps, "Steps per timed run")->capture_default_str();
   bench->add_option("--runs", options->settings.runs, "Timed runs; the median is reported")->capture_default_str();
-  bench->add_option("--gamma", options->settings.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
-  auto* paper = bench->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours")
-                    ->excludes(size);
-  auto* band = bench->add_flag("--band", options->band,
-                               "Time the narrow-band lattice, on the band a denoise would make around a sphere in the grid")
-                   ->excludes(paper);
-  bench->add_option("--half-width", options->halfWidth,
-                    "With --band: voxels each side of the surface that stream (default: a denoise's, 6 at the default gamma)")
+  bench->add_option("--gamma", options->settings.gamma, "Diffusion coefficient, voxels^2 per step")
+      ->capture_default_str();
+  auto* paper =
+      bench
+          ->add_flag("--paper", options->paper, "Run the five lattices of the paper's Table 1 and print it beside ours")
+          ->excludes(size);
+  auto* band =
+      bench
+          ->add_flag("--band", options->band,
+                     "Time the narrow-band lattice, on the band a denoise would make around a sphere in the grid")
+          ->excludes(paper);
+  bench
+      ->add_option(
+          "--half-width", options->halfWidth,
+          "With --band: voxels each side of the surface that stream (default: a denoise's, 6 at the default gamma)")
       ->needs(band);
   bench->callback([&common, options] { runBench(common, *options); });
 }

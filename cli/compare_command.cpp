@@ -35,7 +35,11 @@ nlohmann::json topologyJson(const std::string& path, const MeshTopology& t)
 
 nlohmann::json directedJson(const DirectedDistance& d)
 {
-  return {{"samples", d.samples}, {"max", d.max}, {"mean", d.mean}, {"rms", d.rms}, {"mean_normal_angle_deg", d.meanNormalAngle}};
+  return {{"samples", d.samples},
+          {"max", d.max},
+          {"mean", d.mean},
+          {"rms", d.rms},
+          {"mean_normal_angle_deg", d.meanNormalAngle}};
 }
 
 void printTopology(const char* label, const std::string& path, const MeshTopology& t)
@@ -59,12 +63,12 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
   const SurfaceComparison c = compareSurfaces(a, b, options);
   common.report({{"command", "compare"},
                  {"a", topologyJson(args.a, ta)},
-               {"b", topologyJson(args.b, tb)},
-               {"hausdorff", c.hausdorff},
-               {"mean", c.mean},
-               {"rms", c.rms},
-               {"mean_normal_angle_deg", c.meanNormalAngle},
-               {"a_to_b", directedJson(c.aToB)},
+                 {"b", topologyJson(args.b, tb)},
+                 {"hausdorff", c.hausdorff},
+                 {"mean", c.mean},
+                 {"rms", c.rms},
+                 {"mean_normal_angle_deg", c.meanNormalAngle},
+                 {"a_to_b", directedJson(c.aToB)},
                  {"b_to_a", directedJson(c.bToA)}});
   if (common.json) return;
   printTopology("A", args.a, ta);
@@ -79,7 +83,8 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
 void addCompareCommand(CLI::App& app, const CommonOptions& common)
 {
   auto args = std::make_shared<CompareArguments>();
-  auto* cmd = app.add_subcommand("compare", "Distances between two meshes (Hausdorff, mean, RMS, normals) and their topology");
+  auto* cmd =
+      app.add_subcommand("compare", "Distances between two meshes (Hausdorff, mean, RMS, normals) and their topology");
   cmd->add_option("a", args->a, "First mesh")->required();
   cmd->add_option("b", args->b, "Second mesh")->required();
   cmd->add_option("--samples", args->samples, "Random surface samples per mesh, at least")->capture_default_str();

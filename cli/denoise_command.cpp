@@ -45,11 +45,14 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
 void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
 {
   auto a = std::make_shared<DenoiseArguments>();
-  auto* cmd = app.add_subcommand("denoise", "Smooth a mesh: distance field, lattice Boltzmann diffusion, marching cubes");
+  auto* cmd =
+      app.add_subcommand("denoise", "Smooth a mesh: distance field, lattice Boltzmann diffusion, marching cubes");
   cmd->add_option("input", a->input, "Mesh to smooth (.obj .ply .off .stl .gltf .glb)")->required();
   cmd->add_option("output", a->output, "Result, format by extension (.glb .gltf .obj .ply .off .stl)")->required();
-  auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
-  a->voxelOption = cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
+  auto* res =
+      cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
+  a->voxelOption =
+      cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
   a->stepsOption = cmd->add_option(
       "--steps", a->steps,
@@ -57,21 +60,27 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
   auto* aniso = cmd->add_flag("--anisotropic", a->anisotropic, "Per-cell gamma = gamma + kappa, the paper's Eq. 20");
   cmd->add_flag("--preserve-features", a->preserveFeatures, "Per-cell gamma falling at sharp edges")->excludes(aniso);
-  cmd->add_option("--noise", a->options.noise.amplitude,
-                  "Add the paper's uniform noise to the distance field first, as a fraction of its largest value (0.05 = 5%)")
+  cmd->add_option(
+         "--noise", a->options.noise.amplitude,
+         "Add the paper's uniform noise to the distance field first, as a fraction of its largest value (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
-  cmd->add_flag_function("--shrink", [a](int64_t) { a->options.keepVolume = false; },
-                         "Leave the result shrunk, as mean-curvature flow and the paper's scheme do, instead of "
-                         "shifting it to enclose the input's volume");
-  cmd->add_flag("--dense", a->options.dense,
-                "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
-  cmd->add_option("--color", a->colour,
-                  "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf or .obj)")
+  cmd->add_flag_function(
+      "--shrink", [a](int64_t) { a->options.keepVolume = false; },
+      "Leave the result shrunk, as mean-curvature flow and the paper's scheme do, instead of "
+      "shifting it to enclose the input's volume");
+  cmd->add_flag(
+      "--dense", a->options.dense,
+      "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
+  cmd->add_option(
+         "--color", a->colour,
+         "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf or .obj)")
       ->check(CLI::IsMember({"none", "curvature"}))
       ->capture_default_str();
-  cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
-                "Write a smaller .glb: positions and normals quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
+  cmd->add_flag_function(
+      "--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
+      "Write a smaller .glb: positions and normals quantized (KHR_mesh_quantization), meshopt-encoded "
+      "(EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview, "Also draw the input and the result side by side into this PNG picture");
   cmd->add_flag("--force", a->options.replaceInput, "Write the result even where the output is the input mesh");
   cmd->callback([&common, a] { runDenoise(common, *a); });

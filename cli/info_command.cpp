@@ -34,9 +34,9 @@ void runInfo(const CommonOptions& common)
     nlohmann::json list = nlohmann::json::array();
     for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
     common.report({{"version", LBMSHAPE_VERSION},
-               {"devices", list},
-               {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
-               {"validation", instance.validationEnabled()}});
+                   {"devices", list},
+                   {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
+                   {"validation", instance.validationEnabled()}});
     return;
   }
   std::cout << "lbmshape " << LBMSHAPE_VERSION << "\n";

@@ -22,7 +22,10 @@ const std::map<std::string, std::vector<std::string>> positionals = {
 bool takesPath(const std::string& key) { return key == "preview"; }
 
 // CLI11 names the type an option converts its text to.
-bool takesWholeNumber(const CLI::Option& o) { return o.get_type_name().rfind("INT", 0) == 0 || o.get_type_name().rfind("UINT", 0) == 0; }
+bool takesWholeNumber(const CLI::Option& o)
+{
+  return o.get_type_name().rfind("INT", 0) == 0 || o.get_type_name().rfind("UINT", 0) == 0;
+}
 bool takesNumber(const CLI::Option& o) { return takesWholeNumber(o) || o.get_type_name().rfind("FLOAT", 0) == 0; }
 bool isFlag(const CLI::Option& o) { return o.get_expected_min() == 0; }
 
@@ -74,8 +77,7 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
       throw UsageError("unknown option \"" + key + "\" for " + command + " (see lbmshape " + command + " --help)");
     if (value.is_null()) continue;  // the default
     if (isFlag(*option)) {
-      if (!value.is_boolean())
-        throw UsageError("option \"" + key + "\" is a flag: true or false, not " + value.dump());
+      if (!value.is_boolean()) throw UsageError("option \"" + key + "\" is a flag: true or false, not " + value.dump());
       if (value.get<bool>()) args.push_back("--" + key);
     } else {
       // One argument, so that a value starting with '-' is never taken for an option.

@@ -75,7 +75,8 @@ int main(int argc, char** argv)
   app.add_flag("-v,--verbose", common.verbose, "Print each stage's time and the chosen device");
   app.add_flag("-q,--quiet", common.quiet, "Print only errors");
   app.add_flag("--json", common.json, "Print the result as one JSON object on stdout");
-  app.add_option("--device", common.device, "Vulkan device: index or part of its name, or 'reference' for the CPU reference");
+  app.add_option("--device", common.device,
+                 "Vulkan device: index or part of its name, or 'reference' for the CPU reference");
   app.add_flag("--validate", common.validation, "Run with the Khronos validation layer; any message fails the run");
   app.parse_complete_callback([&common] {
     log::setLevel(common.quiet ? log::Level::Quiet : common.verbose ? log::Level::Verbose : log::Level::Normal);
@@ -107,7 +108,8 @@ int main(int argc, char** argv)
     // Results on stdout that did not arrive (a full disk, a closed pipe)
     // are a failed command, like a mesh that could not be written.
     if (!std::cout.flush())
-      return fail(ExitCode::Output, "cannot write the results to standard output (is the disk full, or the pipe closed?)");
+      return fail(ExitCode::Output,
+                  "cannot write the results to standard output (is the disk full, or the pipe closed?)");
     return 0;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

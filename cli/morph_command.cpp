@@ -27,7 +27,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.colourByCurvature = a.colour == "curvature";
   a.options.frameFigures = common.json;  // only the JSON report shows them
-  checkMorphOptions(a.options);  // before the device is opened
+  checkMorphOptions(a.options);          // before the device is opened
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
   common.report(report);
   if (!common.json)
@@ -46,14 +46,16 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("source", a->source, "Mesh to start from")->required();
   cmd->add_option("target", a->target, "Mesh to end at")->required();
   cmd->add_option("output", a->folder, "Folder for frame_0000.glb ... and morph.glb")->required();
-  auto* res = cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
-  a->voxelGiven = cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
+  auto* res =
+      cmd->add_option("--res", a->options.grid.resolution, "Grid cells along the longest side")->capture_default_str();
+  a->voxelGiven =
+      cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around both meshes")->capture_default_str();
   cmd->add_option("--align", a->options.align, "Place the target: none, center (on the source), fit (center and scale)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, Alignment>{{"none", Alignment::None},
-                                                                           {"center", Alignment::Center},
-                                                                           {"fit", Alignment::Fit}},
-                                          CLI::ignore_case))
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, Alignment>{
+              {"none", Alignment::None}, {"center", Alignment::Center}, {"fit", Alignment::Fit}},
+          CLI::ignore_case))
       ->default_str("fit");
   cmd->add_option("--cs", a->options.cs, "Morphing speed Cs of the force Cs (X_target - X)")->capture_default_str();
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
@@ -61,8 +63,9 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   a->stepsPerFrameGiven = cmd->add_option("--steps-per-frame", a->stepsPerFrame,
                                           "Lattice steps between frames, constant gamma and Cs (the paper's scheme); "
                                           "by default the morph runs until it arrives at the target");
-  a->stepsGiven = cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames, constant gamma and Cs")
-                      ->excludes(a->stepsPerFrameGiven);
+  a->stepsGiven =
+      cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames, constant gamma and Cs")
+          ->excludes(a->stepsPerFrameGiven);
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
   cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
   cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
@@ -70,8 +73,10 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
                   "Vertex colours of the frames: none, or curvature (mean curvature on the target's scale)")
       ->check(CLI::IsMember({"none", "curvature"}))
       ->capture_default_str();
-  cmd->add_flag_function("--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
-                "Smaller .glb frames and morph.glb: quantized (KHR_mesh_quantization), meshopt-encoded (EXT_meshopt_compression)");
+  cmd->add_flag_function(
+      "--compress", [a](int64_t) { a->options.compression = GltfCompression::Meshopt; },
+      "Smaller .glb frames and morph.glb: quantized (KHR_mesh_quantization), meshopt-encoded "
+      "(EXT_meshopt_compression)");
   cmd->add_option("--preview", a->preview,
                   "Also draw a contact sheet into this PNG picture: the source, six frames and the target");
   cmd->add_option("--tolerance", a->options.tolerance,
@@ -81,8 +86,9 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--noise", a->options.noise.amplitude, "The paper's noise on the source's distance field (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
-  cmd->add_flag("--band", a->options.band,
-                "Run the lattice on the narrow band around both surfaces and between them (less memory; not with --noise)");
+  cmd->add_flag(
+      "--band", a->options.band,
+      "Run the lattice on the narrow band around both surfaces and between them (less memory; not with --noise)");
   cmd->callback([&common, a] { runMorph(common, *a); });
 }
 

@@ -35,19 +35,23 @@ void runRender(const CommonOptions& common, RenderArguments& a)
 void addRenderCommand(CLI::App& app, const CommonOptions& common)
 {
   auto a = std::make_shared<RenderArguments>();
-  auto* cmd = app.add_subcommand("render", "Draw meshes side by side into a PNG picture, on the Vulkan device, with no display");
+  auto* cmd = app.add_subcommand("render",
+                                 "Draw meshes side by side into a PNG picture, on the Vulkan device, with no display");
   cmd->add_option("paths", a->paths,
                   "Meshes (.obj .ply .off .stl .gltf .glb) or folders of frames, then the picture to write (.png)")
       ->required()
       ->expected(2, -1);
   cmd->add_option("--size", a->size, "Picture size WIDTHxHEIGHT in pixels (default: 512 per mesh, fewer for many)");
   cmd->add_option("--view", a->view, "front, side, top, iso, or AZIMUTH,ELEVATION in degrees")->capture_default_str();
-  cmd->add_option("--color", a->colour, "none, curvature (mean curvature), or distance:REFERENCE_MESH")->capture_default_str();
+  cmd->add_option("--color", a->colour, "none, curvature (mean curvature), or distance:REFERENCE_MESH")
+      ->capture_default_str();
   cmd->add_flag("--wireframe", a->options.wireframe, "Draw the triangles' edges over the surface");
   cmd->add_flag("--labels", a->options.labels, "Write each mesh's file name under it");
-  cmd->add_option("--columns", a->options.columns, "Meshes per row (0: one row up to four, then about twice as wide as high)")
+  cmd->add_option("--columns", a->options.columns,
+                  "Meshes per row (0: one row up to four, then about twice as wide as high)")
       ->capture_default_str();
-  cmd->add_option("--count", a->options.folderMeshes, "Meshes shown from each folder, evenly chosen, first and last included")
+  cmd->add_option("--count", a->options.folderMeshes,
+                  "Meshes shown from each folder, evenly chosen, first and last included")
       ->capture_default_str();
   cmd->callback([&common, a] { runRender(common, *a); });
 }

@@ -40,11 +40,10 @@ Shard parseShard(const std::string& text)
   const char* const last = first + text.size();
   long part = 0, parts = 0;
   const auto k = std::from_chars(first, last, part);
-  const bool wellFormed = k.ec == std::errc() && k.ptr != last && *k.ptr == '/' &&
-                          [&] {
-                            const auto n = std::from_chars(k.ptr + 1, last, parts);
-                            return n.ec == std::errc() && n.ptr == last;
-                          }();
+  const bool wellFormed = k.ec == std::errc() && k.ptr != last && *k.ptr == '/' && [&] {
+    const auto n = std::from_chars(k.ptr + 1, last, parts);
+    return n.ec == std::errc() && n.ptr == last;
+  }();
   if (!wellFormed || parts < 1 || parts > 1000000 || part < 1 || part > parts)
     throw UsageError("--shard must be K/N with 1 <= K <= N <= 1000000 (part K of N, e.g. 2/4), not '" + text + "'");
   return {size_t(part), size_t(parts)};
@@ -155,15 +154,18 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     std::string what = "job " + std::to_string(i + 1);
     try {
       interrupt::check(std::to_string(results.size()) + " of " + std::to_string(jobsInPart) + " jobs done");
-      if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string()) result["command"] = jobs[i]["command"];
+      if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string())
+        result["command"] = jobs[i]["command"];
       result["report"] = runJob(jobs[i], base, common, what);
       result["ok"] = true;
     } catch (const Interrupted&) {
       throw;
     } catch (const std::exception& e) {
       int code = int(ExitCode::Device);
-      if (auto* error = dynamic_cast<const Error*>(&e)) code = int(error->code());
-      else if (dynamic_cast<const CLI::ParseError*>(&e)) code = int(ExitCode::Usage);
+      if (auto* error = dynamic_cast<const Error*>(&e))
+        code = int(error->code());
+      else if (dynamic_cast<const CLI::ParseError*>(&e))
+        code = int(ExitCode::Usage);
       result["ok"] = false;
       result["exit_code"] = code;
       result["error"] = e.what();
@@ -173,12 +175,16 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     results.push_back(result);
     if (failed && a.failFast) break;
   }
-  common.report({{"command", "run"}, {"jobs", jobs.size()}, {"run", results.size()}, {"failed", failed},
-                 {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)}, {"results", results}});
+  common.report({{"command", "run"},
+                 {"jobs", jobs.size()},
+                 {"run", results.size()},
+                 {"failed", failed},
+                 {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
+                 {"results", results}});
   if (failed)
-    throw Error(ExitCode(firstFailureCode), std::to_string(failed) + " of " + std::to_string(results.size()) +
-                                                " jobs failed" + (a.failFast ? " (stopped at the first, --fail-fast)" : "") +
-                                                "; first: " + firstFailure);
+    throw Error(ExitCode(firstFailureCode),
+                std::to_string(failed) + " of " + std::to_string(results.size()) + " jobs failed" +
+                    (a.failFast ? " (stopped at the first, --fail-fast)" : "") + "; first: " + firstFailure);
   log::info("all " + std::to_string(results.size()) + " jobs" + (a.shard.empty() ? "" : " of part " + a.shard) +
             " succeeded");
 }

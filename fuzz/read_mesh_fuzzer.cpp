@@ -29,7 +29,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const MeshSource source{std::string_view(reinterpret_cast<const char*>(data), size), "fuzz input", std::nullopt};
   try {
     readMesh(source, format);
-  } catch (const InputError&) {
-  }
+  } catch (const InputError&) {}
   return 0;
 }

@@ -45,8 +45,9 @@ using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast
 TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles)
 {
   if (vertices.ndim() != 2 || vertices.shape(1) != 3)
-    throw UsageError("vertices must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
-                     (vertices.ndim() == 2 ? " with " + std::to_string(vertices.shape(1)) + " columns" : std::string()));
+    throw UsageError(
+        "vertices must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
+        (vertices.ndim() == 2 ? " with " + std::to_string(vertices.shape(1)) + " columns" : std::string()));
   if (triangles.ndim() != 2 || triangles.shape(1) != 3)
     throw UsageError("triangles must be an array of shape (m, 3) of vertex indices");
   TriangleMesh mesh;
@@ -56,8 +57,8 @@ TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles)
   for (py::ssize_t i = 0; i < t.shape(0); ++i) {
     for (int k = 0; k < 3; ++k)
       if (t(i, k) < 0 || t(i, k) >= v.shape(0))
-        throw UsageError("triangles[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) + ", but there are " +
-                         std::to_string(v.shape(0)) + " vertices");
+        throw UsageError("triangles[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) +
+                         ", but there are " + std::to_string(v.shape(0)) + " vertices");
     mesh.triangles.push_back({uint32_t(t(i, 0)), uint32_t(t(i, 1)), uint32_t(t(i, 2))});
   }
   return mesh;
@@ -92,9 +93,9 @@ Smoothing smoothingNamed(const std::string& name)
   throw UsageError("smoothing must be 'isotropic', 'anisotropic' or 'preserve-features', not '" + name + "'");
 }
 
-py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps, double gamma,
-                   const std::string& smoothing, bool keepVolume, bool dense, std::shared_ptr<ComputeDevice> device,
-                   bool report)
+py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps,
+                   double gamma, const std::string& smoothing, bool keepVolume, bool dense,
+                   std::shared_ptr<ComputeDevice> device, bool report)
 {
   DenoiseOptions options;
   options.grid.resolution = res;
@@ -129,9 +130,9 @@ Alignment alignmentNamed(const std::string& name)
 // or gathered into a list. An exception the callback raises stops the morph
 // and is raised again, as RuntimeError, with its message.
 py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangles, const Vertices& targetVertices,
-                 const Triangles& targetTriangles, int frames, int res, std::optional<int> steps, double cs, double gamma,
-                 const std::string& align, bool band, std::shared_ptr<ComputeDevice> device, py::object onFrame,
-                 bool report)
+                 const Triangles& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
+                 double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
+                 py::object onFrame, bool report)
 {
   MorphOptions options;
   options.frames = frames;
@@ -200,8 +201,8 @@ PYBIND11_MODULE(lbmshape, m)
     }
   });
 
-  py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(m, "Device",
-                                                            "A Vulkan device, or the CPU reference solver ('reference')")
+  py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(
+      m, "Device", "A Vulkan device, or the CPU reference solver ('reference')")
       .def(py::init<const std::string&, bool>(), py::arg("name") = "", py::arg("validation") = false,
            "name: empty for the best device, an index, part of a device's name, or 'reference'")
       .def_property_readonly("name", &ComputeDevice::name);

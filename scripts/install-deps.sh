@@ -15,7 +15,7 @@ packages=(
 # with its own npm from elsewhere (then Debian's npm package conflicts), so
 # what counts is that both commands exist.
 # The fuzz targets and sanitizer builds (scripts/fuzz.sh, the asan preset)
-# need clang with libFuzzer and the sanitizers.
+# need clang with libFuzzer and the sanitizers; scripts/format.sh clang-format.
 for option in "$@"; do
   case $option in
     --with-test-tools)
@@ -23,6 +23,7 @@ for option in "$@"; do
       packages+=(parallel)  # the batch recipe's test (docs/scaling.md)
       ;;
     --with-fuzz-tools) packages+=(clang libclang-rt-14-dev) ;;
+    --with-format-tools) packages+=(clang-format) ;;
     *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
   esac
 done

@@ -35,9 +35,10 @@ int main(int argc, char** argv)
     options.grid.resolution = resolution;
     const lbmshape::DenoiseResult result = lbmshape::denoiseMesh(noisy, "a noisy sphere", options, device);
     const double before = farthestFromTheSphere(noisy), after = farthestFromTheSphere(result.mesh);
-    std::printf("lbmshape %s on %s: %zu triangles in, %zu out, %d steps; farthest from the sphere %.4f before, %.4f after\n",
-                lbmshape::libraryVersion(), result.report["device"].get<std::string>().c_str(),
-                noisy.triangles.size(), result.mesh.triangles.size(), result.report["steps"].get<int>(), before, after);
+    std::printf(
+        "lbmshape %s on %s: %zu triangles in, %zu out, %d steps; farthest from the sphere %.4f before, %.4f after\n",
+        lbmshape::libraryVersion(), result.report["device"].get<std::string>().c_str(), noisy.triangles.size(),
+        result.mesh.triangles.size(), result.report["steps"].get<int>(), before, after);
     return !result.mesh.triangles.empty() && after < before ? 0 : 1;
   } catch (const lbmshape::Error& e) {
     std::fprintf(stderr, "denoise_in_memory: %s\n", e.what());

@@ -18,12 +18,12 @@ struct MeshTopology {
   // Triangles that repeat a vertex index. They are left out of the edges,
   // the fans and the Euler characteristic (but count in components and area).
   size_t degenerateTriangles = 0;
-  size_t edges = 0;                // distinct undirected edges
-  size_t components = 0;           // sets of triangles joined through shared vertices
-  size_t boundaryEdges = 0;        // in one triangle
-  size_t nonManifoldEdges = 0;     // in three or more triangles
-  size_t nonManifoldVertices = 0;  // whose triangles form more than one fan joined through edges
-  size_t inconsistentEdges = 0;    // in two triangles that run it the same way
+  size_t edges = 0;                  // distinct undirected edges
+  size_t components = 0;             // sets of triangles joined through shared vertices
+  size_t boundaryEdges = 0;          // in one triangle
+  size_t nonManifoldEdges = 0;       // in three or more triangles
+  size_t nonManifoldVertices = 0;    // whose triangles form more than one fan joined through edges
+  size_t inconsistentEdges = 0;      // in two triangles that run it the same way
   bool consistentlyOriented = true;  // no inconsistent edge
   // At least one triangle and none of the defects above: no boundary, no
   // non-manifold edge or vertex, no inconsistent edge, no degenerate triangle.

@@ -34,8 +34,8 @@ struct Query {
 DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target, const TriangleBvh& targetBvh,
                          const ComparisonOptions& options)
 {
-  const size_t random = std::max(options.minSamples, size_t(std::ceil(options.samplesPerTriangle *
-                                                                       double(source.triangleCount()))));
+  const size_t random =
+      std::max(options.minSamples, size_t(std::ceil(options.samplesPerTriangle * double(source.triangleCount()))));
   std::vector<Query> queries;
   queries.reserve(random + (options.includeVertices ? source.vertexCount() : 0));
   for (const SurfaceSample& s : sampleSurface(source, random, options.seed)) queries.push_back({s.point, s.triangle});

@@ -27,8 +27,8 @@ struct ComparisonOptions {
 // Distances are exact closest-point distances, in the meshes' units.
 struct DirectedDistance {
   size_t samples = 0;
-  double max = 0.0;                  // one-sided Hausdorff distance
-  glm::dvec3 farthest{0.0};          // the source sample at that distance
+  double max = 0.0;          // one-sided Hausdorff distance
+  glm::dvec3 farthest{0.0};  // the source sample at that distance
   double mean = 0.0;
   double rms = 0.0;
   // Mean over the random samples (not the vertices, which have no single

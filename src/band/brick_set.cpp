@@ -3,12 +3,10 @@
 namespace lbmshape {
 
 BrickSet::BrickSet(Extent3 cells)
-    : cells_(cells),
-      bricks_{(cells.nx + brickEdge - 1) / brickEdge, (cells.ny + brickEdge - 1) / brickEdge,
-              (cells.nz + brickEdge - 1) / brickEdge},
+    : cells_(cells), bricks_{(cells.nx + brickEdge - 1) / brickEdge, (cells.ny + brickEdge - 1) / brickEdge,
+                             (cells.nz + brickEdge - 1) / brickEdge},
       table_(bricks_.cells(), noBrick)
-{
-}
+{}
 
 int32_t BrickSet::activate(int bx, int by, int bz)
 {

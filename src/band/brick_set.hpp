@@ -70,7 +70,7 @@ public:
 
 private:
   Extent3 cells_, bricks_;
-  std::vector<int32_t> table_;  // per brick of the brick grid
+  std::vector<int32_t> table_;           // per brick of the brick grid
   std::vector<glm::ivec3> coordinates_;  // per slot
 };
 

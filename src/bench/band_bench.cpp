@@ -7,7 +7,8 @@
 
 namespace lbmshape {
 
-BandBenchCase sphereBand(const Extent3& extent, double halfWidth, const std::function<void(const BrickSet&)>& checkBricks)
+BandBenchCase sphereBand(const Extent3& extent, double halfWidth,
+                         const std::function<void(const BrickSet&)>& checkBricks)
 {
   const glm::dvec3 centre = 0.5 * (glm::dvec3(extent.nx, extent.ny, extent.nz) - 1.0);
   const double radius = 0.4 * std::min({extent.nx, extent.ny, extent.nz});
@@ -41,8 +42,7 @@ BandBenchCase sphereBand(const Extent3& extent, double halfWidth, const std::fun
         const glm::dvec3 middle = glm::dvec3(brickEdge * glm::ivec3(bx, by, bz)) + 0.5 * (brickEdge - 1);
         band.field.farSides()[grid.index(bx, by, bz)] = glm::length(middle - centre) < radius ? 1 : -1;
       }
-  const std::vector<uint8_t> streams =
-      band_state::onlyCellsInTheGrid(streamingCells(band.field, halfWidth), *bricks);
+  const std::vector<uint8_t> streams = band_state::onlyCellsInTheGrid(streamingCells(band.field, halfWidth), *bricks);
   band.streamingCells = size_t(std::count(streams.begin(), streams.end(), uint8_t(1)));
   band.steppedCells = band_state::slotsToStep(*bricks, streams, false).size() * brickCells;
   return band;

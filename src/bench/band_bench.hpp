@@ -14,9 +14,9 @@
 namespace lbmshape {
 
 struct BandBenchCase {
-  BandField field;           // the sphere's signed distance on the band's bricks
-  double halfWidth = 0.0;    // cells within it stream
-  size_t steppedCells = 0;   // cells of the bricks a step updates
+  BandField field;          // the sphere's signed distance on the band's bricks
+  double halfWidth = 0.0;   // cells within it stream
+  size_t steppedCells = 0;  // cells of the bricks a step updates
   size_t streamingCells = 0;
 };
 

@@ -18,8 +18,8 @@ struct StepTiming {
 };
 
 struct BenchSettings {
-  int steps = 100;   // per timed run
-  int runs = 5;      // the median of these is reported
+  int steps = 100;  // per timed run
+  int runs = 5;     // the median of these is reported
   double gamma = 0.2;
   // Untimed steps before the runs, for at least this long: a GPU raises its
   // clocks only after a few hundred milliseconds of work (an H100 took

@@ -33,7 +33,8 @@ BandwidthMeasurement hostBandwidth()
   }
   volatile float sink = b[n / 2];
   (void)sink;
-  return {2.0 * double(arrayBytes) / (best * 1e-3) / 1e9, "host STREAM scale, " + std::to_string(arrayBytes >> 20) + " MiB arrays, best of 5"};
+  return {2.0 * double(arrayBytes) / (best * 1e-3) / 1e9,
+          "host STREAM scale, " + std::to_string(arrayBytes >> 20) + " MiB arrays, best of 5"};
 }
 
 struct ScaleParameters {
@@ -76,14 +77,16 @@ BandwidthMeasurement measureDeviceBandwidth(gpu::GpuContext& context, vk::Device
   gpu::ComputeProgram& program = context.program(
       {"bandwidth_scale", {{0, T::eStorageBuffer, 1, {}}, {1, T::eStorageBuffer, 1, {}}}, {}, sizeof(ScaleParameters)});
   const vk::DescriptorPoolSize poolSize(T::eStorageBuffer, 2);
-  vk::raii::DescriptorPool pool(context.device(),
-                                vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSize));
+  vk::raii::DescriptorPool pool(
+      context.device(),
+      vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSize));
   vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo(*pool, *program.setLayout));
   const vk::DescriptorBufferInfo a(from.handle(), 0, VK_WHOLE_SIZE), b(to.handle(), 0, VK_WHOLE_SIZE);
   context.device().updateDescriptorSets({vk::WriteDescriptorSet(*sets[0], 0, 0, T::eStorageBuffer, {}, a),
                                          vk::WriteDescriptorSet(*sets[0], 1, 0, T::eStorageBuffer, {}, b)},
                                         {});
-  context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(from.handle(), 0, VK_WHOLE_SIZE, 0x3f800000u); });  // 1.0f
+  context.runAndWait(
+      [&](vk::CommandBuffer cmd) { cmd.fillBuffer(from.handle(), 0, VK_WHOLE_SIZE, 0x3f800000u); });  // 1.0f
   const ScaleParameters push{uint32_t(bytes / 16), 1.001f};
 
   // A pass over 256 MiB takes 0.2 ms on an H100, no more than a submission's
@@ -94,11 +97,10 @@ BandwidthMeasurement measureDeviceBandwidth(gpu::GpuContext& context, vk::Device
   double best = 1e30;
   for (int r = 0; r < repetitions; ++r)
     best = std::min(best, timeScalePasses(context, program, *sets[0], push, passes) / passes);
-  return {2.0 * double(bytes) / (best * 1e-3) / 1e9,
-          "compute-shader scale b = s a, " + std::to_string(bytes >> 20) + " MiB arrays, best of " +
-              std::to_string(repetitions) + " runs of " + std::to_string(passes) + " passes"};
+  return {2.0 * double(bytes) / (best * 1e-3) / 1e9, "compute-shader scale b = s a, " + std::to_string(bytes >> 20) +
+                                                         " MiB arrays, best of " + std::to_string(repetitions) +
+                                                         " runs of " + std::to_string(passes) + " passes"};
 }
-
 
 BandwidthMeasurement measureMemoryBandwidth(gpu::GpuContext* context)
 {

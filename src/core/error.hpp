@@ -10,10 +10,10 @@ namespace lbmshape {
 
 enum class ExitCode : int {
   Ok = 0,
-  Usage = 2,   // bad command line or parameters (checked before any GPU work)
-  Input = 3,   // unreadable or invalid input file
-  Output = 4,  // cannot write the result
-  Device = 5,  // Vulkan device failure or numerical blow-up
+  Usage = 2,          // bad command line or parameters (checked before any GPU work)
+  Input = 3,          // unreadable or invalid input file
+  Output = 4,         // cannot write the result
+  Device = 5,         // Vulkan device failure or numerical blow-up
   Interrupted = 130,  // Ctrl-C: the shell's convention, 128 + SIGINT (143 for SIGTERM, 129 for SIGHUP)
 };
 
@@ -44,8 +44,7 @@ struct DeviceError : Error {
 struct Interrupted : Error {
   explicit Interrupted(const std::string& m, int signal = 2 /* SIGINT */)
       : Error(static_cast<ExitCode>(128 + signal), m)
-  {
-  }
+  {}
 };
 // A result that is not a number, or a scheme driven outside its stable range.
 struct NumericalError : Error {

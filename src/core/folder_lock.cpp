@@ -21,7 +21,8 @@ FolderLock::FolderLock(const std::filesystem::path& folder)
     ::close(fd_);
     fd_ = -1;
     if (error == EWOULDBLOCK)
-      throw OutputError(folder.string() + " is being written by another lbmshape; wait for it, or choose another folder");
+      throw OutputError(folder.string() +
+                        " is being written by another lbmshape; wait for it, or choose another folder");
     // A file system without locks (some network mounts) only loses the
     // guard against a second writer; the morph itself can go on.
     log::verbose("cannot lock the folder " + folder.string() + " (" + std::strerror(error) +

@@ -40,8 +40,7 @@ void writeLine(const char* message)
       message = e.what();
     } catch (const std::exception& e) {
       message = e.what();
-    } catch (...) {
-    }
+    } catch (...) {}
   }
   temporary_files::removeAllFromSignalHandler();
   writeLine(message);
@@ -51,7 +50,9 @@ void writeLine(const char* message)
 [[maybe_unused]] void onAbort(int)  // not installed in ASan builds
 {
   temporary_files::removeAllFromSignalHandler();
-  writeLine("aborted by a library's fatal error (Mesa's shader compiler aborts so when memory runs out); the message before this line says which");
+  writeLine(
+      "aborted by a library's fatal error (Mesa's shader compiler aborts so when memory runs out); the message before "
+      "this line says which");
   ::_exit(int(ExitCode::Device));
 }
 

@@ -8,7 +8,7 @@
 namespace lbmshape::log {
 namespace {
 std::atomic<Level> currentLevel{Level::Normal};
-std::mutex streamMutex;  // whole lines from concurrent writer threads
+std::mutex streamMutex;         // whole lines from concurrent writer threads
 bool progressOnScreen = false;  // a terminal progress line waits to be replaced (guarded by streamMutex)
 
 // On a terminal a progress line is rewritten in place, and whatever is

@@ -20,8 +20,8 @@ std::string gridThatWouldFit(const Extent3& extent, double needed, double allowe
 {
   const int longest = std::max({extent.nx, extent.ny, extent.nz});
   const int fits = int(std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power)));
-  return "a grid of about " + std::to_string(fits) + " cells along its longest side (" + nameOf(Parameter::Resolution) + " " +
-         std::to_string(fits) + ") would fit";
+  return "a grid of about " + std::to_string(fits) + " cells along its longest side (" + nameOf(Parameter::Resolution) +
+         " " + std::to_string(fits) + ") would fit";
 }
 
 }  // namespace lbmshape

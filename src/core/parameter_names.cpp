@@ -16,31 +16,31 @@ struct Names {
 Names namesOf(Parameter parameter)
 {
   switch (parameter) {
-    case Parameter::Resolution: return {"grid.resolution", "--res", "res"};
-    case Parameter::Voxel: return {"grid.voxel", "--voxel", nullptr};
-    case Parameter::Margin: return {"grid.marginVoxels", "--margin", nullptr};
-    case Parameter::Noise: return {"noise.amplitude", "--noise", nullptr};
-    case Parameter::Gamma: return {"gamma", "--gamma", "gamma"};
-    case Parameter::Steps: return {"steps", "--steps", "steps"};
-    case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", nullptr};
-    case Parameter::Frames: return {"frames", "--frames", "frames"};
-    case Parameter::Cs: return {"cs", "--cs", "cs"};
-    case Parameter::Fps: return {"fps", "--fps", nullptr};
-    case Parameter::Tolerance: return {"tolerance", "--tolerance", nullptr};
-    case Parameter::Format: return {"format", "--format", nullptr};
-    case Parameter::Align: return {"align", "--align", "align"};
-    case Parameter::Compression: return {"compression", "--compress", nullptr};
-    case Parameter::ColourByCurvature: return {"colourByCurvature", "--color curvature", nullptr};
-    case Parameter::Animation: return {"animation = false", "--no-animation", nullptr};
-    case Parameter::Force: return {"force", "--force", nullptr};
-    case Parameter::Preview: return {"preview", "--preview", nullptr};
-    case Parameter::Device: return {"device", "--device", "device"};
-    case Parameter::Size: return {"size", "--size", nullptr};
-    case Parameter::View: return {"view", "--view", nullptr};
-    case Parameter::Colouring: return {"colouring", "--color", nullptr};
-    case Parameter::Count: return {"folderMeshes", "--count", nullptr};
-    case Parameter::Columns: return {"columns", "--columns", nullptr};
-    case Parameter::Wireframe: return {"wireframe", "--wireframe", nullptr};
+  case Parameter::Resolution: return {"grid.resolution", "--res", "res"};
+  case Parameter::Voxel: return {"grid.voxel", "--voxel", nullptr};
+  case Parameter::Margin: return {"grid.marginVoxels", "--margin", nullptr};
+  case Parameter::Noise: return {"noise.amplitude", "--noise", nullptr};
+  case Parameter::Gamma: return {"gamma", "--gamma", "gamma"};
+  case Parameter::Steps: return {"steps", "--steps", "steps"};
+  case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", nullptr};
+  case Parameter::Frames: return {"frames", "--frames", "frames"};
+  case Parameter::Cs: return {"cs", "--cs", "cs"};
+  case Parameter::Fps: return {"fps", "--fps", nullptr};
+  case Parameter::Tolerance: return {"tolerance", "--tolerance", nullptr};
+  case Parameter::Format: return {"format", "--format", nullptr};
+  case Parameter::Align: return {"align", "--align", "align"};
+  case Parameter::Compression: return {"compression", "--compress", nullptr};
+  case Parameter::ColourByCurvature: return {"colourByCurvature", "--color curvature", nullptr};
+  case Parameter::Animation: return {"animation = false", "--no-animation", nullptr};
+  case Parameter::Force: return {"force", "--force", nullptr};
+  case Parameter::Preview: return {"preview", "--preview", nullptr};
+  case Parameter::Device: return {"device", "--device", "device"};
+  case Parameter::Size: return {"size", "--size", nullptr};
+  case Parameter::View: return {"view", "--view", nullptr};
+  case Parameter::Colouring: return {"colouring", "--color", nullptr};
+  case Parameter::Count: return {"folderMeshes", "--count", nullptr};
+  case Parameter::Columns: return {"columns", "--columns", nullptr};
+  case Parameter::Wireframe: return {"wireframe", "--wireframe", nullptr};
   }
   return {"?", "?", nullptr};
 }
@@ -58,9 +58,9 @@ std::string nameOf(Parameter parameter, ParameterNaming naming)
 {
   const Names names = namesOf(parameter);
   switch (naming) {
-    case ParameterNaming::CommandLine: return names.commandLine;
-    case ParameterNaming::Python: return names.python ? names.python : names.library;
-    case ParameterNaming::Library: break;
+  case ParameterNaming::CommandLine: return names.commandLine;
+  case ParameterNaming::Python: return names.python ? names.python : names.library;
+  case ParameterNaming::Library: break;
   }
   return names.library;
 }

@@ -75,7 +75,8 @@ std::string Progress::line() const
   if (part_.empty()) {
     std::snprintf(text, sizeof text, "%s... %.1f s", stage_.c_str(), seconds);
   } else {
-    const double inPart = partUnits_ > 0.0 ? std::min(1.0, partDone_.load(std::memory_order_relaxed) / partUnits_) : 0.0;
+    const double inPart =
+        partUnits_ > 0.0 ? std::min(1.0, partDone_.load(std::memory_order_relaxed) / partUnits_) : 0.0;
     const double done = std::clamp(finishedWeight_ + partWeight_ * inPart, 0.0, 1.0);
     std::snprintf(text, sizeof text, "%s %3.0f%% (%s), %.1f s", stage_.c_str(), 100.0 * done, part_.c_str(), seconds);
   }

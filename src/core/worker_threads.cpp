@@ -18,8 +18,7 @@ int prepareParallelRegions()
     std::vector<std::thread> probes;
     try {
       for (int i = 1; i < wanted; ++i, ++made) probes.emplace_back([] {});
-    } catch (const std::system_error&) {
-    }
+    } catch (const std::system_error&) {}
     for (auto& t : probes) t.join();
   }
   if (made + 1 < wanted) {

@@ -20,13 +20,15 @@ std::string ProgramSpec::key() const
 }
 
 namespace {
-vk::raii::DescriptorSetLayout makeSetLayout(const vk::raii::Device& device, std::vector<vk::DescriptorSetLayoutBinding> bindings)
+vk::raii::DescriptorSetLayout makeSetLayout(const vk::raii::Device& device,
+                                            std::vector<vk::DescriptorSetLayoutBinding> bindings)
 {
   for (auto& b : bindings) b.stageFlags = vk::ShaderStageFlagBits::eCompute;
   return vk::raii::DescriptorSetLayout(device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
 }
 
-vk::raii::PipelineLayout makeLayout(const vk::raii::Device& device, const vk::raii::DescriptorSetLayout& set, uint32_t pushBytes)
+vk::raii::PipelineLayout makeLayout(const vk::raii::Device& device, const vk::raii::DescriptorSetLayout& set,
+                                    uint32_t pushBytes)
 {
   vk::PushConstantRange range(vk::ShaderStageFlagBits::eCompute, 0, pushBytes);
   vk::DescriptorSetLayout sets[] = {*set};
@@ -49,11 +51,10 @@ vk::raii::Pipeline makePipeline(const vk::raii::Device& device, const vk::raii::
 }
 }  // namespace
 
-ComputeProgram::ComputeProgram(const vk::raii::Device& device, const vk::raii::PipelineCache& cache, const ProgramSpec& spec)
-    : setLayout(makeSetLayout(device, spec.bindings)),
-      layout(makeLayout(device, setLayout, spec.pushConstantBytes)),
+ComputeProgram::ComputeProgram(const vk::raii::Device& device, const vk::raii::PipelineCache& cache,
+                               const ProgramSpec& spec)
+    : setLayout(makeSetLayout(device, spec.bindings)), layout(makeLayout(device, setLayout, spec.pushConstantBytes)),
       pipeline(makePipeline(device, cache, layout, spec))
-{
-}
+{}
 
 }  // namespace lbmshape::gpu

@@ -10,9 +10,9 @@
 namespace lbmshape::gpu {
 
 struct ProgramSpec {
-  std::string shader;                                  // name in the shader registry
+  std::string shader;                                    // name in the shader registry
   std::vector<vk::DescriptorSetLayoutBinding> bindings;  // stage is set to compute
-  std::vector<uint32_t> specialization;                // constant_id i gets word i
+  std::vector<uint32_t> specialization;                  // constant_id i gets word i
   uint32_t pushConstantBytes = 0;
 
   std::string key() const;  // identifies the compiled pipeline

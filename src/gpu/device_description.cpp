@@ -52,8 +52,8 @@ size_t chooseDevice(const std::vector<DeviceDescription>& devices, const std::st
     for (size_t i = 0; i < devices.size(); ++i)
       if (lowercase(devices[i].name).find(lowercase(request)) != std::string::npos) return i;
   }
-  throw UsageError(nameOf(Parameter::Device) + " " + request + " matches no Vulkan device (have: " + deviceList(devices) +
-                   ", or 'reference' for the CPU reference)");
+  throw UsageError(nameOf(Parameter::Device) + " " + request + " matches no Vulkan device (have: " +
+                   deviceList(devices) + ", or 'reference' for the CPU reference)");
 }
 
 }  // namespace lbmshape::gpu

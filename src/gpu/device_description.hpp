@@ -9,12 +9,12 @@
 namespace lbmshape::gpu {
 
 struct DeviceDescription {
-  uint32_t index = 0;        // position in vkEnumeratePhysicalDevices
+  uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
   std::string name;
-  std::string type;          // "discrete", "integrated", "virtual", "cpu", "other"
-  std::string driver;        // driver name and info, e.g. "llvmpipe (Mesa 22.3.6 ...)"
-  std::string apiVersion;    // "1.3.230"
-  uint64_t deviceLocalBytes = 0;      // largest DEVICE_LOCAL heap
+  std::string type;               // "discrete", "integrated", "virtual", "cpu", "other"
+  std::string driver;             // driver name and info, e.g. "llvmpipe (Mesa 22.3.6 ...)"
+  std::string apiVersion;         // "1.3.230"
+  uint64_t deviceLocalBytes = 0;  // largest DEVICE_LOCAL heap
   uint64_t maxStorageBufferRange = 0;
   uint64_t maxTexelBufferElements = 0;
   uint64_t maxAllocationBytes = 0;

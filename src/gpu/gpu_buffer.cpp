@@ -4,7 +4,8 @@
 
 namespace lbmshape::gpu {
 
-GpuBuffer::GpuBuffer(GpuContext& context, vk::DeviceSize bytes, vk::BufferUsageFlags usage, MemoryUse use) : bytes_(bytes)
+GpuBuffer::GpuBuffer(GpuContext& context, vk::DeviceSize bytes, vk::BufferUsageFlags usage, MemoryUse use)
+    : bytes_(bytes)
 {
   auto& device = context.device();
   buffer_ = vk::raii::Buffer(device, vk::BufferCreateInfo({}, bytes, usage, vk::SharingMode::eExclusive));

@@ -14,7 +14,8 @@ uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device)
   // A compute-only family is often the asynchronous compute engine of a GPU;
   // any family with compute will do.
   for (uint32_t i = 0; i < families.size(); ++i)
-    if ((families[i].queueFlags & vk::QueueFlagBits::eCompute) && !(families[i].queueFlags & vk::QueueFlagBits::eGraphics))
+    if ((families[i].queueFlags & vk::QueueFlagBits::eCompute) &&
+        !(families[i].queueFlags & vk::QueueFlagBits::eGraphics))
       return i;
   for (uint32_t i = 0; i < families.size(); ++i)
     if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return i;
@@ -53,7 +54,8 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
   const std::optional<uint32_t> graphicsFamily = graphicsQueueFamily(*physical_, queueFamily_);
   float priority = 1.0f;
   std::vector<vk::DeviceQueueCreateInfo> queueInfos{{{}, queueFamily_, 1, &priority}};
-  if (graphicsFamily && *graphicsFamily != queueFamily_) queueInfos.emplace_back(vk::DeviceQueueCreateFlags(), *graphicsFamily, 1, &priority);
+  if (graphicsFamily && *graphicsFamily != queueFamily_)
+    queueInfos.emplace_back(vk::DeviceQueueCreateFlags(), *graphicsFamily, 1, &priority);
   // Wireframes are drawn as lines, where the device can.
   vk::PhysicalDeviceFeatures features;
   fillModeNonSolid_ = graphicsFamily && physical_->getFeatures().fillModeNonSolid;
@@ -63,9 +65,10 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
   commandPool_ = vk::raii::CommandPool(
       device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily_));
   if (graphicsFamily) {
-    graphics_.emplace(Submission{vk::raii::Queue(device_, *graphicsFamily, 0),
-                                 vk::raii::CommandPool(device_, vk::CommandPoolCreateInfo(
-                                                                    vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily))});
+    graphics_.emplace(Submission{
+        vk::raii::Queue(device_, *graphicsFamily, 0),
+        vk::raii::CommandPool(
+            device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, *graphicsFamily))});
   }
   fence_ = vk::raii::Fence(device_, vk::FenceCreateInfo());
   // Two timestamps around each compute submission: the device's busy time,
@@ -73,9 +76,9 @@ GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIn
   if (physical_->getQueueFamilyProperties().at(queueFamily_).timestampValidBits > 0)
     timestamps_ = vk::raii::QueryPool(device_, vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
   pipelineCache_.emplace(device_, defaultPipelineCachePath(properties_));
-  log::verbose("pipeline cache: " +
-               (pipelineCache_->path().empty() ? std::string("off") : pipelineCache_->path().string()) + " (" +
-               std::to_string(pipelineCache_->loadedBytes()) + " bytes loaded)");
+  log::verbose(
+      "pipeline cache: " + (pipelineCache_->path().empty() ? std::string("off") : pipelineCache_->path().string()) +
+      " (" + std::to_string(pipelineCache_->loadedBytes()) + " bytes loaded)");
 }
 
 GpuContext::~GpuContext()
@@ -84,7 +87,8 @@ GpuContext::~GpuContext()
   if (*device_) device_.waitIdle();
 }
 
-uint32_t GpuContext::memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred) const
+uint32_t GpuContext::memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required,
+                                vk::MemoryPropertyFlags preferred) const
 {
   std::optional<uint32_t> fallback;
   for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
@@ -116,7 +120,8 @@ void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record
 
 RecordedCommands GpuContext::record(const std::function<void(vk::CommandBuffer)>& commands)
 {
-  vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
+  vk::raii::CommandBuffers buffers(device_,
+                                   vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
   vk::raii::CommandBuffer cmd = std::move(buffers[0]);
   recordInto(cmd, {}, [&](vk::CommandBuffer c) {
     if (!*timestamps_) return commands(c);
@@ -132,8 +137,8 @@ void GpuContext::replayAndWait(const RecordedCommands& commands)
 {
   submitAndWait(queue_, commands.handle());
   if (!*timestamps_) return;
-  const auto [result, ticks] = timestamps_.getResults<uint64_t>(0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t),
-                                                               vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+  const auto [result, ticks] = timestamps_.getResults<uint64_t>(
+      0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t), vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
   if (result == vk::Result::eSuccess && ticks[1] >= ticks[0])
     deviceBusyMs_ += double(ticks[1] - ticks[0]) * double(properties_.limits.timestampPeriod) * 1e-6;
 }
@@ -141,14 +146,16 @@ void GpuContext::replayAndWait(const RecordedCommands& commands)
 void GpuContext::requireDrawing(const std::string& otherwise) const
 {
   if (!graphics_)
-    throw DeviceError("the Vulkan device " + description_.name + " cannot draw (it has no graphics queue); choose another with " +
-                      nameOf(Parameter::Device) + otherwise);
+    throw DeviceError("the Vulkan device " + description_.name +
+                      " cannot draw (it has no graphics queue); choose another with " + nameOf(Parameter::Device) +
+                      otherwise);
 }
 
 void GpuContext::drawAndWait(const std::function<void(vk::CommandBuffer)>& record)
 {
   requireDrawing();
-  vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*graphics_->pool, vk::CommandBufferLevel::ePrimary, 1));
+  vk::raii::CommandBuffers buffers(
+      device_, vk::CommandBufferAllocateInfo(*graphics_->pool, vk::CommandBufferLevel::ePrimary, 1));
   recordInto(buffers[0], vk::CommandBufferUsageFlagBits::eOneTimeSubmit, record);
   submitAndWait(graphics_->queue, *buffers[0]);
 }

@@ -48,7 +48,8 @@ public:
 
   // Index of a memory type allowed by `typeBits` that has all `required` flags,
   // preferring one that also has the `preferred` ones.
-  uint32_t memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred = {}) const;
+  uint32_t memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required,
+                      vk::MemoryPropertyFlags preferred = {}) const;
 
   // The compiled program for this shader and specialization, built once.
   ComputeProgram& program(const ProgramSpec& spec);

@@ -16,7 +16,7 @@ GpuImage::GpuImage(GpuContext& context, vk::Format format, vk::Extent2D extent, 
   memory_ = vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo(requirements.size, type));
   image_.bindMemory(*memory_, 0);
   view_ = vk::raii::ImageView(device, vk::ImageViewCreateInfo({}, *image_, vk::ImageViewType::e2D, format, {},
-                                                             vk::ImageSubresourceRange(aspect, 0, 1, 0, 1)));
+                                                              vk::ImageSubresourceRange(aspect, 0, 1, 0, 1)));
 }
 
 }  // namespace lbmshape::gpu

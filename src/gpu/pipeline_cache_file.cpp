@@ -27,7 +27,8 @@ std::filesystem::path defaultPipelineCachePath(const vk::PhysicalDevicePropertie
   return dir / ("pipelines-" + uuid + ".bin");
 }
 
-PipelineCacheFile::PipelineCacheFile(const vk::raii::Device& device, std::filesystem::path path) : path_(std::move(path))
+PipelineCacheFile::PipelineCacheFile(const vk::raii::Device& device, std::filesystem::path path)
+    : path_(std::move(path))
 {
   std::vector<char> data;
   if (!path_.empty()) {

@@ -84,8 +84,9 @@ VulkanInstance::VulkanInstance(bool validation)
   std::vector<const char*> layers, extensions;
   if (validation) {
     if (!layerAvailable(context_, validationLayer))
-      throw DeviceError("Vulkan validation was requested but VK_LAYER_KHRONOS_validation is not installed "
-                        "(on Debian: apt-get install vulkan-validationlayers)");
+      throw DeviceError(
+          "Vulkan validation was requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(on Debian: apt-get install vulkan-validationlayers)");
     layers.push_back(validationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }

@@ -17,7 +17,8 @@ void paperRuleValues(const std::vector<float>& before, const std::vector<float>&
   for (size_t i = 0; i < gamma.size(); ++i) gamma[i] = std::clamp(g0 + (after[i] - before[i]) / gammaUsed[i], lo, hi);
 }
 
-void featurePreservingValues(const std::vector<float>& kappa, double gamma0, double kappaEdge, std::vector<float>& gamma)
+void featurePreservingValues(const std::vector<float>& kappa, double gamma0, double kappaEdge,
+                             std::vector<float>& gamma)
 {
   const double lo = std::min(lowest, gamma0);
 #pragma omp parallel for schedule(static)

@@ -13,8 +13,7 @@ using d3q19::Q;
 BandReferenceSolver::BandReferenceSolver(std::shared_ptr<const BrickSet> bricks)
     : bricks_(std::move(bricks)), neighbours_(bricks_->neighbourTable()), current_(bricks_->storedCells()),
       next_(bricks_->storedCells()), streams_(bricks_->storedCells(), 0)
-{
-}
+{}
 
 void BandReferenceSolver::setUniformGamma(double gamma)
 {
@@ -151,7 +150,8 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
           const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
           const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
           if (e.contains(up.x, up.y, up.z) && slot != noBrick)
-            from = current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
+            from =
+                current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
           else
             sign = -1.0f;  // a wall (or, never for a streaming cell, the band's edge): bounce-back, f*_opposite(x)
         }

@@ -36,16 +36,16 @@ private:
   void applyPaperRule();
 
   std::shared_ptr<const BrickSet> bricks_;
-  std::vector<int32_t> neighbours_;     // 27 a slot (BrickSet::neighbourTable)
+  std::vector<int32_t> neighbours_;        // 27 a slot (BrickSet::neighbourTable)
   std::vector<glm::vec4> current_, next_;  // (rho*, j*) a cell
-  std::vector<uint8_t> streams_;        // 1: the cell streams; 0: held (or beyond the grid)
-  std::vector<int32_t> work_;           // the slots a step updates (band_state::slotsToStep)
-  BandField initial_;                   // X at initialisation, with its far sides
+  std::vector<uint8_t> streams_;           // 1: the cell streams; 0: held (or beyond the grid)
+  std::vector<int32_t> work_;              // the slots a step updates (band_state::slotsToStep)
+  BandField initial_;                      // X at initialisation, with its far sides
   float uniformOmega_ = 1.0f;
-  std::vector<float> omegaPerCell_;     // empty: uniform
+  std::vector<float> omegaPerCell_;  // empty: uniform
   std::optional<double> paperRuleGamma0_;
-  bool paperRuleReady_ = false;  // initialize() has seeded the rule's state
-  BandField xBefore_, gammaBefore_;     // the paper's rule: what each cell's last step pulled and used
+  bool paperRuleReady_ = false;      // initialize() has seeded the rule's state
+  BandField xBefore_, gammaBefore_;  // the paper's rule: what each cell's last step pulled and used
   std::optional<BandSource> source_;
   int steps_ = 0;
 };

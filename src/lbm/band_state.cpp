@@ -56,8 +56,8 @@ void checkStoredField(int back, int stepsTaken, bool source)
 
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)
 {
-  if (&field.bricks() != &bricks && (field.bricks().activeCount() != bricks.activeCount() ||
-                                     !(field.bricks().cells() == bricks.cells())))
+  if (&field.bricks() != &bricks &&
+      (field.bricks().activeCount() != bricks.activeCount() || !(field.bricks().cells() == bricks.cells())))
     throw std::invalid_argument(std::string("the ") + what + " lies on other bricks than the solver's");
 }
 

@@ -39,11 +39,16 @@ constexpr auto storage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsa
 std::vector<vk::DescriptorSetLayoutBinding> bindings()
 {
   using T = vk::DescriptorType;
-  return {{BAND_BINDING_MOMENTS, T::eUniformTexelBuffer, 1, {}},   {BAND_BINDING_STREAMS, T::eUniformTexelBuffer, 1, {}},
-          {BAND_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}}, {BAND_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
-          {BAND_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},     {BAND_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
-          {BAND_BINDING_NEXT, T::eStorageBuffer, BAND_MAX_POOLS, {}}, {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_POOLS, {}},
-          {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}}, {BAND_BINDING_GAMMA, T::eStorageTexelBuffer, 1, {}}};
+  return {{BAND_BINDING_MOMENTS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_STREAMS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_NEXT, T::eStorageBuffer, BAND_MAX_POOLS, {}},
+          {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_POOLS, {}},
+          {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}},
+          {BAND_BINDING_GAMMA, T::eStorageTexelBuffer, 1, {}}};
 }
 
 }  // namespace
@@ -67,19 +72,22 @@ struct BandPools {
 
 struct BandVulkanSolver::Resources {
   Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b, uint64_t stagingBytes)
-      : context(c), bricks(std::move(b)), cells(bricks->storedCells()), pools(c.description(), bricks->activeCount()),
-        moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device), GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
-        field(c, 4 * cells, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
+      : context(c), bricks(std::move(b)), cells(bricks->storedCells()),
+        pools(c.description(), bricks->activeCount()), moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device),
+                                                               GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
+        field(c, 4 * cells, storage, MemoryUse::Device),
+        streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
         neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
-        work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device),
-        omega(c, 16, perCell, MemoryUse::Device), source(c, 16, texels, MemoryUse::Device),
+        work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
+        source(c, 16, texels, MemoryUse::Device),
         staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
                 vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
-    std::array<vk::DescriptorPoolSize, 3> sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
-                                                   vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
-                                                   vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
+    std::array<vk::DescriptorPoolSize, 3> sizes = {
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
     descriptorPool = vk::raii::DescriptorPool(
         c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
     const auto& setLayout = c.program(program()).setLayout;
@@ -94,7 +102,7 @@ struct BandVulkanSolver::Resources {
   BandPools pools;
   GpuBuffer moments[2];
   GpuBuffer field, streams, neighbours, origins;
-  GpuBuffer work;   // the slots a step updates, then every slot (for the field)
+  GpuBuffer work;  // the slots a step updates, then every slot (for the field)
   int stepWorks = 0;
   // 16 bytes until set: a valid view for the shader variants that ignore
   // them. omega holds omega per cell, or under the paper's rule gamma per
@@ -111,11 +119,11 @@ struct BandVulkanSolver::Resources {
   int current = 0;
   int steps = 0;
   float uniformOmega = 1.0f;
-  std::vector<float> omegaPerCell;     // host copy: initialize() needs it
+  std::vector<float> omegaPerCell;        // host copy: initialize() needs it
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
   bool paperRuleReady = false;            // initialize() has seeded its gamma
   std::optional<BandSource> sourceHost;
-  BandField initial;                   // X at initialisation (its values until the first step), with its far sides
+  BandField initial;  // X at initialisation (its values until the first step), with its far sides
 
   vk::BufferView view(const GpuBuffer& buffer, vk::Format format)
   {
@@ -162,7 +170,8 @@ struct BandVulkanSolver::Resources {
       writes.emplace_back(set, BAND_BINDING_OMEGA, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaView);
       writes.emplace_back(set, BAND_BINDING_SOURCE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceView);
       writes.emplace_back(set, BAND_BINDING_WORK, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &workView);
-      writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, nextRanges[size_t(k)].data());
+      writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr,
+                          nextRanges[size_t(k)].data());
       writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, fieldRanges.data());
       writes.emplace_back(set, BAND_BINDING_GAMMA, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &omegaView);
     }
@@ -215,7 +224,8 @@ struct BandVulkanSolver::Resources {
         if (first == 0) before(cmd);
         cmd.copyBuffer(source.handle(), staging.handle(), regions);
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
-                            vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {}, {});
+                            vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {},
+                            {});
       });
       std::memcpy(static_cast<std::byte*>(data) + first * unitBytes, staging.mapped(), count * unitBytes);
     }
@@ -241,7 +251,8 @@ struct BandVulkanSolver::Resources {
   gpu::ProgramSpec program() const
   {
     using gpu::specFloat;
-    return {"band_step", bindings(),
+    return {"band_step",
+            bindings(),
             {specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
             sizeof(band_shader::StepParameters)};
   }
@@ -270,7 +281,8 @@ struct BandVulkanSolver::Resources {
   {
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[size_t(from)], {});
     const uint32_t works = uint32_t(everySlot ? bricks->activeCount() : size_t(stepWorks));
-    cmd.dispatch(std::min<uint32_t>(works, BAND_MAX_WORKGROUPS_X), (works + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
+    cmd.dispatch(std::min<uint32_t>(works, BAND_MAX_WORKGROUPS_X),
+                 (works + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
   }
 };
 
@@ -315,7 +327,8 @@ uint64_t BandVulkanSolver::maxCells(const gpu::DeviceDescription& device, bool p
   uint64_t most = std::min<uint64_t>(BAND_MAX_POOLS * slotsPerPool * brickCells, device.maxTexelBufferElements);
   if (device.maxAllocationBytes) most = std::min<uint64_t>(most, device.maxAllocationBytes / 16);
   if (device.deviceLocalBytes) {
-    const uint64_t room = device.deviceLocalBytes > defaultStagingBytes ? device.deviceLocalBytes - defaultStagingBytes : 0;
+    const uint64_t room =
+        device.deviceLocalBytes > defaultStagingBytes ? device.deviceLocalBytes - defaultStagingBytes : 0;
     most = std::min<uint64_t>(most, uint64_t(double(room) / deviceBytesPerCell(perCellOmega, source)));
   }
   return most / brickCells * brickCells;
@@ -474,10 +487,10 @@ BandField BandVulkanSolver::storedField(int back)
   BandField out = r_->initial.sameShape();
   r_->downloadUnits(copy, r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot, out.values().data(),
                     [](vk::CommandBuffer cmd) {
-                      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer,
-                                          {}, vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite,
-                                                                vk::AccessFlagBits::eTransferRead),
-                                          {}, {});
+                      cmd.pipelineBarrier(
+                          vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {},
+                          {});
                     });
   return out;
 }
@@ -491,7 +504,8 @@ BandField BandVulkanSolver::field()
   auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, r_->parameters(true));
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0,
+                                                   r_->parameters(true));
     r_->dispatch(cmd, program, r_->current, true);
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});

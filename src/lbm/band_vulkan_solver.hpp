@@ -12,7 +12,7 @@ namespace lbmshape {
 namespace gpu {
 class GpuContext;
 struct DeviceDescription;
-}
+}  // namespace gpu
 
 class BandVulkanSolver final : public BandSolver {
 public:

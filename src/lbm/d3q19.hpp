@@ -15,11 +15,9 @@ struct Velocity {
 };
 
 inline constexpr std::array<Velocity, Q> velocities = {{
-    {0, 0, 0},
-    {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
-    {1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0},
-    {1, 0, 1}, {-1, 0, -1}, {1, 0, -1}, {-1, 0, 1},
-    {0, 1, 1}, {0, -1, -1}, {0, 1, -1}, {0, -1, 1},
+    {0, 0, 0},  {1, 0, 0},   {-1, 0, 0},  {0, 1, 0},  {0, -1, 0}, {0, 0, 1},   {0, 0, -1},
+    {1, 1, 0},  {-1, -1, 0}, {1, -1, 0},  {-1, 1, 0}, {1, 0, 1},  {-1, 0, -1}, {1, 0, -1},
+    {-1, 0, 1}, {0, 1, 1},   {0, -1, -1}, {0, 1, -1}, {0, -1, 1},
 }};
 
 // Weights of the equilibrium f_i^eq = w_i X: rest 1/3, axial 1/18, diagonal 1/36.
@@ -35,16 +33,10 @@ inline constexpr float restWeight = 1.0f - 6.0f * axialWeight - 12.0f * diagonal
 static_assert(double(restWeight) + 6.0 * double(axialWeight) + 12.0 * double(diagonalWeight) == 1.0,
               "D3Q19 weights must sum to exactly one in fp32");
 
-constexpr float weight(int i)
-{
-  return i == 0 ? restWeight : (i <= 6 ? axialWeight : diagonalWeight);
-}
+constexpr float weight(int i) { return i == 0 ? restWeight : (i <= 6 ? axialWeight : diagonalWeight); }
 
 // Velocities come in opposite pairs (1,2), (3,4), ...: bounce-back swaps them.
-constexpr int opposite(int i)
-{
-  return i == 0 ? 0 : ((i % 2) ? i + 1 : i - 1);
-}
+constexpr int opposite(int i) { return i == 0 ? 0 : ((i % 2) ? i + 1 : i - 1); }
 
 // The lattice speed of sound squared: sum_i w_i e_ix^2. It fixes the diffusion
 // coefficient of the BGK scheme, gamma = c_s^2 (tau - 1/2).

@@ -33,7 +33,7 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
   const Extent3& e = layout.extent;
   auto tooLarge = [&](const std::string& why) {
     throw DeviceError("a " + e.toString() + " lattice does not fit on " + device.name + ": " + why +
-                     "; use a coarser grid or another " + nameOf(Parameter::Device));
+                      "; use a coarser grid or another " + nameOf(Parameter::Device));
   };
   // The shaders index a lattice copy with 32-bit ints, in vec4 (and, in the
   // init pass, in floats within one group).

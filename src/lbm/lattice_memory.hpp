@@ -26,7 +26,12 @@ inline constexpr int largest = 3;
 
 constexpr int of(int ey, int ez)
 {
-  return ez == 0 ? (ey == 0 ? 0 : ey == 1 ? 1 : 2) : ey == 0 ? (ez == 1 ? 3 : 4) : ey == ez ? (ey == 1 ? 5 : 6) : (ey == 1 ? 7 : 8);
+  return ez == 0    ? (ey == 0   ? 0
+                       : ey == 1 ? 1
+                                 : 2)
+         : ey == 0  ? (ez == 1 ? 3 : 4)
+         : ey == ez ? (ey == 1 ? 5 : 6)
+                    : (ey == 1 ? 7 : 8);
 }
 constexpr int size(int group) { return group < 5 ? 3 : 1; }
 constexpr int start(int group) { return group < 5 ? 3 * group : 10 + group; }  // directions in the groups before
@@ -53,12 +58,15 @@ static_assert(consistent(), "row groups must match the D3Q19 velocities");
 struct LatticeLayout {
   Extent3 extent;
   int row = 0;
-  uint64_t blocks = 0;        // four-cell blocks, rounded up to a multiple of 16 (group offsets stay 256-byte aligned)
-  uint64_t copyBytes = 0;     // one lattice copy
-  uint64_t volumeBytes = 0;   // one volume
-  uint64_t totalBytes = 0;    // everything the Vulkan solver allocates
+  uint64_t blocks = 0;       // four-cell blocks, rounded up to a multiple of 16 (group offsets stay 256-byte aligned)
+  uint64_t copyBytes = 0;    // one lattice copy
+  uint64_t volumeBytes = 0;  // one volume
+  uint64_t totalBytes = 0;   // everything the Vulkan solver allocates
 
-  uint64_t linearIndex(int x, int y, int z) const { return uint64_t(x) + uint64_t(row) * (uint64_t(y) + uint64_t(extent.ny) * uint64_t(z)); }
+  uint64_t linearIndex(int x, int y, int z) const
+  {
+    return uint64_t(x) + uint64_t(row) * (uint64_t(y) + uint64_t(extent.ny) * uint64_t(z));
+  }
   uint64_t groupOffsetBytes(int group) const { return uint64_t(row_groups::start(group)) * blocks * 16; }
   uint64_t groupBytes(int group) const { return uint64_t(row_groups::size(group)) * blocks * 16; }
 

@@ -14,8 +14,7 @@ using d3q19::Q;
 
 ReferenceSolver::ReferenceSolver(Extent3 extent)
     : extent_(extent), current_(size_t(Q) * extent.cells()), next_(size_t(Q) * extent.cells())
-{
-}
+{}
 
 void ReferenceSolver::setUniformGamma(double gamma)
 {
@@ -259,10 +258,14 @@ void ReferenceSolver::sweep(Volume* fieldOut)
                source_ ? source_->base.data() : nullptr,
                source_ ? source_->decay : 0.0f};
   const bool perCell = s.omegaPerCell != nullptr, withSource = s.sourceBase != nullptr;
-  if (perCell && withSource) sweepAll<Collide, true, true>(s);
-  else if (perCell) sweepAll<Collide, true, false>(s);
-  else if (withSource) sweepAll<Collide, false, true>(s);
-  else sweepAll<Collide, false, false>(s);
+  if (perCell && withSource)
+    sweepAll<Collide, true, true>(s);
+  else if (perCell)
+    sweepAll<Collide, true, false>(s);
+  else if (withSource)
+    sweepAll<Collide, false, true>(s);
+  else
+    sweepAll<Collide, false, false>(s);
 }
 
 }  // namespace lbmshape

@@ -39,7 +39,7 @@ private:
   float uniformOmega_ = 1.0f;
   Volume omegaPerCell_;  // empty when uniform
   std::optional<double> paperRuleGamma0_;
-  bool paperRuleReady_ = false;  // initialize() has seeded the rule's state
+  bool paperRuleReady_ = false;   // initialize() has seeded the rule's state
   Volume xBefore_, gammaBefore_;  // the paper's rule: what each cell's last step pulled and used
   std::optional<LinearSource> source_;
   int steps_ = 0;

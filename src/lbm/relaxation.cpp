@@ -56,8 +56,8 @@ void warnIfInaccurate(double gamma, long steps)
   message << what << " = " << gamma << " over " << steps << (steps == 1 ? " step" : " steps") << " smooths "
           << std::fixed << std::setprecision(1) << std::abs(error) * 100.0 << (error < 0 ? " % less" : " % more")
           << " than the diffusion equation (2*gamma*steps) because every run starts in equilibrium; "
-          << (error < 0 ? "more steps at a smaller " + what : "more steps, or a " + what + " nearer 1/6,") << " stay within "
-          << int(accurateStartUpError * 100) << " % (docs/lattice-theory.md, \"The first steps\")";
+          << (error < 0 ? "more steps at a smaller " + what : "more steps, or a " + what + " nearer 1/6,")
+          << " stay within " << int(accurateStartUpError * 100) << " % (docs/lattice-theory.md, \"The first steps\")";
   log::warning(message.str());
 }
 

@@ -41,9 +41,12 @@ std::vector<vk::DescriptorSetLayoutBinding> latticeBindings()
 {
   using T = vk::DescriptorType;
   return {
-      {LATTICE_BINDING_IN, T::eUniformTexelBuffer, 1, {}},     {LATTICE_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},
-      {LATTICE_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}}, {LATTICE_BINDING_NEXT, T::eStorageBuffer, groupCount, {}},
-      {LATTICE_BINDING_FIELD, T::eStorageBuffer, 1, {}},       {LATTICE_BINDING_GAMMA, T::eStorageBuffer, 1, {}},
+      {LATTICE_BINDING_IN, T::eUniformTexelBuffer, 1, {}},
+      {LATTICE_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},
+      {LATTICE_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
+      {LATTICE_BINDING_NEXT, T::eStorageBuffer, groupCount, {}},
+      {LATTICE_BINDING_FIELD, T::eStorageBuffer, 1, {}},
+      {LATTICE_BINDING_GAMMA, T::eStorageBuffer, 1, {}},
   };
 }
 
@@ -111,7 +114,7 @@ struct VulkanSolver::Resources {
   bool perCellOmega = false;
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
   bool paperRuleReady = false;            // initialize() has seeded its gamma and X before
-  std::optional<LinearSource> source;    // host copy: initialize() needs A
+  std::optional<LinearSource> source;     // host copy: initialize() needs A
 
   gpu::ProgramSpec latticeProgram(const char* shader) const
   {
@@ -121,7 +124,10 @@ struct VulkanSolver::Resources {
     constants.push_back(gpu::specBool(paperRuleGamma0.has_value()));
     return {shader, latticeBindings(), constants, sizeof(StepParameters)};
   }
-  gpu::ProgramSpec initProgram() const { return {"lbm_init", initBindings(), gridConstants(layout, initWorkgroupSize), 0}; }
+  gpu::ProgramSpec initProgram() const
+  {
+    return {"lbm_init", initBindings(), gridConstants(layout, initWorkgroupSize), 0};
+  }
 
   // Dispatches a lattice pipeline over every block of the grid.
   void dispatchLattice(vk::CommandBuffer cmd) const
@@ -150,8 +156,7 @@ GpuBuffer volumeBuffer(gpu::GpuContext& c, const LatticeLayout& l, vk::BufferUsa
 }  // namespace
 
 VulkanSolver::Resources::Resources(gpu::GpuContext& c, const LatticeLayout& l)
-    : context(c),
-      layout(l),
+    : context(c), layout(l),
       field(volumeBuffer(c, l,
                          vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc |
                              vk::BufferUsageFlagBits::eTransferDst,
@@ -207,7 +212,8 @@ void VulkanSolver::Resources::writeDescriptors()
   std::array<std::array<vk::DescriptorBufferInfo, groupCount>, 2> groupRanges;  // [k][g]: group g of copy k
   for (int k = 0; k < 2; ++k)
     for (int g = 0; g < groupCount; ++g)
-      groupRanges[k][g] = vk::DescriptorBufferInfo(lattice[k].handle(), layout.groupOffsetBytes(g), layout.groupBytes(g));
+      groupRanges[k][g] =
+          vk::DescriptorBufferInfo(lattice[k].handle(), layout.groupOffsetBytes(g), layout.groupBytes(g));
   vk::BufferView omegaHandle = *omegaView, sourceHandle = *sourceView;
   vk::DescriptorBufferInfo fieldInfo(field.handle(), 0, VK_WHOLE_SIZE), gammaInfo(omega.handle(), 0, VK_WHOLE_SIZE);
   using T = vk::DescriptorType;
@@ -216,7 +222,8 @@ void VulkanSolver::Resources::writeDescriptors()
     writes.emplace_back(set, LATTICE_BINDING_IN, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
     writes.emplace_back(set, LATTICE_BINDING_OMEGA, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &omegaHandle);
     writes.emplace_back(set, LATTICE_BINDING_SOURCE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceHandle);
-    writes.emplace_back(set, LATTICE_BINDING_NEXT, 0, groupCount, T::eStorageBuffer, nullptr, groupRanges[1 - k].data());
+    writes.emplace_back(set, LATTICE_BINDING_NEXT, 0, groupCount, T::eStorageBuffer, nullptr,
+                        groupRanges[1 - k].data());
     writes.emplace_back(set, LATTICE_BINDING_FIELD, 0, 1, T::eStorageBuffer, nullptr, &fieldInfo);
     writes.emplace_back(set, LATTICE_BINDING_GAMMA, 0, 1, T::eStorageBuffer, nullptr, &gammaInfo);
   }
@@ -347,16 +354,18 @@ void VulkanSolver::step(int count)
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
     const int first = r_->current;
-    r_->context.replayAndWait(r_->recordedSteps.get(r_->context, gpu::keyOf(batch, first, push, static_cast<VkPipeline>(*program.pipeline)), [&](vk::CommandBuffer cmd) {
-      cmd.bindPipeline(bind, *program.pipeline);
-      cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-      for (int s = 0; s < batch; ++s) {
-        cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(first + s) % 2], {});
-        r_->dispatchLattice(cmd);
-        // The next step reads what this one wrote and overwrites what it read.
-        barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
-      }
-    }));
+    r_->context.replayAndWait(r_->recordedSteps.get(
+        r_->context, gpu::keyOf(batch, first, push, static_cast<VkPipeline>(*program.pipeline)),
+        [&](vk::CommandBuffer cmd) {
+          cmd.bindPipeline(bind, *program.pipeline);
+          cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+          for (int s = 0; s < batch; ++s) {
+            cmd.bindDescriptorSets(bind, *program.layout, 0, *r_->latticeSets[(first + s) % 2], {});
+            r_->dispatchLattice(cmd);
+            // The next step reads what this one wrote and overwrites what it read.
+            barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite, computeStage);
+          }
+        }));
     r_->current = (r_->current + batch) % 2;
     r_->steps += batch;
     count -= batch;

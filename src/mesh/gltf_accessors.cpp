@@ -15,14 +15,14 @@ double component(const unsigned char* p, int componentType, bool normalized)
     return value;
   };
   switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return load(float());
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load(double());
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load(uint32_t());
-    case TINYGLTF_COMPONENT_TYPE_INT: return load(int32_t());
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return normalized ? load(uint16_t()) / 65535.0 : load(uint16_t());
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return normalized ? std::max(load(int16_t()) / 32767.0, -1.0) : load(int16_t());
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? load(uint8_t()) / 255.0 : load(uint8_t());
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return normalized ? std::max(load(int8_t()) / 127.0, -1.0) : load(int8_t());
+  case TINYGLTF_COMPONENT_TYPE_FLOAT: return load(float());
+  case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load(double());
+  case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load(uint32_t());
+  case TINYGLTF_COMPONENT_TYPE_INT: return load(int32_t());
+  case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return normalized ? load(uint16_t()) / 65535.0 : load(uint16_t());
+  case TINYGLTF_COMPONENT_TYPE_SHORT: return normalized ? std::max(load(int16_t()) / 32767.0, -1.0) : load(int16_t());
+  case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? load(uint8_t()) / 255.0 : load(uint8_t());
+  case TINYGLTF_COMPONENT_TYPE_BYTE: return normalized ? std::max(load(int8_t()) / 127.0, -1.0) : load(int8_t());
   }
   return 0.0;
 }
@@ -37,8 +37,7 @@ uint64_t componentSize(int componentType)
 
 GltfAccessors::GltfAccessors(const tinygltf::Model& model, const MeshSource& source, uint64_t elementLimit)
     : model_(model), source_(source), elementLimit_(elementLimit)
-{
-}
+{}
 
 const tinygltf::Accessor& GltfAccessors::accessor(int index, int type, const std::string& what) const
 {
@@ -62,7 +61,8 @@ GltfAccessors::Span GltfAccessors::span(int bufferView, uint64_t byteOffset, uin
   if (!viewEnd || *viewEnd > model_.buffers[size_t(view.buffer)].data.size())
     fail(name + " reaches past the end of its buffer");
   const uint64_t stride = strided && view.byteStride ? view.byteStride : elementSize;
-  if (stride < elementSize) fail(name + "'s byteStride " + std::to_string(stride) + " is less than an element of " + what);
+  if (stride < elementSize)
+    fail(name + "'s byteStride " + std::to_string(stride) + " is less than an element of " + what);
   if (byteOffset > view.byteLength) fail(what + " begins past the end of " + name);
   if (count > 0) {
     // byteOffset + stride * (count - 1) + elementSize, without wrapping.
@@ -114,7 +114,8 @@ void GltfAccessors::read(const tinygltf::Accessor& a, int components, const std:
     const double target = component(indices.data + k * indexSize, sparse.indices.componentType, false);
     if (!(target >= 0 && target < double(a.count))) fail(what + " has a sparse index out of range");
     for (int c = 0; c < components; ++c)
-      store(uint64_t(target), c, component(values.data + k * elementSize + uint64_t(c) * size, a.componentType, a.normalized));
+      store(uint64_t(target), c,
+            component(values.data + k * elementSize + uint64_t(c) * size, a.componentType, a.normalized));
   }
 }
 

@@ -43,7 +43,6 @@ std::vector<float> unitNormals(const TriangleMesh& mesh)
   return out;
 }
 
-
 // COLOR_0 is linear RGB; the mesh keeps colours as shown (sRGB).
 std::vector<float> linearColours(const TriangleMesh& mesh)
 {
@@ -58,7 +57,8 @@ std::vector<float> linearColours(const TriangleMesh& mesh)
 tinygltf::Value integer(size_t value)
 {
   if (value > size_t(std::numeric_limits<int>::max()))
-    throw OutputError("a compressed glTF file of more than 2 GB cannot be written; write fewer frames, or without " + nameOf(Parameter::Compression));
+    throw OutputError("a compressed glTF file of more than 2 GB cannot be written; write fewer frames, or without " +
+                      nameOf(Parameter::Compression));
   return tinygltf::Value(int(value));
 }
 
@@ -84,8 +84,8 @@ GltfBuilder::GltfBuilder(GltfCompression compression) : compression_(compression
   }
 }
 
-int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride, const char* mode,
-                                int target)
+int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride,
+                                const char* mode, int target)
 {
   auto& buffer = model_.buffers[0].data;
   buffer.resize((buffer.size() + 3) / 4 * 4, 0);
@@ -114,13 +114,14 @@ int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_
 int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& name)
 {
   const CompressedMesh c =
-      compressMesh(mesh, unitNormals(mesh), mesh.colours.size() == mesh.positions.size() ? linearColours(mesh) : std::vector<float>());
+      compressMesh(mesh, unitNormals(mesh),
+                   mesh.colours.size() == mesh.positions.size() ? linearColours(mesh) : std::vector<float>());
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
 
   // One accessor per vertex stream, over its own encoded buffer view.
-  const auto attribute = [&](const std::vector<unsigned char>& encoded, uint32_t stride, int componentType, bool normalized,
-                              int type) {
+  const auto attribute = [&](const std::vector<unsigned char>& encoded, uint32_t stride, int componentType,
+                             bool normalized, int type) {
     tinygltf::Accessor accessor;
     accessor.bufferView = addEncodedView(encoded, c.vertexCount, stride, "ATTRIBUTES", TINYGLTF_TARGET_ARRAY_BUFFER);
     accessor.componentType = componentType;
@@ -131,17 +132,20 @@ int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& 
   };
   tinygltf::Accessor positions = attribute(c.positions, CompressedMesh::positionStride,
                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, false, TINYGLTF_TYPE_VEC3);
-  for (int k = 0; k < 3; ++k) positions.minValues.push_back(c.positionMin[k]), positions.maxValues.push_back(c.positionMax[k]);
+  for (int k = 0; k < 3; ++k)
+    positions.minValues.push_back(c.positionMin[k]), positions.maxValues.push_back(c.positionMax[k]);
   primitive.attributes["POSITION"] = addAccessor(positions);
   primitive.attributes["NORMAL"] = addAccessor(
       attribute(c.normals, CompressedMesh::normalStride, TINYGLTF_COMPONENT_TYPE_BYTE, true, TINYGLTF_TYPE_VEC3));
   if (!c.colours.empty())
-    primitive.attributes["COLOR_0"] = addAccessor(
-        attribute(c.colours, CompressedMesh::colourStride, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true, TINYGLTF_TYPE_VEC4));
+    primitive.attributes["COLOR_0"] = addAccessor(attribute(
+        c.colours, CompressedMesh::colourStride, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true, TINYGLTF_TYPE_VEC4));
 
   tinygltf::Accessor indices;
-  indices.bufferView = addEncodedView(c.indices, c.indexCount, c.indexSize, "TRIANGLES", TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  indices.componentType = c.indexSize == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  indices.bufferView =
+      addEncodedView(c.indices, c.indexCount, c.indexSize, "TRIANGLES", TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  indices.componentType =
+      c.indexSize == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
   indices.type = TINYGLTF_TYPE_SCALAR;
   indices.count = c.indexCount;
   primitive.indices = addAccessor(indices);
@@ -292,7 +296,8 @@ std::string withMeshoptEntries(const std::string& glb, const tinygltf::Model& mo
   fallback.erase("uri");
   fallback["byteLength"] = decodedBytes;
   addExtensions(fallback, model.buffers[1].extensions);
-  for (size_t i = 0; i < model.bufferViews.size(); ++i) addExtensions(json.at("bufferViews").at(i), model.bufferViews[i].extensions);
+  for (size_t i = 0; i < model.bufferViews.size(); ++i)
+    addExtensions(json.at("bufferViews").at(i), model.bufferViews[i].extensions);
   return glbFile(json.dump(), std::string(chunks.binary));
 }
 
@@ -309,7 +314,8 @@ size_t decodedLength(const tinygltf::Model& model)
 void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
 {
   const bool binary = format == MeshFormat::Glb;
-  if (model.buffers.size() == 2 && !binary) throw UsageError(nameOf(Parameter::Compression) + " writes .glb files, not " + file.target().string());
+  if (model.buffers.size() == 2 && !binary)
+    throw UsageError(nameOf(Parameter::Compression) + " writes .glb files, not " + file.target().string());
   // A compressed file of no surface is the plain file of no surface: nothing
   // to encode, so neither extension.
   const bool compressed = model.buffers.size() == 2 && !model.buffers[0].data.empty();

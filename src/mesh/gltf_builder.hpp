@@ -48,11 +48,12 @@ private:
   int addCompressedMesh(const TriangleMesh& mesh, const std::string& name);
   // A buffer view of `count` elements of `stride` bytes, encoded in buffer 0
   // and decoded into the fallback buffer 1 (which the file does not hold).
-  int addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride, const char* mode, int target);
+  int addEncodedView(const std::vector<unsigned char>& encoded, size_t count, uint32_t stride, const char* mode,
+                     int target);
 
   tinygltf::Model model_;
   GltfCompression compression_;
-  size_t decodedBytes_ = 0;  // of the fallback buffer
+  size_t decodedBytes_ = 0;                                      // of the fallback buffer
   std::map<int, std::pair<glm::dvec3, double>> dequantization_;  // translation and scale, by mesh
 };
 

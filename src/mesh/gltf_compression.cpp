@@ -57,7 +57,8 @@ CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& 
       out.positionMin[k] = std::min(out.positionMin[k], value);
       out.positionMax[k] = std::max(out.positionMax[k], value);
       normals[4 * to + k] = int8_t(std::lround(std::clamp(unitNormals[3 * v + k], -1.0f, 1.0f) * 127.0f));
-      if (coloured) colours[4 * to + k] = uint8_t(std::lround(std::clamp(linearColours[3 * v + k], 0.0f, 1.0f) * 255.0f));
+      if (coloured)
+        colours[4 * to + k] = uint8_t(std::lround(std::clamp(linearColours[3 * v + k], 0.0f, 1.0f) * 255.0f));
     }
   }
   out.positions = encodeVertices(positions.data(), out.vertexCount, CompressedMesh::positionStride);
@@ -70,7 +71,8 @@ CompressedMesh compressMesh(const TriangleMesh& mesh, const std::vector<float>& 
   out.indices.resize(meshopt_encodeIndexBufferBound(indices.size(), out.vertexCount));
   out.indices.resize(meshopt_encodeIndexBuffer(out.indices.data(), out.indices.size(), indices.data(), indices.size()));
   if (out.positions.empty() || out.normals.empty() || out.indices.empty())
-    throw OutputError("meshoptimizer could not encode a mesh of " + std::to_string(mesh.triangleCount()) + " triangles");
+    throw OutputError("meshoptimizer could not encode a mesh of " + std::to_string(mesh.triangleCount()) +
+                      " triangles");
   return out;
 }
 

@@ -34,9 +34,9 @@ struct CompressedMesh {
   static constexpr uint32_t normalStride = 4;    // x, y, z int8 and padding
   static constexpr uint32_t colourStride = 4;    // linear RGBA uint8 (COLOR_0, normalized)
   size_t vertexCount = 0, indexCount = 0;
-  uint32_t indexSize = 4;  // 2 where the vertices fit 16-bit indices
+  uint32_t indexSize = 4;                                           // 2 where the vertices fit 16-bit indices
   std::vector<unsigned char> positions, normals, colours, indices;  // as the codecs encode them; colours may be empty
-  glm::u16vec3 positionMin{0}, positionMax{0};             // of the quantized positions (glTF requires them)
+  glm::u16vec3 positionMin{0}, positionMax{0};                      // of the quantized positions (glTF requires them)
   // A quantized position q stands for translation + scale * q.
   glm::dvec3 translation{0.0};
   double scale = 1.0;

@@ -43,7 +43,8 @@ private:
   static bool fileExists(const std::string& path, void* self);
   static std::string expandFilePath(const std::string& path, void* self);
   static bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* self);
-  static bool writeWholeFile(std::string* error, const std::string& path, const std::vector<unsigned char>&, void* self);
+  static bool writeWholeFile(std::string* error, const std::string& path, const std::vector<unsigned char>&,
+                             void* self);
 
   const MeshSource& source_;
   struct Allowed {

@@ -150,7 +150,8 @@ void checkImageViews(const GltfJsonScan& scan, const MeshSource& source)
     const auto view = number(images[i], "bufferView");
     if (!view) continue;
     const std::string name = "image " + std::to_string(i);
-    if (*view >= views.size()) source.refuse(name + " refers to buffer view " + std::to_string(*view) + ", which does not exist");
+    if (*view >= views.size())
+      source.refuse(name + " refers to buffer view " + std::to_string(*view) + ", which does not exist");
     const Element& v = views[*view];
     const auto buffer = number(v, "buffer"), length = number(v, "byteLength");
     const uint64_t offset = number(v, "byteOffset").value_or(0);

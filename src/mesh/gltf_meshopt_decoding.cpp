@@ -39,8 +39,10 @@ void decodeView(const MeshSource& source, const nlohmann::json& ext, std::string
   if (!ext.is_object()) source.refuse(what + " is not an object");
   if (unsignedField(source, ext, "buffer", what) != 0)
     source.refuse(what + " reads from a buffer other than the GLB's binary chunk, which lbmshape does not read");
-  const uint64_t from = unsignedField(source, ext, "byteOffset", what, 0), size = unsignedField(source, ext, "byteLength", what);
-  const uint64_t stride = unsignedField(source, ext, "byteStride", what), count = unsignedField(source, ext, "count", what);
+  const uint64_t from = unsignedField(source, ext, "byteOffset", what, 0),
+                 size = unsignedField(source, ext, "byteLength", what);
+  const uint64_t stride = unsignedField(source, ext, "byteStride", what),
+                 count = unsignedField(source, ext, "count", what);
   if (from > binary.size() || size > binary.size() - from) source.refuse(what + " reaches past the binary chunk");
   const auto modeField = ext.find("mode");
   if (modeField == ext.end() || !modeField->is_string()) source.refuse(what + " has no mode");
@@ -51,7 +53,8 @@ void decodeView(const MeshSource& source, const nlohmann::json& ext, std::string
   if (!attributes && !triangles && !indices) source.refuse(what + " has the unknown mode " + mode.substr(0, 40));
   if (attributes ? (stride == 0 || stride % 4 != 0 || stride > 256) : (stride != 2 && stride != 4))
     source.refuse(what + " has a byteStride of " + std::to_string(stride) + ", which its mode does not allow");
-  if (triangles && count % 3 != 0) source.refuse(what + " holds " + std::to_string(count) + " indices, not whole triangles");
+  if (triangles && count % 3 != 0)
+    source.refuse(what + " holds " + std::to_string(count) + " indices, not whole triangles");
   if (count > budget / stride) source.refuse(what + " would decode to more bytes than a file of this size can hold");
   budget -= count * stride;
 
@@ -80,7 +83,8 @@ void decodeView(const MeshSource& source, const nlohmann::json& ext, std::string
 
 }  // namespace
 
-std::optional<std::string> decodeMeshoptGlb(const MeshSource& source, std::string_view jsonText, std::string_view binary)
+std::optional<std::string> decodeMeshoptGlb(const MeshSource& source, std::string_view jsonText,
+                                            std::string_view binary)
 {
   if (jsonText.find(meshoptExtension) == std::string_view::npos) return std::nullopt;
   // The JSON is parsed whole here, before the reader's own checks: a tree

@@ -98,8 +98,7 @@ class SoupBuilder {
 public:
   SoupBuilder(const tinygltf::Model& model, const MeshSource& source, const GltfAccessors& accessors)
       : model_(model), source_(source), accessors_(accessors)
-  {
-  }
+  {}
 
   // Counts what the instances would add, and refuses it beyond the budget
   // before anything is read or reserved. Each mesh is counted once: a file
@@ -146,7 +145,8 @@ public:
   void add(const GltfInstance& instance)
   {
     const auto& primitives = model_.meshes[size_t(instance.mesh)].primitives;
-    for (size_t p = 0; p < primitives.size(); ++p) addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world);
+    for (size_t p = 0; p < primitives.size(); ++p)
+      addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world);
   }
 
   TriangleMesh take() { return std::move(mesh_); }
@@ -156,10 +156,14 @@ private:
   {
     return "mesh " + std::to_string(mesh) + " primitive " + std::to_string(primitive);
   }
-  static int modeOf(const tinygltf::Primitive& primitive) { return primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode; }
+  static int modeOf(const tinygltf::Primitive& primitive)
+  {
+    return primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+  }
   static bool isTriangles(int mode)
   {
-    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
   }
 
   // COLOR_0 is linear RGB; the mesh keeps colours as shown on a screen
@@ -172,8 +176,8 @@ private:
     if (colour != primitive.attributes.end()) {
       colours = accessors_.colours(colour->second, name + " COLOR_0");
       if (colours.size() != count)
-        source_.refuse(name + " has " + std::to_string(colours.size()) + " COLOR_0 values for " + std::to_string(count) +
-                       " positions");
+        source_.refuse(name + " has " + std::to_string(colours.size()) + " COLOR_0 values for " +
+                       std::to_string(count) + " positions");
       for (glm::vec3& c : colours) c = glm::vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b));
     }
     if (colours.empty() && mesh_.colours.empty()) return;

@@ -18,7 +18,8 @@ glm::dmat4 localTransform(const tinygltf::Node& node)
   if (node.rotation.size() == 4)  // glTF: (x, y, z, w); glm's constructor: (w, x, y, z)
     m = m * glm::mat4_cast(
                 glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])));
-  if (node.scale.size() == 3) m = m * glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  if (node.scale.size() == 3)
+    m = m * glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
   return m;
 }
 
@@ -34,7 +35,8 @@ std::vector<int> parentsOf(const tinygltf::Model& model, const MeshSource& sourc
       if (child < 0 || size_t(child) >= n)
         source.refuse(nodeName(i) + " has child " + std::to_string(child) + ", which does not exist");
       if (parent[size_t(child)] == int(i))
-        source.refuse(nodeName(i) + " lists " + nodeName(size_t(child)) + " as its child twice (glTF nodes form trees)");
+        source.refuse(nodeName(i) + " lists " + nodeName(size_t(child)) +
+                      " as its child twice (glTF nodes form trees)");
       if (parent[size_t(child)] != noParent)
         source.refuse(nodeName(size_t(child)) + " is a child of both " + nodeName(size_t(parent[size_t(child)])) +
                       " and " + nodeName(i) + " (glTF nodes form trees)");
@@ -71,7 +73,8 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
         model.defaultScene >= 0 && size_t(model.defaultScene) < model.scenes.size() ? size_t(model.defaultScene) : 0;
     for (int root : model.scenes[scene].nodes) {
       if (root < 0 || size_t(root) >= model.nodes.size())
-        source.refuse("scene " + std::to_string(scene) + " refers to node " + std::to_string(root) + ", which does not exist");
+        source.refuse("scene " + std::to_string(scene) + " refers to node " + std::to_string(root) +
+                      ", which does not exist");
       if (parent[size_t(root)] != noParent)
         source.refuse("scene " + std::to_string(scene) + " lists " + nodeName(size_t(root)) + ", which is a child of " +
                       nodeName(size_t(parent[size_t(root)])) + " (a scene lists root nodes)");
@@ -97,10 +100,12 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
     const glm::dmat4 world = parentWorld * localTransform(node);
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size())
-        source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) + ", which does not exist");
+        source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) +
+                      ", which does not exist");
       instances.push_back({node.mesh, world});
     }
-    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) pending.emplace_back(*child, world);
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+      pending.emplace_back(*child, world);
   }
   return instances;
 }

@@ -32,12 +32,12 @@ std::optional<MeshFormat> meshFormatOf(const std::filesystem::path& path)
 std::string formatName(MeshFormat format)
 {
   switch (format) {
-    case MeshFormat::Obj: return "OBJ";
-    case MeshFormat::Ply: return "PLY";
-    case MeshFormat::Off: return "OFF";
-    case MeshFormat::Stl: return "STL";
-    case MeshFormat::Gltf: return "glTF";
-    case MeshFormat::Glb: return "GLB";
+  case MeshFormat::Obj: return "OBJ";
+  case MeshFormat::Ply: return "PLY";
+  case MeshFormat::Off: return "OFF";
+  case MeshFormat::Stl: return "STL";
+  case MeshFormat::Gltf: return "glTF";
+  case MeshFormat::Glb: return "GLB";
   }
   return "unknown";
 }

@@ -16,12 +16,12 @@ TriangleMesh readMesh(const MeshSource& source, MeshFormat format)
   if (source.bytes.empty()) source.refuse("the file is empty");
   TriangleMesh mesh;
   switch (format) {
-    case MeshFormat::Obj: mesh = readObj(source); break;
-    case MeshFormat::Ply: mesh = readPly(source); break;
-    case MeshFormat::Off: mesh = readOff(source); break;
-    case MeshFormat::Stl: mesh = readStl(source); break;
-    case MeshFormat::Gltf:
-    case MeshFormat::Glb: mesh = readGltf(source, format); break;
+  case MeshFormat::Obj: mesh = readObj(source); break;
+  case MeshFormat::Ply: mesh = readPly(source); break;
+  case MeshFormat::Off: mesh = readOff(source); break;
+  case MeshFormat::Stl: mesh = readStl(source); break;
+  case MeshFormat::Gltf:
+  case MeshFormat::Glb: mesh = readGltf(source, format); break;
   }
   validateInputMesh(mesh, source.name);
   log::verbose("read " + source.name + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +

@@ -44,19 +44,20 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
                    ": write the result elsewhere, or give " + nameOf(Parameter::Force) + " to replace the input");
 }
 
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty, GltfCompression compression)
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty,
+               GltfCompression compression)
 {
   const auto format = outputFormat(path);
   requireCompressible(format, path, compression);
   requireWritable(mesh, path, "the mesh", empty);
   AtomicFile file(path);
   switch (format) {
-    case MeshFormat::Obj: writeObj(mesh, file); break;
-    case MeshFormat::Ply:
-    case MeshFormat::Off:
-    case MeshFormat::Stl: writeWithOpenMesh(mesh, format, file); break;
-    case MeshFormat::Gltf:
-    case MeshFormat::Glb: writeGltf(mesh, format, file, compression); break;
+  case MeshFormat::Obj: writeObj(mesh, file); break;
+  case MeshFormat::Ply:
+  case MeshFormat::Off:
+  case MeshFormat::Stl: writeWithOpenMesh(mesh, format, file); break;
+  case MeshFormat::Gltf:
+  case MeshFormat::Glb: writeGltf(mesh, format, file, compression); break;
   }
   file.commit();
   log::verbose("wrote " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +

@@ -97,8 +97,7 @@ public:
   // file's) from index `firstVertex` on.
   ChunkParser(size_t firstLine, size_t firstVertex, std::vector<glm::dvec3>& positions)
       : lineNumber_(firstLine), firstVertex_(firstVertex), positions_(positions)
-  {
-  }
+  {}
 
   void parse(std::string_view chunk, ChunkResult& result)
   {
@@ -110,9 +109,9 @@ public:
       const std::string_view line = nextStatement(chunk, scratch, lines);
       lineNumber_ += lines;
       switch (classify(line, arguments)) {
-        case Statement::Vertex: vertex(line, arguments, result); break;
-        case Statement::Face: face(line, arguments, corners, result); break;
-        case Statement::Other: break;
+      case Statement::Vertex: vertex(line, arguments, result); break;
+      case Statement::Face: face(line, arguments, corners, result); break;
+      case Statement::Other: break;
       }
     }
   }

@@ -101,7 +101,8 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
   for (uint64_t v = 0; v < counts.vertices; ++v) {
     std::string_view line = lines.next();
     if (line.empty())
-      source.refuse("the file ends after " + std::to_string(v) + " of " + std::to_string(counts.vertices) + " vertices");
+      source.refuse("the file ends after " + std::to_string(v) + " of " + std::to_string(counts.vertices) +
+                    " vertices");
     std::string_view words = line;
     glm::dvec3 p;
     for (int k = 0; k < 3; ++k) {
@@ -124,7 +125,8 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
     for (int64_t c = 0; c < *size; ++c) {
       const std::string_view token = text::nextToken(words);
       if (token.empty())
-        lines.fail(text::quoted(line) + " announces " + std::to_string(*size) + " corners but gives " + std::to_string(c));
+        lines.fail(text::quoted(line) + " announces " + std::to_string(*size) + " corners but gives " +
+                   std::to_string(c));
       const auto index = text::integer(token);
       if (!index || *index < 0 || uint64_t(*index) >= counts.vertices)
         lines.fail(text::quoted(line) + " refers to vertex " + text::quoted(token) + ", but there are only " +

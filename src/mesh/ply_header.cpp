@@ -12,11 +12,21 @@ namespace {
 
 // Both spellings PLY files use: the original names and the sized ones.
 constexpr std::array<std::pair<std::string_view, PlyType>, 16> typeNames{{
-    {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-    {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-    {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-    {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-    {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+    {"char", PlyType::Int8},
+    {"int8", PlyType::Int8},
+    {"uchar", PlyType::UInt8},
+    {"uint8", PlyType::UInt8},
+    {"short", PlyType::Int16},
+    {"int16", PlyType::Int16},
+    {"ushort", PlyType::UInt16},
+    {"uint16", PlyType::UInt16},
+    {"int", PlyType::Int32},
+    {"int32", PlyType::Int32},
+    {"uint", PlyType::UInt32},
+    {"uint32", PlyType::UInt32},
+    {"float", PlyType::Float32},
+    {"float32", PlyType::Float32},
+    {"double", PlyType::Float64},
     {"float64", PlyType::Float64},
 }};
 
@@ -32,14 +42,14 @@ std::optional<PlyType> typeNamed(std::string_view name)
 size_t byteSize(PlyType type)
 {
   switch (type) {
-    case PlyType::Int8:
-    case PlyType::UInt8: return 1;
-    case PlyType::Int16:
-    case PlyType::UInt16: return 2;
-    case PlyType::Int32:
-    case PlyType::UInt32:
-    case PlyType::Float32: return 4;
-    case PlyType::Float64: return 8;
+  case PlyType::Int8:
+  case PlyType::UInt8: return 1;
+  case PlyType::Int16:
+  case PlyType::UInt16: return 2;
+  case PlyType::Int32:
+  case PlyType::UInt32:
+  case PlyType::Float32: return 4;
+  case PlyType::Float64: return 8;
   }
   return 1;
 }
@@ -76,7 +86,8 @@ PlyHeader parsePlyHeader(const MeshSource& source)
     std::string_view words = line;
     const std::string_view keyword = text::nextToken(words);
     if (lineNumber == 1) {
-      if (keyword != "ply" || !text::nextToken(words).empty()) source.refuse("not a PLY file (it must begin with 'ply')");
+      if (keyword != "ply" || !text::nextToken(words).empty())
+        source.refuse("not a PLY file (it must begin with 'ply')");
       continue;
     }
     if (keyword == "comment" || keyword == "obj_info" || keyword.empty()) continue;
@@ -106,7 +117,8 @@ PlyHeader parsePlyHeader(const MeshSource& source)
       const auto count = text::integer(text::nextToken(words));
       if (element.name.empty() || !count || !text::nextToken(words).empty())
         fail(text::quoted(line) + " is not 'element NAME COUNT'");
-      if (*count < 0) fail("element " + text::quoted(element.name) + " has a negative count (" + std::to_string(*count) + ")");
+      if (*count < 0)
+        fail("element " + text::quoted(element.name) + " has a negative count (" + std::to_string(*count) + ")");
       if (!elementNames.insert(element.name).second) fail("a second element named " + text::quoted(element.name));
       if (header.elements.size() == maxElements) fail("more than " + std::to_string(maxElements) + " elements");
       element.count = uint64_t(*count);
@@ -120,7 +132,8 @@ PlyHeader parsePlyHeader(const MeshSource& source)
       if (type == "list") {
         property.isList = true;
         const auto countType = typeNamed(text::nextToken(words));
-        if (!countType || !isInteger(*countType)) fail(text::quoted(line) + ": a list's length must have an integer type");
+        if (!countType || !isInteger(*countType))
+          fail(text::quoted(line) + ": a list's length must have an integer type");
         property.countType = *countType;
         type = text::nextToken(words);
       }

@@ -28,7 +28,9 @@ struct BodyFault {
 // The values of a binary body, in either byte order.
 class BinaryValues {
 public:
-  BinaryValues(std::string_view body, bool bigEndian) : rest_(body), swap_(bigEndian != (std::endian::native == std::endian::big)) {}
+  BinaryValues(std::string_view body, bool bigEndian)
+      : rest_(body), swap_(bigEndian != (std::endian::native == std::endian::big))
+  {}
 
   double number(PlyType type) { return read(type); }
   int64_t integer(PlyType type) { return int64_t(read(type)); }  // only asked of integer types
@@ -61,14 +63,14 @@ private:
   {
     const char* p = take(byteSize(type));
     switch (type) {
-      case PlyType::Int8: return load<int8_t>(p);
-      case PlyType::UInt8: return load<uint8_t>(p);
-      case PlyType::Int16: return load<int16_t>(p);
-      case PlyType::UInt16: return load<uint16_t>(p);
-      case PlyType::Int32: return load<int32_t>(p);
-      case PlyType::UInt32: return load<uint32_t>(p);
-      case PlyType::Float32: return load<float>(p);
-      case PlyType::Float64: return load<double>(p);
+    case PlyType::Int8: return load<int8_t>(p);
+    case PlyType::UInt8: return load<uint8_t>(p);
+    case PlyType::Int16: return load<int16_t>(p);
+    case PlyType::UInt16: return load<uint16_t>(p);
+    case PlyType::Int32: return load<int32_t>(p);
+    case PlyType::UInt32: return load<uint32_t>(p);
+    case PlyType::Float32: return load<float>(p);
+    case PlyType::Float64: return load<double>(p);
     }
     return 0;
   }
@@ -141,11 +143,13 @@ Layout layoutOf(const PlyHeader& header, const MeshSource& source)
   for (size_t p = 0; p < vertexProperties.size(); ++p)
     for (int k = 0; k < 3; ++k)
       if (vertexProperties[p].name == std::string(1, char('x' + k))) {
-        if (vertexProperties[p].isList) source.refuse("vertex property " + text::quoted(vertexProperties[p].name) + " is a list");
+        if (vertexProperties[p].isList)
+          source.refuse("vertex property " + text::quoted(vertexProperties[p].name) + " is a list");
         layout.coordinate[k] = int(p);
       }
   for (int k = 0; k < 3; ++k)
-    if (layout.coordinate[k] < 0) source.refuse("the vertex element has no '" + std::string(1, char('x' + k)) + "' property");
+    if (layout.coordinate[k] < 0)
+      source.refuse("the vertex element has no '" + std::string(1, char('x' + k)) + "' property");
   // Vertex colours, as scanners and MeshLab write them; ignored unless all
   // three are plain values.
   static const char* const colourNames[3] = {"red", "green", "blue"};
@@ -155,7 +159,8 @@ Layout layoutOf(const PlyHeader& header, const MeshSource& source)
   if (layout.face) {
     const auto& faceProperties = layout.face->properties;
     for (size_t p = 0; p < faceProperties.size(); ++p)
-      if (faceProperties[p].name == "vertex_indices" || faceProperties[p].name == "vertex_index") layout.indices = int(p);
+      if (faceProperties[p].name == "vertex_indices" || faceProperties[p].name == "vertex_index")
+        layout.indices = int(p);
     if (layout.indices < 0) source.refuse("the face element has no 'vertex_indices' list");
     const PlyProperty& indices = faceProperties[size_t(layout.indices)];
     if (!indices.isList || !isInteger(indices.type))
@@ -169,8 +174,7 @@ class BodyReader {
 public:
   BodyReader(const PlyHeader& header, const Layout& layout, Values& values)
       : header_(header), layout_(layout), values_(values)
-  {
-  }
+  {}
 
   void read(const MeshSource& source, TriangleMesh& mesh)
   {
@@ -323,7 +327,8 @@ TriangleMesh readPly(const MeshSource& source)
   const PlyHeader header = parsePlyHeader(source);
   const Layout layout = layoutOf(header, source);
   if (layout.vertex->count > uint64_t(UINT32_MAX))
-    source.refuse("it has " + std::to_string(layout.vertex->count) + " vertices, more than the 2^32 - 1 lbmshape can index");
+    source.refuse("it has " + std::to_string(layout.vertex->count) +
+                  " vertices, more than the 2^32 - 1 lbmshape can index");
   const std::string_view body = source.bytes.substr(header.bodyOffset);
 
   requireCountsFit(source, header, body.size());
@@ -331,11 +336,13 @@ TriangleMesh readPly(const MeshSource& source)
   TriangleMesh mesh;
   size_t shortFaces = 0;
   switch (header.encoding) {
-    case PlyEncoding::Ascii: shortFaces = readBody(source, header, layout, AsciiValues(body), mesh); break;
-    case PlyEncoding::BinaryLittleEndian:
-      shortFaces = readBody(source, header, layout, BinaryValues(body, false), mesh);
-      break;
-    case PlyEncoding::BinaryBigEndian: shortFaces = readBody(source, header, layout, BinaryValues(body, true), mesh); break;
+  case PlyEncoding::Ascii: shortFaces = readBody(source, header, layout, AsciiValues(body), mesh); break;
+  case PlyEncoding::BinaryLittleEndian:
+    shortFaces = readBody(source, header, layout, BinaryValues(body, false), mesh);
+    break;
+  case PlyEncoding::BinaryBigEndian:
+    shortFaces = readBody(source, header, layout, BinaryValues(body, true), mesh);
+    break;
   }
   if (shortFaces)
     log::warning(source.name + ": skipped " + std::to_string(shortFaces) + " faces with fewer than 3 corners");

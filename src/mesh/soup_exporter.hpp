@@ -19,8 +19,7 @@ public:
   // (Options::VertexNormal); empty for none.
   explicit SoupExporter(const TriangleMesh& mesh, std::vector<glm::vec3> normals = {})
       : mesh_(mesh), normals_(std::move(normals))
-  {
-  }
+  {}
 
   OpenMesh::Vec3f point(OpenMesh::VertexHandle v) const override { return OpenMesh::Vec3f(pointd(v)); }
   OpenMesh::Vec3d pointd(OpenMesh::VertexHandle v) const override;

@@ -45,9 +45,9 @@ std::vector<glm::dvec3> readBinaryCorners(const MeshSource& source, uint64_t tri
 
 bool keywordIs(std::string_view word, std::string_view keyword)
 {
-  return word.size() == keyword.size() &&
-         std::equal(word.begin(), word.end(), keyword.begin(),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+  return word.size() == keyword.size() && std::equal(word.begin(), word.end(), keyword.begin(), [](char a, char b) {
+           return std::tolower(static_cast<unsigned char>(a)) == b;
+         });
 }
 
 // solid NAME / facet normal N N N / outer loop / vertex X Y Z (three times) /
@@ -130,13 +130,13 @@ private:
 TriangleMesh readStl(const MeshSource& source)
 {
   auto welded = [&](const std::vector<glm::dvec3>& corners) {
-    if (corners.size() >= size_t(UINT32_MAX))
-      source.refuse("more triangle corners than lbmshape can index (2^32 - 1)");
+    if (corners.size() >= size_t(UINT32_MAX)) source.refuse("more triangle corners than lbmshape can index (2^32 - 1)");
     return weldEqualPositions(corners);
   };
   uint64_t triangles = 0;
   if (looksBinary(source.bytes, triangles)) return welded(readBinaryCorners(source, triangles));
-  std::string_view start = text::withoutByteOrderMark(source.bytes.substr(0, std::min<size_t>(source.bytes.size(), 512)));
+  std::string_view start =
+      text::withoutByteOrderMark(source.bytes.substr(0, std::min<size_t>(source.bytes.size(), 512)));
   if (keywordIs(text::nextToken(start), "solid")) return welded(AsciiStl(source).corners());
   if (source.bytes.size() >= headerBytes + countBytes)
     source.refuse("binary STL whose header counts " + std::to_string(triangles) + " triangles (" +

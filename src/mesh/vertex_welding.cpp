@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <random>
 
-
 namespace lbmshape {
 namespace {
 

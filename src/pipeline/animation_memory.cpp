@@ -32,7 +32,8 @@ void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, 
   throw DeviceError("the " + std::to_string(frames) + " frames of morph.glb need about " + mebibytes(uint64_t(needed)) +
                     " but this machine allows " + mebibytes(uint64_t(allowed)) + "; " +
                     (fit >= 2 ? "about " + std::to_string(fit) + " frames would fit" : "not even 2 frames would fit") +
-                    ", or give " + nameOf(Parameter::Animation) + " (the frame files alone need no more memory than one frame)");
+                    ", or give " + nameOf(Parameter::Animation) +
+                    " (the frame files alone need no more memory than one frame)");
 }
 
 }  // namespace lbmshape

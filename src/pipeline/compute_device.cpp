@@ -12,7 +12,8 @@
 
 namespace lbmshape {
 
-ComputeDevice::ComputeDevice(const std::string& request, bool validation) : request_(request), validation_(validation) {}
+ComputeDevice::ComputeDevice(const std::string& request, bool validation) : request_(request), validation_(validation)
+{}
 
 ComputeDevice::~ComputeDevice() = default;
 ComputeDevice::ComputeDevice(ComputeDevice&&) noexcept = default;
@@ -71,8 +72,8 @@ void ComputeDevice::checkFits(const Extent3& extent) const
     checkFitsDevice(layout, description());
     return;
   }
-  checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()), "the reference solver's " + extent.toString() + " grid",
-                  extent, 3.0);
+  checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()),
+                  "the reference solver's " + extent.toString() + " grid", extent, 3.0);
 }
 
 std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) const
@@ -94,16 +95,17 @@ void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, boo
     BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
     return;
   }
-  checkHostMemory((bandReferenceBytesPerCell + (perCellOmega ? 4 : 0) + (source ? 4 : 0)) * double(bricks.storedCells()),
-                  "the reference solver's narrow band of " + std::to_string(bricks.storedCells()) + " cells",
-                  bricks.cells(), 2.0);
+  checkHostMemory(
+      (bandReferenceBytesPerCell + (perCellOmega ? 4 : 0) + (source ? 4 : 0)) * double(bricks.storedCells()),
+      "the reference solver's narrow band of " + std::to_string(bricks.storedCells()) + " cells", bricks.cells(), 2.0);
 }
 
 void ComputeDevice::requireCleanValidation() const
 {
   const int messages = instance_ ? instance_->validationMessages() : 0;
   if (messages > 0)
-    throw DeviceError("the Vulkan validation layer reported " + std::to_string(messages) + " problem(s), printed above");
+    throw DeviceError("the Vulkan validation layer reported " + std::to_string(messages) +
+                      " problem(s), printed above");
 }
 
 void ComputeDevice::close()

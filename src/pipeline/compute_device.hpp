@@ -19,7 +19,7 @@ namespace gpu {
 class GpuContext;
 class VulkanInstance;
 struct DeviceDescription;
-}
+}  // namespace gpu
 
 class ComputeDevice {
 public:

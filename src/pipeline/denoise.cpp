@@ -156,8 +156,10 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   case Smoothing::Anisotropic:
     // The paper's rule (Eq. 20) runs inside the solver, on the device:
     // nothing leaves it between steps.
-    if (o.smoothing == Smoothing::Anisotropic) solver.setPaperRule(o.gamma);
-    else solver.setUniformGamma(o.gamma);
+    if (o.smoothing == Smoothing::Anisotropic)
+      solver.setPaperRule(o.gamma);
+    else
+      solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
     return runSteps(solver, std::move(field), o, progress);
   case Smoothing::PreserveFeatures: {
@@ -212,7 +214,8 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
                          const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
 {
   device.checkFits(frame.extent);
-  Volume field = clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
+  Volume field =
+      clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;  // the mesh's, before any --noise
   addFieldNoise(field, o.noise);
@@ -236,17 +239,17 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   BandField field = clock.time("sdf", [&](Progress& progress) {
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
     return signedDistanceBand(mesh, frame,
-                              {.halfWidth = halfWidth,
-                               .progress = &progress,
-                               .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); }});
+                              {.halfWidth = halfWidth, .progress = &progress, .checkBricks = [&](const BrickSet& b) {
+                                 device.checkBandFits(b, perCellOmega, false);
+                               }});
   });
   requireEnclosedVolume(field, input);
   const std::shared_ptr<const BrickSet> shared = field.sharedBricks();
   const BrickSet& bricks = *shared;
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;
   auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared); });
-  SmoothedField<BandField> smoothed = clock.time(
-      "lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
+  SmoothedField<BandField> smoothed =
+      clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
   solver.reset();  // its memory goes before marching cubes takes its own
   const double shift = o.keepVolume ? keepVolume(smoothed.field, enclosed) : 0.0;
   return {clock.time("extract", [&] { return extractSurface(smoothed.field, frame); }),
@@ -265,10 +268,12 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
 
 void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
 {
-  if (grid.voxel && !(*grid.voxel > 0.0 && std::isfinite(*grid.voxel))) throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
+  if (grid.voxel && !(*grid.voxel > 0.0 && std::isfinite(*grid.voxel)))
+    throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
   if (!grid.voxel && grid.resolution < 8) throw UsageError(nameOf(Parameter::Resolution) + " must be at least 8");
   if (!(grid.marginVoxels >= 1.0)) throw UsageError(nameOf(Parameter::Margin) + " must be at least 1 voxel");
-  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude)) throw UsageError(nameOf(Parameter::Noise) + " must be zero or positive");
+  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude))
+    throw UsageError(nameOf(Parameter::Noise) + " must be zero or positive");
 }
 
 void checkDenoiseOptions(const DenoiseOptions& o)
@@ -283,7 +288,8 @@ void requireColourFormat(const std::filesystem::path& output, const std::string&
 {
   const auto format = meshFormatOf(output);
   if (format != MeshFormat::Glb && format != MeshFormat::Gltf && format != MeshFormat::Obj)
-    throw UsageError(nameOf(Parameter::ColourByCurvature) + " writes vertex colours into .glb, .gltf or .obj files, not " + what);
+    throw UsageError(nameOf(Parameter::ColourByCurvature) +
+                     " writes vertex colours into .glb, .gltf or .obj files, not " + what);
 }
 
 double colourByCurvature(TriangleMesh& mesh)
@@ -321,17 +327,18 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
   TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
-                         " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) + " or a finer " +
-                         nameOf(Parameter::Resolution));
+                         " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) +
+                         " or a finer " + nameOf(Parameter::Resolution));
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
   if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps);
   const double lbmMs = clock.ms("lbm");
   const double updates = double(smoothed.cells) * smoothed.stepsRun;
   nlohmann::json report = {
-      {"grid", {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}},
-                {"voxel", frame.voxel},
-                {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
+      {"grid",
+       {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}},
+        {"voxel", frame.voxel},
+        {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
       {"device", device.name()},
       {"gamma", o.gamma},
       {"steps", smoothed.steps},

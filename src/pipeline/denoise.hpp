@@ -18,9 +18,9 @@ namespace lbmshape {
 
 // How the grid is placed around the mesh.
 struct GridOptions {
-  int resolution = 128;          // cells along the longest side, margins included
-  std::optional<double> voxel;   // or: the voxel size, in the mesh's units
-  double marginVoxels = 4.0;     // empty cells around the mesh's bounding box
+  int resolution = 128;         // cells along the longest side, margins included
+  std::optional<double> voxel;  // or: the voxel size, in the mesh's units
+  double marginVoxels = 4.0;    // empty cells around the mesh's bounding box
 };
 
 enum class Smoothing {
@@ -34,13 +34,13 @@ struct DenoiseOptions {
   // Lattice steps; none given: as many as the noise needs, from 2 to 7
   // (--steps auto, pipeline/smoothing_stop.hpp). The paper's Figs. 4-6: 7.
   std::optional<int> steps;
-  double gamma = 0.2;   // voxels^2 per step
+  double gamma = 0.2;  // voxels^2 per step
   Smoothing smoothing = Smoothing::Isotropic;
   // The smoothed field shifted by a constant so that it encloses the
   // volume the input did (surface/volume_keeping.hpp); off: the paper's
   // scheme, which shrinks the surface as mean-curvature flow does.
   bool keepVolume = true;
-  FieldNoise noise;     // the paper's noise on the distance field, off by default
+  FieldNoise noise;  // the paper's noise on the distance field, off by default
   // The lattice on the narrow band around the surface (band/), or on every
   // cell of the grid (the paper's, and the reference the band is tested
   // against). The paper's field noise is defined over the whole grid, so

@@ -19,15 +19,13 @@ FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, st
                          Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
     : FrameWriter(grid, std::move(folder), std::move(extension), FrameSink(), frameCount, keep, std::move(inspect),
                   compression, std::move(decorate))
-{
-}
+{}
 
 FrameWriter::FrameWriter(const GridFrame& grid, FrameSink sink, int frameCount, Keep keep, Inspect inspect,
                          Decorate decorate)
     : FrameWriter(grid, {}, {}, std::move(sink), frameCount, keep, std::move(inspect), GltfCompression::None,
                   std::move(decorate))
-{
-}
+{}
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink,
                          int frameCount, Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
@@ -144,9 +142,9 @@ void FrameWriter::run()
       if (empty && job.first == frameCount_ - 1)
         throw NumericalError("frame " + std::to_string(job.first) +
                              ", the last, has no surface: the morph ended with no inside at all, on its way from "
-                             "the source to a target it does not overlap; give it more " + nameOf(Parameter::Steps) +
-                             " or a larger " + nameOf(Parameter::Cs) + ", or place the shapes to overlap with " +
-                             nameOf(Parameter::Align));
+                             "the source to a target it does not overlap; give it more " +
+                             nameOf(Parameter::Steps) + " or a larger " + nameOf(Parameter::Cs) +
+                             ", or place the shapes to overlap with " + nameOf(Parameter::Align));
       const double extractMs = extract.ms();
       Stopwatch write;
       if (sink_)

@@ -85,8 +85,8 @@ public:
 
 private:
   // Both public constructors: files when `sink` is empty.
-  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink, int frameCount,
-              Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate);
+  FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink,
+              int frameCount, Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate);
   void run();
   void rethrowError();
 

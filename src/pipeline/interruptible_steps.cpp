@@ -10,8 +10,7 @@ namespace lbmshape {
 
 InterruptibleSteps::InterruptibleSteps(SteppingSolver& solver, std::optional<int> fixedBatch, double batchMs)
     : solver_(solver), fixedBatch_(fixedBatch), batchMs_(batchMs)
-{
-}
+{}
 
 int InterruptibleSteps::nextBatch(int remaining) const
 {

@@ -75,12 +75,12 @@ Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min),
 // The contact sheet of --preview: the source, six frames evenly chosen
 // between the first and the last (both included), and the target as placed.
 void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, const std::vector<TriangleMesh>& frames,
-                       const fs::path& sourcePath, const fs::path& targetPath, const fs::path& png, const ComputeDevice& device)
+                       const fs::path& sourcePath, const fs::path& targetPath, const fs::path& png,
+                       const ComputeDevice& device)
 {
   constexpr int shownFrames = 6;
   std::vector<ShownMesh> shown{{&source, "source: " + sourcePath.filename().string()}};
-  for (size_t k : evenlySpaced(frames.size(), shownFrames))
-    shown.push_back({&frames[k], "frame " + std::to_string(k)});
+  for (size_t k : evenlySpaced(frames.size(), shownFrames)) shown.push_back({&frames[k], "frame " + std::to_string(k)});
   shown.push_back({&target, "target: " + targetPath.filename().string()});
   // From above at an angle: a morph often changes a shape in depth too.
   writePreview(shown, render::parseView("iso"), png, device);
@@ -105,12 +105,14 @@ std::optional<FolderLock> checkFolder(const fs::path& folder, bool force)
   if (fs::is_directory(folder, ec)) {
     std::optional<FolderLock> lock(std::in_place, folder);
     if (!fs::is_empty(folder, ec) && !force)
-      throw OutputError(folder.string() + " is not empty; use " + nameOf(Parameter::Force) + " to write the frames into it anyway");
+      throw OutputError(folder.string() + " is not empty; use " + nameOf(Parameter::Force) +
+                        " to write the frames into it anyway");
     AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
     return lock;
   }
   fs::path existing = fs::absolute(folder, ec).parent_path();
-  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path()) existing = existing.parent_path();
+  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+    existing = existing.parent_path();
   if (!fs::is_directory(existing, ec))
     throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not a folder");
   if (::access(existing.c_str(), W_OK | X_OK) != 0)
@@ -207,28 +209,37 @@ void checkMorphOptions(const MorphOptions& o)
 {
   relaxation::checkGamma(o.gamma);
   if (!(o.cs > 0.0 && o.cs <= parameter_bounds::maxCs))
-    throw UsageError(nameOf(Parameter::Cs) + " must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
+    throw UsageError(nameOf(Parameter::Cs) +
+                     " must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
                      "each step closes two thirds of the distance to the target)");
   if (o.frames < 2 || o.frames > parameter_bounds::maxFrames)
-    throw UsageError(nameOf(Parameter::Frames) + " must be from 2 (the source and the result) to " + std::to_string(parameter_bounds::maxFrames));
-  if (o.stepsPerFrame && o.steps) throw UsageError("give " + nameOf(Parameter::StepsPerFrame) + " or " + nameOf(Parameter::Steps) + ", not both");
+    throw UsageError(nameOf(Parameter::Frames) + " must be from 2 (the source and the result) to " +
+                     std::to_string(parameter_bounds::maxFrames));
+  if (o.stepsPerFrame && o.steps)
+    throw UsageError("give " + nameOf(Parameter::StepsPerFrame) + " or " + nameOf(Parameter::Steps) + ", not both");
   // A morph of no steps would only repeat the source; denoise --steps 0 is
   // the way to see a mesh on the grid unchanged.
-  const std::string noSteps = " (with 0 steps every frame would be the source; " +
-                              std::string(parameterNaming() == ParameterNaming::CommandLine ? "lbmshape denoise --steps 0"
-                                                                                           : "a denoise of 0 steps") +
-                              " shows a mesh on the grid)";
-  if (o.stepsPerFrame && *o.stepsPerFrame < 1) throw UsageError(nameOf(Parameter::StepsPerFrame) + " must be at least 1" + noSteps);
+  const std::string noSteps =
+      " (with 0 steps every frame would be the source; " +
+      std::string(parameterNaming() == ParameterNaming::CommandLine ? "lbmshape denoise --steps 0"
+                                                                    : "a denoise of 0 steps") +
+      " shows a mesh on the grid)";
+  if (o.stepsPerFrame && *o.stepsPerFrame < 1)
+    throw UsageError(nameOf(Parameter::StepsPerFrame) + " must be at least 1" + noSteps);
   if (o.steps && *o.steps < 1) throw UsageError(nameOf(Parameter::Steps) + " must be at least 1" + noSteps);
   const long total = givenStepCount(o);
   if (total > parameter_bounds::maxSteps)
-    throw UsageError("the morph would run " + std::to_string(total) + " steps (" + nameOf(Parameter::Steps) + ", or " + nameOf(Parameter::StepsPerFrame) +
-                     " times " + nameOf(Parameter::Frames) + " - 1); at most " + std::to_string(parameter_bounds::maxSteps));
+    throw UsageError("the morph would run " + std::to_string(total) + " steps (" + nameOf(Parameter::Steps) + ", or " +
+                     nameOf(Parameter::StepsPerFrame) + " times " + nameOf(Parameter::Frames) + " - 1); at most " +
+                     std::to_string(parameter_bounds::maxSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError(nameOf(Parameter::Fps) + " must be positive");
   if (!(o.tolerance > 0.0)) throw UsageError(nameOf(Parameter::Tolerance) + " must be positive");
-  if (!meshFormatOf("x." + o.format)) throw UsageError(nameOf(Parameter::Format) + " " + o.format + " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
+  if (!meshFormatOf("x." + o.format))
+    throw UsageError(nameOf(Parameter::Format) + " " + o.format +
+                     " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
   if (o.compression != GltfCompression::None && meshFormatOf("x." + o.format) != MeshFormat::Glb)
-    throw UsageError(nameOf(Parameter::Compression) + " writes .glb frames, not " + nameOf(Parameter::Format) + " " + o.format);
+    throw UsageError(nameOf(Parameter::Compression) + " writes .glb frames, not " + nameOf(Parameter::Format) + " " +
+                     o.format);
   if (o.colourByCurvature) requireColourFormat("x." + o.format, nameOf(Parameter::Format) + " " + o.format);
   checkGridAndNoise(o.grid, o.noise);
 }
@@ -246,8 +257,9 @@ struct FrameDestination {
 
 // The morph itself, from the meshes read (or given) to the report; `sourcePath`
 // and `targetPath` name them in errors and in the report.
-nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path& sourcePath, const fs::path& targetPath,
-                        const MorphOptions& o, const ComputeDevice& device, StageClock& clock, const FrameDestination& to)
+nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path& sourcePath,
+                        const fs::path& targetPath, const MorphOptions& o, const ComputeDevice& device,
+                        StageClock& clock, const FrameDestination& to)
 {
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
@@ -257,8 +269,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
 
   // Before the fields are known, the longest the morph could run: no two
   // distances on the grid differ by more than its diagonal.
-  const double gridDiagonal = std::sqrt(double(frame.extent.nx) * frame.extent.nx +
-                                        double(frame.extent.ny) * frame.extent.ny + double(frame.extent.nz) * frame.extent.nz);
+  const double gridDiagonal =
+      std::sqrt(double(frame.extent.nx) * frame.extent.nx + double(frame.extent.ny) * frame.extent.ny +
+                double(frame.extent.nz) * frame.extent.nz);
   const MorphSchedule longest = stepsGiven(o) ? MorphSchedule::fixed(o) : MorphSchedule::arriving(o, gridDiagonal);
   const std::unique_ptr<MorphLattice> lattice = makeMorphLattice(source, target, frame, o, longest, device, clock, [&] {
     // The animation, and the preview's frames, hold every frame in memory.
@@ -289,17 +302,18 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   lattice->start(device, o, clock);
   SteppingSolver& solver = lattice->solver();
 
-  const FrameWriter::Keep keep = o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
+  const FrameWriter::Keep keep =
+      o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
   const FrameWriter::Inspect inspect =
       o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
         frameReport.surface(k, field, mesh);
       })
                      : FrameWriter::Inspect();
-  const FrameWriter::Decorate decorate =
-      o.colourByCurvature ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
-        mesh.colours = render::curvatureColours(mesh, scale);
-      })
-                          : FrameWriter::Decorate();
+  const FrameWriter::Decorate decorate = o.colourByCurvature
+                                             ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
+                                                 mesh.colours = render::curvatureColours(mesh, scale);
+                                               })
+                                             : FrameWriter::Decorate();
   std::optional<FrameWriter> frames;
   if (to.folder)
     frames.emplace(frame, *to.folder, "." + o.format, o.frames, keep, inspect, o.compression, decorate);
@@ -349,8 +363,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         convergedAt = solver.stepsTaken();
         if (k + 1 < o.frames)
           log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
-                    std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) +
-                    " to " + std::to_string(o.frames - 1) + " repeat it");
+                    std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) + " to " +
+                    std::to_string(o.frames - 1) + " repeat it");
       }
     }
     const int step = solver.stepsTaken();
@@ -367,7 +381,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const std::vector<int> emptyFrames = writer.emptyFrames();
   if (!emptyFrames.empty())
     log::warning((emptyFrames.size() == 1 ? "frame " : "frames ") + frameRanges(emptyFrames) +
-                 (emptyFrames.size() == 1 ? " has" : " have") + " no surface: the shape vanished on its way (source and target barely overlap) and came back; "
+                 (emptyFrames.size() == 1 ? " has" : " have") +
+                 " no surface: the shape vanished on its way (source and target barely overlap) and came back; "
                  "their files hold no triangles");
   clock.record("lbm", lbmMs);
   clock.record("download", downloadMs);
@@ -384,13 +399,17 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, *to.folder / "morph.glb", o.compression); });
   device.requireCleanValidation();
   if (to.folder && o.preview)
-    clock.time("preview", [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
+    clock.time("preview",
+               [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
 
   if (newFolder) newFolder->keep();
   const bool converged = lastError < o.tolerance;
   if (!converged && !stepsGiven(o))
-    log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (" + nameOf(Parameter::Tolerance) + " " +
-                 std::to_string(o.tolerance) + "); where the target's distance field has kinks (sharp concave edges, thin gaps) the lattice settles a little off it; a larger " + nameOf(Parameter::Tolerance) + " accepts that");
+    log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (" +
+                 nameOf(Parameter::Tolerance) + " " + std::to_string(o.tolerance) +
+                 "); where the target's distance field has kinks (sharp concave edges, thin gaps) the lattice settles "
+                 "a little off it; a larger " +
+                 nameOf(Parameter::Tolerance) + " accepts that");
 
   const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
   // Against what the grid can hold of the target, every vertex included: how
@@ -399,50 +418,59 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const MeshTopology last = analyzeTopology(meshes.back());
   const int steps = solver.stepsTaken();
   const double updates = double(lattice->cells()) * steps;
-  return {{"command", "morph"},
-          {"source", sourcePath.string()},
-          {"target", targetPath.string()},
-          {"folder", to.folder ? nlohmann::json(to.folder->string()) : nlohmann::json(nullptr)},
-          {"frames", o.frames},
-          {"frame_steps", frameSteps},
-          {"steps", steps},
-          {"schedule", {{"kind", stepsGiven(o) ? "given steps, constant gamma" : "arrive"},
-                        {"steps", schedule.totalSteps()},
-                        {"closing_from_step", schedule.annealed() ? nlohmann::json(schedule.annealFrom()) : nlohmann::json(nullptr)},
-                        {"final_gamma", schedule.gammaAt(schedule.totalSteps() - 1)},
-                        {"final_cs", schedule.csAt(schedule.totalSteps() - 1)},
-                        {"initial_error_voxels", initialError}}},
-          {"converged", converged},
-          {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
-          {"max_band_error_voxels", lastError},
-          {"per_frame", frameReport.toJson()},
-          {"empty_frames", emptyFrames},
-          {"gamma", o.gamma},
-          {"cs", o.cs},
-          {"noise", o.noise.amplitude},
-          {"lattice", lattice->describe()},
-          {"align", {{"mode", alignmentName(o.align)}, {"scale", placement.scale},
-                     {"translation", {(placement.toCentre - placement.scale * placement.fromCentre).x,
-                                      (placement.toCentre - placement.scale * placement.fromCentre).y,
-                                      (placement.toCentre - placement.scale * placement.fromCentre).z}}}},
-          {"grid", {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}}, {"voxel", frame.voxel},
-                    {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
-          {"device", device.name()},
-          {"ms", clock.toJson()},
-          {"device_ms", clock.deviceToJson()},
-          {"lattice_waited_for_writer_ms", waitedMs},
-          {"mlups", lbmMs > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
-          {"final", {{"mean_distance_to_target", final.mean},
-                     {"mean_distance_to_target_voxels", final.mean / frame.voxel},
-                     {"hausdorff_to_target_voxels", final.hausdorff / frame.voxel},
-                     {"mean_distance_to_target_level_voxels", arrival.mean / frame.voxel},
-                     {"hausdorff_to_target_level_voxels", arrival.hausdorff / frame.voxel},
-                     {"closed_manifold", last.closedManifold},
-                     {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
-                     {"triangles", meshes.back().triangleCount()}}},
-          {"animation", to.folder && o.animation ? nlohmann::json((*to.folder / "morph.glb").string()) : nlohmann::json(nullptr)},
-          {"curvature_scale", o.colourByCurvature ? nlohmann::json(colourScale) : nlohmann::json(nullptr)},
-          {"preview", to.folder && o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
+  return {
+      {"command", "morph"},
+      {"source", sourcePath.string()},
+      {"target", targetPath.string()},
+      {"folder", to.folder ? nlohmann::json(to.folder->string()) : nlohmann::json(nullptr)},
+      {"frames", o.frames},
+      {"frame_steps", frameSteps},
+      {"steps", steps},
+      {"schedule",
+       {{"kind", stepsGiven(o) ? "given steps, constant gamma" : "arrive"},
+        {"steps", schedule.totalSteps()},
+        {"closing_from_step", schedule.annealed() ? nlohmann::json(schedule.annealFrom()) : nlohmann::json(nullptr)},
+        {"final_gamma", schedule.gammaAt(schedule.totalSteps() - 1)},
+        {"final_cs", schedule.csAt(schedule.totalSteps() - 1)},
+        {"initial_error_voxels", initialError}}},
+      {"converged", converged},
+      {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},
+      {"max_band_error_voxels", lastError},
+      {"per_frame", frameReport.toJson()},
+      {"empty_frames", emptyFrames},
+      {"gamma", o.gamma},
+      {"cs", o.cs},
+      {"noise", o.noise.amplitude},
+      {"lattice", lattice->describe()},
+      {"align",
+       {{"mode", alignmentName(o.align)},
+        {"scale", placement.scale},
+        {"translation",
+         {(placement.toCentre - placement.scale * placement.fromCentre).x,
+          (placement.toCentre - placement.scale * placement.fromCentre).y,
+          (placement.toCentre - placement.scale * placement.fromCentre).z}}}},
+      {"grid",
+       {{"size", {frame.extent.nx, frame.extent.ny, frame.extent.nz}},
+        {"voxel", frame.voxel},
+        {"origin", {frame.origin.x, frame.origin.y, frame.origin.z}}}},
+      {"device", device.name()},
+      {"ms", clock.toJson()},
+      {"device_ms", clock.deviceToJson()},
+      {"lattice_waited_for_writer_ms", waitedMs},
+      {"mlups", lbmMs > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
+      {"final",
+       {{"mean_distance_to_target", final.mean},
+        {"mean_distance_to_target_voxels", final.mean / frame.voxel},
+        {"hausdorff_to_target_voxels", final.hausdorff / frame.voxel},
+        {"mean_distance_to_target_level_voxels", arrival.mean / frame.voxel},
+        {"hausdorff_to_target_level_voxels", arrival.hausdorff / frame.voxel},
+        {"closed_manifold", last.closedManifold},
+        {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
+        {"triangles", meshes.back().triangleCount()}}},
+      {"animation",
+       to.folder && o.animation ? nlohmann::json((*to.folder / "morph.glb").string()) : nlohmann::json(nullptr)},
+      {"curvature_scale", o.colourByCurvature ? nlohmann::json(colourScale) : nlohmann::json(nullptr)},
+      {"preview", to.folder && o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace

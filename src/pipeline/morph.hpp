@@ -22,20 +22,20 @@ enum class Alignment {
 };
 
 struct MorphOptions {
-  GridOptions grid;                // around both meshes (after alignment)
+  GridOptions grid;  // around both meshes (after alignment)
   Alignment align = Alignment::Fit;
-  double cs = 0.1;                 // Cs of Eq. 22 (the paper's Fig. 8)
-  double gamma = 0.05;             // voxels^2 per step (Fig. 8)
+  double cs = 0.1;      // Cs of Eq. 22 (the paper's Fig. 8)
+  double gamma = 0.05;  // voxels^2 per step (Fig. 8)
   int frames = 48;
   // Neither given: the morph runs until it arrives at the target, gamma
   // lowered over its second half (pipeline/morph_schedule.hpp). Either
   // given: the paper's scheme, constant gamma for that many steps.
   std::optional<int> stepsPerFrame;
-  std::optional<int> steps;          // or the total, spread over the frames
-  std::string format = "glb";      // of the frame files: glb, gltf, obj, ply, off, stl
-  double fps = 24.0;               // of the animation in morph.glb
-  bool animation = true;           // write morph.glb
-  bool force = false;              // write into a non-empty folder
+  std::optional<int> steps;    // or the total, spread over the frames
+  std::string format = "glb";  // of the frame files: glb, gltf, obj, ply, off, stl
+  double fps = 24.0;           // of the animation in morph.glb
+  bool animation = true;       // write morph.glb
+  bool force = false;          // write into a non-empty folder
   // Frames coloured by mean curvature (--color curvature), on one scale: the
   // target's, as the grid holds it.
   bool colourByCurvature = false;
@@ -52,7 +52,7 @@ struct MorphOptions {
   // report's "per_frame" (measured on the frame writer's thread: about as
   // much work as extracting the frame).
   bool frameFigures = true;
-  FieldNoise noise;                // on the source's field (the paper's noisy sphere)
+  FieldNoise noise;  // on the source's field (the paper's noisy sphere)
   // The lattice on the narrow band around both surfaces and between them,
   // instead of every cell of the grid: less memory, but between a source
   // and a target that differ much the band is most of the grid, and there a
@@ -78,7 +78,8 @@ inline long givenStepCount(const MorphOptions& o)
 // Returns the JSON report. Throws Interrupted (Ctrl-C, checked between
 // batches of lattice steps) after writing only complete frames.
 nlohmann::json morphFiles(const std::filesystem::path& source, const std::filesystem::path& target,
-                          const std::filesystem::path& folder, const MorphOptions& options, const ComputeDevice& device);
+                          const std::filesystem::path& folder, const MorphOptions& options,
+                          const ComputeDevice& device);
 
 // The same morph on meshes in memory: each frame goes to `sink` (on the
 // frame writer's thread, in order, while the lattice computes the next),

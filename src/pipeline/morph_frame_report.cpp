@@ -39,7 +39,8 @@ std::pair<double, glm::dvec3> sampleWithGradient(const Field& field, glm::dvec3 
         const double wx = dx ? t.x : 1.0 - t.x, wy = dy ? t.y : 1.0 - t.y, wz = dz ? t.z : 1.0 - t.z;
         const double v = c[dz][dy][dx];
         value += wx * wy * wz * v;
-        gradient += v * glm::dvec3((dx ? 1.0 : -1.0) * wy * wz, (dy ? 1.0 : -1.0) * wx * wz, (dz ? 1.0 : -1.0) * wx * wy);
+        gradient +=
+            v * glm::dvec3((dx ? 1.0 : -1.0) * wy * wz, (dy ? 1.0 : -1.0) * wx * wz, (dz ? 1.0 : -1.0) * wx * wy);
       }
   return {value, gradient};
 }
@@ -70,7 +71,8 @@ MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& gr
 {
   if (!measureSurfaces || targetLevel_.triangles.empty()) return;
   toTarget_.emplace(targetLevel_);
-  for (const SurfaceSample& s : sampleSurface(targetLevel_, samplesPerFrame, 1)) targetPoints_.push_back(grid_.toGrid(s.point));
+  for (const SurfaceSample& s : sampleSurface(targetLevel_, samplesPerFrame, 1))
+    targetPoints_.push_back(grid_.toGrid(s.point));
 }
 
 void MorphFrameReport::lattice(int frame, int step, double gamma, double cs, double fieldError, bool converged)
@@ -92,9 +94,9 @@ void MorphFrameReport::surface(int frame, const FrameField& field, const Triangl
   measured.components = topology.components;
   measured.genus = topology.genus;
   if (topology.area > 0.0 && toTarget_) {
-    const DirectedDistance there = toTarget_->from(mesh, ComparisonOptions{samplesPerFrame, 0.0, false, uint64_t(frame) + 1});
-    const DirectedDistance back =
-        std::visit([&](const auto& f) { return distanceByField(*f, targetPoints_); }, field);
+    const DirectedDistance there =
+        toTarget_->from(mesh, ComparisonOptions{samplesPerFrame, 0.0, false, uint64_t(frame) + 1});
+    const DirectedDistance back = std::visit([&](const auto& f) { return distanceByField(*f, targetPoints_); }, field);
     measured.meanDistance = 0.5 * (there.mean / grid_.voxel + back.mean);
     measured.maxDistance = std::max(there.max / grid_.voxel, back.max);
   }

@@ -198,7 +198,8 @@ private:
             between[grid.index(b.x, b.y, b.z)] = differ;
             for (const glm::ivec3& d : steps) {
               const glm::ivec3 n = b + d;
-              if (!grid.contains(n.x, n.y, n.z) || seen[grid.index(n.x, n.y, n.z)] || bricks.slot(n.x, n.y, n.z) != noBrick)
+              if (!grid.contains(n.x, n.y, n.z) || seen[grid.index(n.x, n.y, n.z)] ||
+                  bricks.slot(n.x, n.y, n.z) != noBrick)
                 continue;
               seen[grid.index(n.x, n.y, n.z)] = 1;
               region.push_back(n);
@@ -226,7 +227,8 @@ private:
     std::vector<uint8_t> flags(A.size());
     const float w = float(halfWidth_);
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < A.size(); ++i) flags[i] = std::abs(A[i]) < w || std::abs(T[i]) < w || (A[i] > 0) != (T[i] > 0);
+    for (size_t i = 0; i < A.size(); ++i)
+      flags[i] = std::abs(A[i]) < w || std::abs(T[i]) < w || (A[i] > 0) != (T[i] > 0);
     return flags;
   }
 

@@ -27,7 +27,8 @@ public:
 
   // Throws InputError naming the mesh when the source or the target
   // encloses nothing on the grid (before any output folder exists).
-  virtual void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const = 0;
+  virtual void requireEnclosedVolumes(const std::filesystem::path& source,
+                                      const std::filesystem::path& target) const = 0;
   // Before start(): max |X_source - X_target| over the cells within `band`
   // voxels of the target's surface, where the morph starts from.
   virtual double sourceErrorNearTarget(float band) const = 0;
@@ -60,7 +61,7 @@ public:
 // that a job too large for the device says so first.
 std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const TriangleMesh& target,
                                                const GridFrame& frame, const MorphOptions& options,
-                                               const MorphSchedule& longest, const ComputeDevice& device, StageClock& clock,
-                                               const std::function<void()>& beforeDistances);
+                                               const MorphSchedule& longest, const ComputeDevice& device,
+                                               StageClock& clock, const std::function<void()>& beforeDistances);
 
 }  // namespace lbmshape

@@ -14,8 +14,7 @@ MorphSchedule::MorphSchedule(double gamma, double cs, double gammaEnd, double cs
       frameSteps_(size_t(frames))
 {
   const int intervals = frames - 1;
-  for (int k = 0; k < frames; ++k)
-    frameSteps_[size_t(k)] = int(std::lround(double(totalSteps) * k / intervals));
+  for (int k = 0; k < frames; ++k) frameSteps_[size_t(k)] = int(std::lround(double(totalSteps) * k / intervals));
 }
 
 MorphSchedule MorphSchedule::fixed(const MorphOptions& o)

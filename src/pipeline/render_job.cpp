@@ -32,7 +32,8 @@ namespace {
 // Whole positive number, or nothing.
 std::optional<int> wholeNumber(const std::string& text)
 {
-  if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+  if (text.empty() || text.size() > 9 ||
+      !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
     return std::nullopt;
   return std::atoi(text.c_str());
 }
@@ -59,7 +60,8 @@ std::optional<render::Legend> colourPanels(std::vector<render::Panel>& panels, c
     legend = {"mean curvature (1/unit), 95% of vertices within the scale", -scale, scale, true};
   } else {
     const double scale = render::quantile(all, 0.99, true);
-    legend = {"distance to " + colouring.reference.filename().string() + " (mesh units)", 0.0, scale > 0 ? scale : 1.0, false};
+    legend = {"distance to " + colouring.reference.filename().string() + " (mesh units)", 0.0, scale > 0 ? scale : 1.0,
+              false};
   }
   for (size_t i = 0; i < panels.size(); ++i) {
     panels[i].colours.resize(values[i].size());
@@ -100,7 +102,8 @@ Colouring parseColouring(const std::string& text)
   if (text == "none") return {};
   if (text == "curvature") return {Colouring::By::Curvature, {}};
   const std::string prefix = "distance:";
-  if (text.rfind(prefix, 0) == 0 && text.size() > prefix.size()) return {Colouring::By::Distance, text.substr(prefix.size())};
+  if (text.rfind(prefix, 0) == 0 && text.size() > prefix.size())
+    return {Colouring::By::Distance, text.substr(prefix.size())};
   throw UsageError(nameOf(Parameter::Colouring) + " '" + text + "' is not none, curvature or distance:REFERENCE_MESH");
 }
 
@@ -119,7 +122,8 @@ glm::ivec2 parsePictureSize(const std::string& text)
   const size_t x = text.find_first_of("xX");
   const std::optional<int> w = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(0, x));
   const std::optional<int> h = x == std::string::npos ? std::nullopt : wholeNumber(text.substr(x + 1));
-  if (!w || !h) throw UsageError(nameOf(Parameter::Size) + " '" + text + "' is not WIDTHxHEIGHT in pixels (for example 1024x768)");
+  if (!w || !h)
+    throw UsageError(nameOf(Parameter::Size) + " '" + text + "' is not WIDTHxHEIGHT in pixels (for example 1024x768)");
   checkPictureSize({*w, *h}, text);
   return {*w, *h};
 }
@@ -129,7 +133,8 @@ void checkRenderOptions(const RenderOptions& o)
   if (o.folderMeshes < 1 || o.folderMeshes > parameter_bounds::maxFolderMeshes)
     throw UsageError(nameOf(Parameter::Count) + " must be 1 to " + std::to_string(parameter_bounds::maxFolderMeshes));
   if (o.columns < 0 || o.columns > parameter_bounds::maxFolderMeshes)
-    throw UsageError(nameOf(Parameter::Columns) + " must be 0 (automatic) to " + std::to_string(parameter_bounds::maxFolderMeshes));
+    throw UsageError(nameOf(Parameter::Columns) + " must be 0 (automatic) to " +
+                     std::to_string(parameter_bounds::maxFolderMeshes));
   if (o.size) checkPictureSize(*o.size, std::to_string(o.size->x) + "x" + std::to_string(o.size->y));
 }
 
@@ -149,17 +154,19 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
   Stopwatch colouring;
   picture.legend = colourPanels(picture.panels, o.colouring, reference ? &*reference : nullptr);
   const double colouringMs = colouring.ms();
-  const glm::ivec2 size = o.size.value_or(render::defaultPictureSize(int(meshes.size()), o.labels, picture.legend.has_value(), o.columns));
+  const glm::ivec2 size =
+      o.size.value_or(render::defaultPictureSize(int(meshes.size()), o.labels, picture.legend.has_value(), o.columns));
   picture.width = size.x, picture.height = size.y;
 
   const render::Layout layout = render::arrange(picture);
   for (const render::Rect& cell : layout.meshCells)
     if (cell.width < parameter_bounds::minPictureSide || cell.height < parameter_bounds::minPictureSide)
-      throw UsageError(nameOf(Parameter::Size) + " " + std::to_string(picture.width) + "x" + std::to_string(picture.height) + " leaves cells of " +
-                       std::to_string(cell.width) + "x" + std::to_string(cell.height) + " pixels for " +
-                       std::to_string(meshes.size()) + " meshes in " + std::to_string(layout.columns) +
-                       " columns; each needs at least " + std::to_string(parameter_bounds::minPictureSide) +
-                       " pixels each way: give a larger " + nameOf(Parameter::Size) + " or other " + nameOf(Parameter::Columns));
+      throw UsageError(nameOf(Parameter::Size) + " " + std::to_string(picture.width) + "x" +
+                       std::to_string(picture.height) + " leaves cells of " + std::to_string(cell.width) + "x" +
+                       std::to_string(cell.height) + " pixels for " + std::to_string(meshes.size()) + " meshes in " +
+                       std::to_string(layout.columns) + " columns; each needs at least " +
+                       std::to_string(parameter_bounds::minPictureSide) + " pixels each way: give a larger " +
+                       nameOf(Parameter::Size) + " or other " + nameOf(Parameter::Columns));
   gpu::GpuContext& context = device.drawingContext();
   Stopwatch drawing;
   render::Image image = render::drawSurfaces(context, picture, layout);
@@ -176,7 +183,8 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
                 {"draw_ms", drawMs},
                 {"colour_ms", colouringMs}};
     if (picture.legend)
-      (*figures)["legend"] = {{"title", picture.legend->title}, {"low", picture.legend->low}, {"high", picture.legend->high}};
+      (*figures)["legend"] = {
+          {"title", picture.legend->title}, {"low", picture.legend->low}, {"high", picture.legend->high}};
   }
   return image;
 }
@@ -221,7 +229,8 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   nlohmann::json figures;
   const render::Image image = clock.time("draw", [&] { return drawMeshes(shown, o, device, &figures); });
   clock.time("write", [&] { render::writePng(image, file); });
-  nlohmann::json report = {{"command", "render"}, {"output", png.string()}, {"meshes", panels}, {"device", device.name()}};
+  nlohmann::json report = {
+      {"command", "render"}, {"output", png.string()}, {"meshes", panels}, {"device", device.name()}};
   report.update(figures);
   report["ms"] = clock.toJson();
   return report;

@@ -50,8 +50,8 @@ struct ShownMesh {
 
 // The picture of these meshes, one per cell, under one camera. `figures`,
 // when given, receives the picture's size, samples and colour scale.
-render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& options, const ComputeDevice& device,
-                         nlohmann::json* figures = nullptr);
+render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& options,
+                         const ComputeDevice& device, nlohmann::json* figures = nullptr);
 
 // `count` indices into n items at even spacing, the first and the last
 // among them (all n when count >= n): the frames a contact sheet shows.
@@ -72,7 +72,8 @@ nlohmann::json renderFiles(const std::vector<std::filesystem::path>& paths, cons
 // naming --preview) in a folder that can be written (OutputError), unless
 // the folder is `createdLater` (a morph's output folder), and the device
 // draws (DeviceError; this opens it).
-void checkPreview(const std::filesystem::path& png, const ComputeDevice& device, const std::filesystem::path& createdLater = {});
+void checkPreview(const std::filesystem::path& png, const ComputeDevice& device,
+                  const std::filesystem::path& createdLater = {});
 // A labelled preview picture of meshes in memory, seen from `view`,
 // written to `png`; returns the milliseconds it took.
 double writePreview(const std::vector<ShownMesh>& meshes, const render::View& view, const std::filesystem::path& png,

@@ -46,8 +46,10 @@ void StageClock::report(const std::string& name, double ms, double deviceMs)
     std::snprintf(line, sizeof line, "%-8s %8.1f ms (the device busy %.1f ms of it)", name.c_str(), ms, deviceMs);
   else
     std::snprintf(line, sizeof line, "%-8s %8.1f ms", name.c_str(), ms);
-  if (ms > 1000.0) log::info(line);
-  else log::verbose(line);
+  if (ms > 1000.0)
+    log::info(line);
+  else
+    log::verbose(line);
 }
 
 void StageClock::record(const std::string& name, double ms) { addStageTime(stages_, name, ms); }

@@ -47,8 +47,10 @@ public:
       }
     } record{*this, name, watch, deviceMsNow()};
     Progress progress(name);
-    if constexpr (std::is_invocable_v<Work, Progress&>) return std::forward<Work>(work)(progress);
-    else return std::forward<Work>(work)();
+    if constexpr (std::is_invocable_v<Work, Progress&>)
+      return std::forward<Work>(work)(progress);
+    else
+      return std::forward<Work>(work)();
   }
 
   // Adds `ms` to the stage's total (stages repeated per frame accumulate).

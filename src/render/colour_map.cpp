@@ -30,9 +30,9 @@ glm::vec3 divergingColour(double t)
 
 glm::vec3 sequentialColour(double t)
 {
-  static const std::array<glm::vec3, 5> viridis = {
-      glm::vec3(0.267f, 0.005f, 0.329f), glm::vec3(0.229f, 0.322f, 0.546f), glm::vec3(0.128f, 0.567f, 0.551f),
-      glm::vec3(0.369f, 0.789f, 0.383f), glm::vec3(0.993f, 0.906f, 0.144f)};
+  static const std::array<glm::vec3, 5> viridis = {glm::vec3(0.267f, 0.005f, 0.329f), glm::vec3(0.229f, 0.322f, 0.546f),
+                                                   glm::vec3(0.128f, 0.567f, 0.551f), glm::vec3(0.369f, 0.789f, 0.383f),
+                                                   glm::vec3(0.993f, 0.906f, 0.144f)};
   return throughStops(viridis, t);
 }
 

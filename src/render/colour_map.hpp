@@ -11,7 +11,7 @@
 namespace lbmshape::render {
 
 struct Legend {
-  std::string title;  // what the values are, with their unit
+  std::string title;             // what the values are, with their unit
   double low = 0.0, high = 1.0;  // the ends of the map; values beyond are clamped
   bool diverging = false;        // low = -high, grey at 0
 };

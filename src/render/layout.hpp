@@ -17,10 +17,10 @@ struct Rect {
 
 struct Layout {
   int columns = 1, rows = 1;
-  std::vector<Rect> meshCells;  // one per panel, row by row
-  std::vector<Rect> labelCells; // under each mesh cell; empty without labels
+  std::vector<Rect> meshCells;   // one per panel, row by row
+  std::vector<Rect> labelCells;  // under each mesh cell; empty without labels
   std::optional<Rect> legend;
-  int textScale = 1;            // of labels and legend (pixels per font pixel)
+  int textScale = 1;  // of labels and legend (pixels per font pixel)
 };
 
 // Columns for n panels: one row up to four, then about twice as many

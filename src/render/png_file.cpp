@@ -19,7 +19,8 @@ void writePng(const Image& image, AtomicFile& file)
 void requirePngPath(const std::filesystem::path& path, const std::string& what)
 {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (extension != ".png") throw UsageError(what + " " + path.string() + " must be a .png file");
 }
 

@@ -27,7 +27,8 @@ vk::SampleCountFlagBits multisampling(const vk::PhysicalDeviceLimits& limits)
 vk::Format depthFormat(const vk::raii::PhysicalDevice& device)
 {
   for (vk::Format f : {vk::Format::eD32Sfloat, vk::Format::eX8D24UnormPack32, vk::Format::eD16Unorm})
-    if (device.getFormatProperties(f).optimalTilingFeatures & vk::FormatFeatureFlagBits::eDepthStencilAttachment) return f;
+    if (device.getFormatProperties(f).optimalTilingFeatures & vk::FormatFeatureFlagBits::eDepthStencilAttachment)
+      return f;
   throw DeviceError("the Vulkan device has no depth format to draw pictures with");
 }
 
@@ -97,7 +98,8 @@ std::vector<Draw> gather(const Picture& picture, const glm::dvec3& centre, float
       const glm::vec3 p(mesh.positions[v] - centre), n = normals[size_t(c)];
       const glm::vec3 colour = panel.colours.empty() ? plainSurfaceColour() : panel.colours[v];
       float* o = out + size_t(c) * RENDER_VERTEX_FLOATS;
-      o[0] = p.x, o[1] = p.y, o[2] = p.z, o[3] = n.x, o[4] = n.y, o[5] = n.z, o[6] = colour.r, o[7] = colour.g, o[8] = colour.b;
+      o[0] = p.x, o[1] = p.y, o[2] = p.z, o[3] = n.x, o[4] = n.y, o[5] = n.z, o[6] = colour.r, o[7] = colour.g,
+      o[8] = colour.b;
     }
     if (mesh.triangleCount() > 0) draws.push_back({uint32_t(first), uint32_t(3 * mesh.triangleCount()), cell});
     first += 3 * mesh.triangleCount();
@@ -109,26 +111,47 @@ vk::raii::RenderPass makeRenderPass(const vk::raii::Device& device, vk::SampleCo
 {
   const bool resolve = samples != vk::SampleCountFlagBits::e1;
   std::vector<vk::AttachmentDescription> attachments = {
-      {{}, kColourFormat, samples, vk::AttachmentLoadOp::eClear,
-       resolve ? vk::AttachmentStoreOp::eDontCare : vk::AttachmentStoreOp::eStore, vk::AttachmentLoadOp::eDontCare,
-       vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined,
+      {{},
+       kColourFormat,
+       samples,
+       vk::AttachmentLoadOp::eClear,
+       resolve ? vk::AttachmentStoreOp::eDontCare : vk::AttachmentStoreOp::eStore,
+       vk::AttachmentLoadOp::eDontCare,
+       vk::AttachmentStoreOp::eDontCare,
+       vk::ImageLayout::eUndefined,
        resolve ? vk::ImageLayout::eColorAttachmentOptimal : vk::ImageLayout::eTransferSrcOptimal},
-      {{}, depth, samples, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eDontCare, vk::AttachmentLoadOp::eDontCare,
-       vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthStencilAttachmentOptimal}};
+      {{},
+       depth,
+       samples,
+       vk::AttachmentLoadOp::eClear,
+       vk::AttachmentStoreOp::eDontCare,
+       vk::AttachmentLoadOp::eDontCare,
+       vk::AttachmentStoreOp::eDontCare,
+       vk::ImageLayout::eUndefined,
+       vk::ImageLayout::eDepthStencilAttachmentOptimal}};
   if (resolve)
-    attachments.push_back({{}, kColourFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eDontCare,
-                           vk::AttachmentStoreOp::eStore, vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eDontCare,
-                           vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferSrcOptimal});
+    attachments.push_back({{},
+                           kColourFormat,
+                           vk::SampleCountFlagBits::e1,
+                           vk::AttachmentLoadOp::eDontCare,
+                           vk::AttachmentStoreOp::eStore,
+                           vk::AttachmentLoadOp::eDontCare,
+                           vk::AttachmentStoreOp::eDontCare,
+                           vk::ImageLayout::eUndefined,
+                           vk::ImageLayout::eTransferSrcOptimal});
   const vk::AttachmentReference colour(0, vk::ImageLayout::eColorAttachmentOptimal);
   const vk::AttachmentReference depthRef(1, vk::ImageLayout::eDepthStencilAttachmentOptimal);
   const vk::AttachmentReference resolved(2, vk::ImageLayout::eColorAttachmentOptimal);
-  vk::SubpassDescription subpass({}, vk::PipelineBindPoint::eGraphics, {}, colour, resolve ? resolved : vk::ArrayProxyNoTemporaries<const vk::AttachmentReference>(), &depthRef);
-  const vk::PipelineStageFlags attachmentStages =
-      vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests |
-      vk::PipelineStageFlagBits::eLateFragmentTests;
+  vk::SubpassDescription subpass({}, vk::PipelineBindPoint::eGraphics, {}, colour,
+                                 resolve ? resolved : vk::ArrayProxyNoTemporaries<const vk::AttachmentReference>(),
+                                 &depthRef);
+  const vk::PipelineStageFlags attachmentStages = vk::PipelineStageFlagBits::eColorAttachmentOutput |
+                                                  vk::PipelineStageFlagBits::eEarlyFragmentTests |
+                                                  vk::PipelineStageFlagBits::eLateFragmentTests;
   const std::array<vk::SubpassDependency, 2> dependencies = {
-      vk::SubpassDependency(VK_SUBPASS_EXTERNAL, 0, attachmentStages, attachmentStages, {},
-                            vk::AccessFlagBits::eColorAttachmentWrite | vk::AccessFlagBits::eDepthStencilAttachmentWrite),
+      vk::SubpassDependency(
+          VK_SUBPASS_EXTERNAL, 0, attachmentStages, attachmentStages, {},
+          vk::AccessFlagBits::eColorAttachmentWrite | vk::AccessFlagBits::eDepthStencilAttachmentWrite),
       vk::SubpassDependency(0, VK_SUBPASS_EXTERNAL, vk::PipelineStageFlagBits::eColorAttachmentOutput,
                             vk::PipelineStageFlagBits::eTransfer, vk::AccessFlagBits::eColorAttachmentWrite,
                             vk::AccessFlagBits::eTransferRead)};
@@ -136,20 +159,23 @@ vk::raii::RenderPass makeRenderPass(const vk::raii::Device& device, vk::SampleCo
 }
 
 vk::raii::Pipeline makePipeline(gpu::GpuContext& context, const vk::raii::PipelineLayout& layout,
-                                const vk::raii::RenderPass& pass, vk::SampleCountFlagBits samples, bool lines, bool biased)
+                                const vk::raii::RenderPass& pass, vk::SampleCountFlagBits samples, bool lines,
+                                bool biased)
 {
   const vk::raii::Device& device = context.device();
   const std::span<const uint32_t> vertexCode = gpu::embeddedSpirv("render_surface_vert");
   const std::span<const uint32_t> fragmentCode = gpu::embeddedSpirv("render_surface_frag");
   vk::raii::ShaderModule vertex(device, vk::ShaderModuleCreateInfo({}, vertexCode.size_bytes(), vertexCode.data()));
-  vk::raii::ShaderModule fragment(device, vk::ShaderModuleCreateInfo({}, fragmentCode.size_bytes(), fragmentCode.data()));
+  vk::raii::ShaderModule fragment(device,
+                                  vk::ShaderModuleCreateInfo({}, fragmentCode.size_bytes(), fragmentCode.data()));
   const uint32_t linesWord = lines ? VK_TRUE : VK_FALSE;
   const vk::SpecializationMapEntry entry(RENDER_SPEC_LINES, 0, sizeof(uint32_t));
   const vk::SpecializationInfo specialization(1, &entry, sizeof(uint32_t), &linesWord);
   const std::array<vk::PipelineShaderStageCreateInfo, 2> stages = {
       vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eVertex, *vertex, "main"),
       vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eFragment, *fragment, "main", &specialization)};
-  const vk::VertexInputBindingDescription binding(0, RENDER_VERTEX_FLOATS * sizeof(float), vk::VertexInputRate::eVertex);
+  const vk::VertexInputBindingDescription binding(0, RENDER_VERTEX_FLOATS * sizeof(float),
+                                                  vk::VertexInputRate::eVertex);
   const std::array<vk::VertexInputAttributeDescription, 3> attributes = {
       vk::VertexInputAttributeDescription(RENDER_LOCATION_POSITION, 0, vk::Format::eR32G32B32Sfloat, 0),
       vk::VertexInputAttributeDescription(RENDER_LOCATION_NORMAL, 0, vk::Format::eR32G32B32Sfloat, 3 * sizeof(float)),
@@ -166,12 +192,13 @@ vk::raii::Pipeline makePipeline(gpu::GpuContext& context, const vk::raii::Pipeli
   const vk::PipelineDepthStencilStateCreateInfo depth({}, true, true, vk::CompareOp::eLessOrEqual);
   const vk::PipelineColorBlendAttachmentState blend(false, {}, {}, {}, {}, {}, {},
                                                     vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-                                                        vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
+                                                        vk::ColorComponentFlagBits::eB |
+                                                        vk::ColorComponentFlagBits::eA);
   const vk::PipelineColorBlendStateCreateInfo blending({}, false, vk::LogicOp::eCopy, blend);
   const std::array<vk::DynamicState, 2> dynamic = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   const vk::PipelineDynamicStateCreateInfo dynamicState({}, dynamic);
-  const vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster, &multisample,
-                                            &depth, &blending, &dynamicState, *layout, *pass, 0);
+  const vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster,
+                                            &multisample, &depth, &blending, &dynamicState, *layout, *pass, 0);
   return vk::raii::Pipeline(device, context.pipelineCache(), info);
 }
 
@@ -186,11 +213,14 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   const uint32_t w = uint32_t(picture.width), h = uint32_t(picture.height);
   if (w > limits.maxFramebufferWidth || h > limits.maxFramebufferHeight || w > limits.maxImageDimension2D ||
       h > limits.maxImageDimension2D)
-    throw DeviceError("a picture of " + std::to_string(w) + "x" + std::to_string(h) + " is larger than the Vulkan device draws (" +
+    throw DeviceError("a picture of " + std::to_string(w) + "x" + std::to_string(h) +
+                      " is larger than the Vulkan device draws (" +
                       std::to_string(std::min(limits.maxFramebufferWidth, limits.maxImageDimension2D)) + "x" +
-                      std::to_string(std::min(limits.maxFramebufferHeight, limits.maxImageDimension2D)) + "); use a smaller " + nameOf(Parameter::Size));
+                      std::to_string(std::min(limits.maxFramebufferHeight, limits.maxImageDimension2D)) +
+                      "); use a smaller " + nameOf(Parameter::Size));
   if (picture.wireframe && !context.canDrawLines())
-    throw DeviceError("the Vulkan device " + context.description().name + " cannot draw lines (fillModeNonSolid), so no " + nameOf(Parameter::Wireframe));
+    throw DeviceError("the Vulkan device " + context.description().name +
+                      " cannot draw lines (fillModeNonSolid), so no " + nameOf(Parameter::Wireframe));
 
   // The vertices are one allocation: refused, before anything is
   // allocated, where the device cannot make it.
@@ -198,7 +228,8 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   const uint64_t allocationLimit = context.description().maxAllocationBytes;
   if (allocationLimit > 0 && vertexBytes > allocationLimit)
     throw DeviceError("the picture's " + std::to_string(cornerCount(picture) / 3) + " triangles need " +
-                      std::to_string(vertexBytes >> 20) + " MiB of vertices, more than the Vulkan device allocates at once (" +
+                      std::to_string(vertexBytes >> 20) +
+                      " MiB of vertices, more than the Vulkan device allocates at once (" +
                       std::to_string(allocationLimit >> 20) + " MiB); draw fewer or smaller meshes in one picture");
 
   const vk::raii::Device& device = context.device();
@@ -210,11 +241,12 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   gpu::GpuImage colour(context, kColourFormat, extent, samples,
                        resolve ? Usage::eColorAttachment : Usage::eColorAttachment | Usage::eTransferSrc,
                        vk::ImageAspectFlagBits::eColor);
-  gpu::GpuImage depthImage(context, depth, extent, samples, Usage::eDepthStencilAttachment, vk::ImageAspectFlagBits::eDepth);
+  gpu::GpuImage depthImage(context, depth, extent, samples, Usage::eDepthStencilAttachment,
+                           vk::ImageAspectFlagBits::eDepth);
   std::optional<gpu::GpuImage> resolved;
   if (resolve)
-    resolved.emplace(context, kColourFormat, extent, vk::SampleCountFlagBits::e1, Usage::eColorAttachment | Usage::eTransferSrc,
-                     vk::ImageAspectFlagBits::eColor);
+    resolved.emplace(context, kColourFormat, extent, vk::SampleCountFlagBits::e1,
+                     Usage::eColorAttachment | Usage::eTransferSrc, vk::ImageAspectFlagBits::eColor);
   const vk::Image result = resolve ? resolved->handle() : colour.handle();
 
   Stopwatch pipelinesWatch;
@@ -231,10 +263,12 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   const double pipelinesMs = pipelinesWatch.ms();
   Stopwatch verticesWatch;
   const Framing framing = frame(picture, layout.meshCells.at(0));
-  const gpu::GpuBuffer vertices(context, std::max<size_t>(cornerCount(picture) * RENDER_VERTEX_FLOATS * sizeof(float), 4),
+  const gpu::GpuBuffer vertices(context,
+                                std::max<size_t>(cornerCount(picture) * RENDER_VERTEX_FLOATS * sizeof(float), 4),
                                 vk::BufferUsageFlagBits::eVertexBuffer, gpu::MemoryUse::Upload);
   const std::vector<Draw> draws = gather(picture, framing.centre, reinterpret_cast<float*>(vertices.mapped()));
-  gpu::GpuBuffer readback(context, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::Readback);
+  gpu::GpuBuffer readback(context, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst,
+                          gpu::MemoryUse::Readback);
 
   const double verticesMs = verticesWatch.ms();
   Stopwatch deviceWatch;
@@ -244,12 +278,13 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   static_assert(sizeof(Push) == RENDER_PUSH_BYTES);
 
   context.drawAndWait([&](vk::CommandBuffer cmd) {
-    const std::array<vk::ClearValue, 3> clear = {vk::ClearColorValue(std::array<float, 4>{RENDER_BACKGROUND_RGB, 1.0f}),
-                                                 vk::ClearDepthStencilValue(1.0f, 0),
-                                                 vk::ClearColorValue(std::array<float, 4>{RENDER_BACKGROUND_RGB, 1.0f})};
-    cmd.beginRenderPass(vk::RenderPassBeginInfo(*pass, *framebuffer, vk::Rect2D({0, 0}, extent),
-                                                vk::ArrayProxyNoTemporaries<const vk::ClearValue>(resolve ? 3 : 2, clear.data())),
-                        vk::SubpassContents::eInline);
+    const std::array<vk::ClearValue, 3> clear = {
+        vk::ClearColorValue(std::array<float, 4>{RENDER_BACKGROUND_RGB, 1.0f}), vk::ClearDepthStencilValue(1.0f, 0),
+        vk::ClearColorValue(std::array<float, 4>{RENDER_BACKGROUND_RGB, 1.0f})};
+    cmd.beginRenderPass(
+        vk::RenderPassBeginInfo(*pass, *framebuffer, vk::Rect2D({0, 0}, extent),
+                                vk::ArrayProxyNoTemporaries<const vk::ClearValue>(resolve ? 3 : 2, clear.data())),
+        vk::SubpassContents::eInline);
     cmd.pushConstants(*pipelineLayout, vk::ShaderStageFlagBits::eVertex, 0, sizeof(Push), &constants);
     cmd.bindVertexBuffers(0, vertices.handle(), vk::DeviceSize(0));
     const auto drawAll = [&](const vk::raii::Pipeline& pipeline) {
@@ -264,17 +299,19 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
     drawAll(surfaces);
     if (wires) drawAll(*wires);
     cmd.endRenderPass();
-    cmd.copyImageToBuffer(result, vk::ImageLayout::eTransferSrcOptimal, readback.handle(),
-                          vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
-                                              {0, 0, 0}, vk::Extent3D(extent, 1)));
+    cmd.copyImageToBuffer(
+        result, vk::ImageLayout::eTransferSrcOptimal, readback.handle(),
+        vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1), {0, 0, 0},
+                            vk::Extent3D(extent, 1)));
     const vk::BufferMemoryBarrier toHost(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead,
-                                         VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, readback.handle(), 0, VK_WHOLE_SIZE);
+                                         VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, readback.handle(), 0,
+                                         VK_WHOLE_SIZE);
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {}, {}, toHost, {});
   });
 
-  log::verbose("draw: pipelines " + std::to_string(int(pipelinesMs)) + " ms, vertices " + std::to_string(int(verticesMs)) +
-               " ms, drawing and reading back " + std::to_string(int(deviceWatch.ms())) + " ms (" +
-               std::to_string(int(samples)) + " samples per pixel)");
+  log::verbose("draw: pipelines " + std::to_string(int(pipelinesMs)) + " ms, vertices " +
+               std::to_string(int(verticesMs)) + " ms, drawing and reading back " +
+               std::to_string(int(deviceWatch.ms())) + " ms (" + std::to_string(int(samples)) + " samples per pixel)");
   Image image(picture.width, picture.height);
   std::memcpy(image.rgba.data(), readback.mapped(), image.rgba.size());
   return image;

@@ -57,7 +57,8 @@ std::vector<double> vertexDistances(const TriangleMesh& mesh, const TriangleBvh&
 {
   std::vector<double> distance(mesh.vertexCount());
 #pragma omp parallel for schedule(dynamic, 1024)
-  for (long i = 0; i < long(distance.size()); ++i) distance[size_t(i)] = reference.closest(mesh.positions[size_t(i)]).distance;
+  for (long i = 0; i < long(distance.size()); ++i)
+    distance[size_t(i)] = reference.closest(mesh.positions[size_t(i)]).distance;
   return distance;
 }
 

@@ -50,7 +50,8 @@ void drawText(Image& image, int x, int y, const std::string& text, int scale, gl
     unsigned char rgba[4];
   };
   std::vector<Vertex> quads(s.size() * 64 + 64);
-  const int count = stb_easy_font_print(0.0f, 0.0f, s.data(), nullptr, quads.data(), int(quads.size() * sizeof(Vertex)));
+  const int count =
+      stb_easy_font_print(0.0f, 0.0f, s.data(), nullptr, quads.data(), int(quads.size() * sizeof(Vertex)));
   for (int q = 0; q < count; ++q) {
     const Vertex* v = &quads[size_t(q) * 4];
     // Quads are axis-aligned: corners 0 and 2 are opposite.

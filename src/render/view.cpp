@@ -14,7 +14,8 @@ View parseView(const std::string& text)
   if (text == "side") return {90.0, 0.0};
   if (text == "top") return {0.0, 90.0};
   if (text == "iso") return {45.0, std::atan(1.0 / std::sqrt(2.0)) * 180.0 / M_PI};
-  const std::string expected = nameOf(Parameter::View) + " '" + text + "' is not front, side, top, iso or AZ,EL in degrees (for example 30,20)";
+  const std::string expected =
+      nameOf(Parameter::View) + " '" + text + "' is not front, side, top, iso or AZ,EL in degrees (for example 30,20)";
   const size_t comma = text.find(',');
   if (comma == std::string::npos) throw UsageError(expected);
   const std::string azimuth = text.substr(0, comma), elevation = text.substr(comma + 1);

@@ -161,8 +161,7 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
                 const uint64_t packed = uint64_t(std::bit_cast<uint32_t>(v)) << 32 | triangle;
                 std::atomic_ref<uint64_t> slotBest(best[i]);
                 uint64_t old = slotBest.load(std::memory_order_relaxed);
-                while (packed < old && !slotBest.compare_exchange_weak(old, packed, std::memory_order_relaxed)) {
-                }
+                while (packed < old && !slotBest.compare_exchange_weak(old, packed, std::memory_order_relaxed)) {}
               }
             }
         }
@@ -220,9 +219,8 @@ size_t exactFaceDistances(const TriangleBvh& bvh, const GridFrame& frame, Volume
       const size_t i = e.index(x, y, z);
       if (nearest[i] != TriangleBvh::kNoTriangle) continue;
       const glm::dvec3 p = frame.cellCentre(x, y, z);
-      const TriangleBvh::Closest c = hint == TriangleBvh::kNoTriangle
-                                         ? bvh.closest(p)
-                                         : bvh.closest(p, bvh.closestOnTriangle(p, hint).distance);
+      const TriangleBvh::Closest c =
+          hint == TriangleBvh::kNoTriangle ? bvh.closest(p) : bvh.closest(p, bvh.closestOnTriangle(p, hint).distance);
       distance[i] = float(c.distance / frame.voxel);
       nearest[i] = hint = c.triangle;
       ++written;

@@ -173,7 +173,8 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   // others fixed, and they decide nothing within the half width until as
   // many steps as it has voxels (band_width.hpp). They get the clamped
   // value halfWidth + 1 on their side.
-  const double clamped = options.clampBeyondHalfWidth ? options.halfWidth + 1.0 : std::numeric_limits<double>::infinity();
+  const double clamped =
+      options.clampBeyondHalfWidth ? options.halfWidth + 1.0 : std::numeric_limits<double>::infinity();
   std::vector<float> distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
 
   stage.restart();
@@ -201,9 +202,8 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   log::verbose("band distances: " + std::to_string(bricks->activeCount()) + " bricks; hierarchy and bricks " +
                std::to_string(int(s.bvhMs)) + " ms, " + std::to_string(s.bandCells) + " exact distances " +
                std::to_string(int(s.bandMs)) + " ms, " + std::to_string(s.farCells) + " propagated " +
-               std::to_string(int(s.farFieldMs)) + " ms, sign " +
-               std::to_string(int(s.signMs)) + " ms (" + std::to_string(s.windingEvaluations) + " evaluations), all " +
-               std::to_string(int(s.totalMs)) + " ms");
+               std::to_string(int(s.farFieldMs)) + " ms, sign " + std::to_string(int(s.signMs)) + " ms (" +
+               std::to_string(s.windingEvaluations) + " evaluations), all " + std::to_string(int(s.totalMs)) + " ms");
   return band;
 }
 

@@ -21,7 +21,7 @@
 namespace lbmshape {
 
 struct BandDistanceOptions {
-  double halfWidth = 9.0;        // voxels; at least 1
+  double halfWidth = 9.0;  // voxels; at least 1
   // Cells beyond halfWidth + 1 get that value (on their side) instead of
   // their distance: a lattice that holds them fixed needs nothing more
   // (band_width.hpp), and it saves most of the work. A morph needs the true

@@ -168,8 +168,8 @@ public:
   void forEachNeighbour(size_t i, const glm::ivec3& c, F&& f) const
   {
     const glm::ivec3 local = c & (brickEdge - 1);
-    const bool inside = glm::all(glm::greaterThan(local, glm::ivec3(0))) &&
-                        glm::all(glm::lessThan(local, glm::ivec3(brickEdge - 1)));
+    const bool inside =
+        glm::all(glm::greaterThan(local, glm::ivec3(0))) && glm::all(glm::lessThan(local, glm::ivec3(brickEdge - 1)));
     for (const glm::ivec3& d : neighbourSteps()) {
       if (inside) {
         f(size_t(ptrdiff_t(i) + d.x + brickEdge * (d.y + brickEdge * d.z)), c + d);

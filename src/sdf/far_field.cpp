@@ -137,8 +137,8 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
       }
       buckets[b].clear();
       for (uint32_t i : batch) state[i] = kSettled;
-      // Each settles on the triangle of its best offer, measured exactly,
-      // and offers its own closest point on.
+        // Each settles on the triangle of its best offer, measured exactly,
+        // and offers its own closest point on.
 #pragma omp parallel
       {
         std::vector<Push> local;

@@ -19,8 +19,7 @@ public:
   GridBlocks(Extent3 extent, int size)
       : size_(size), nx_((extent.nx + size - 1) / size), ny_((extent.ny + size - 1) / size),
         nz_((extent.nz + size - 1) / size), extent_(extent)
-  {
-  }
+  {}
 
   size_t count() const { return size_t(nx_) * ny_ * nz_; }
   int size() const { return size_; }

@@ -35,8 +35,8 @@ GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
     double count = std::ceil(span - 1e-9) + 1.0;
     if (count > 1 << 16) {
       std::ostringstream m;
-      m << "a voxel of " << voxel << " makes the grid " << count << " cells long; use a larger " << nameOf(Parameter::Voxel) << " or "
-        << nameOf(Parameter::Resolution);
+      m << "a voxel of " << voxel << " makes the grid " << count << " cells long; use a larger "
+        << nameOf(Parameter::Voxel) << " or " << nameOf(Parameter::Resolution);
       throw UsageError(m.str());
     }
     cells[a] = int(count);
@@ -52,8 +52,8 @@ GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVo
   if (!(marginVoxels >= 0.0)) throw UsageError(nameOf(Parameter::Margin) + " must be zero or more voxels");
   if (resolution < 2.0 * marginVoxels + 4.0) {
     std::ostringstream m;
-    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of " << marginVoxels << " voxels; use at least "
-      << int(std::ceil(2.0 * marginVoxels + 4.0));
+    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of " << marginVoxels
+      << " voxels; use at least " << int(std::ceil(2.0 * marginVoxels + 4.0));
     throw UsageError(m.str());
   }
   const glm::dvec3 size = box.size();

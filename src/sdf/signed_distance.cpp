@@ -76,8 +76,8 @@ Volume signedDistance(const TriangleMesh& mesh, const GridFrame& frame, const Si
   // the mesh lies beyond the grid, the cells on its faces bring that in.
   const Bounds box = bounds(mesh);
   const glm::dvec3 last = frame.cellCentre(frame.extent.nx - 1, frame.extent.ny - 1, frame.extent.nz - 1);
-  const bool contained = glm::all(glm::greaterThanEqual(box.min, frame.origin)) &&
-                         glm::all(glm::lessThanEqual(box.max, last));
+  const bool contained =
+      glm::all(glm::greaterThanEqual(box.min, frame.origin)) && glm::all(glm::lessThanEqual(box.max, last));
   if (!contained || s.bandCells == 0) s.farCells = exactFaceDistances(bvh, frame, distance, nearest);
   s.farCells += propagateFarField(bvh, frame, distance, nearest, options.exactEverywhere);
   float* values = distance.data();

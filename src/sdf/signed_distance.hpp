@@ -20,9 +20,9 @@
 namespace lbmshape {
 
 struct SignedDistanceOptions {
-  double bandVoxels = 3.0;        // exact distances within this many voxels of the surface; at least 1
-  bool exactEverywhere = false;   // exact far field too: slower, for checks and small grids
-  Progress* progress = nullptr;   // told each part of the work as it starts, and the band's blocks as they finish
+  double bandVoxels = 3.0;       // exact distances within this many voxels of the surface; at least 1
+  bool exactEverywhere = false;  // exact far field too: slower, for checks and small grids
+  Progress* progress = nullptr;  // told each part of the work as it starts, and the band's blocks as they finish
 };
 
 struct SignedDistanceStats {

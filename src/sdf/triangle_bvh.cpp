@@ -175,7 +175,7 @@ struct Builder {
   }
 
   static constexpr uint32_t kNoParent = std::numeric_limits<uint32_t>::max();
-  static constexpr int kTaskDepth = 3;      // up to 8 subtrees
+  static constexpr int kTaskDepth = 3;  // up to 8 subtrees
   static constexpr uint32_t kTaskSize = 4096;
 };
 

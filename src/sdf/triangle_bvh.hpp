@@ -39,9 +39,9 @@ public:
   explicit TriangleBvh(const TriangleMesh& mesh, Queries queries = Queries::ClosestAndWinding);
 
   struct Closest {
-    double distance;     // Euclidean, in the mesh's units
-    glm::dvec3 point;    // on the surface
-    uint32_t triangle;   // index into the mesh's triangles
+    double distance;    // Euclidean, in the mesh's units
+    glm::dvec3 point;   // on the surface
+    uint32_t triangle;  // index into the mesh's triangles
   };
 
   // Exact closest point on the surface. With no triangles: {inf, p, kNoTriangle}.
@@ -104,11 +104,11 @@ private:
   void buildExpansions();
   double expansionWinding(const Expansion& e, const glm::dvec3& p) const;
 
-  std::vector<Triangle> triangles_;   // in leaf order
-  std::vector<uint32_t> meshIndex_;   // slot -> mesh triangle
-  std::vector<uint32_t> slotOf_;      // mesh triangle -> slot
-  std::vector<Node> nodes_;           // depth first; nodes_[0] is the root
-  std::vector<Expansion> expansions_; // per node
+  std::vector<Triangle> triangles_;    // in leaf order
+  std::vector<uint32_t> meshIndex_;    // slot -> mesh triangle
+  std::vector<uint32_t> slotOf_;       // mesh triangle -> slot
+  std::vector<Node> nodes_;            // depth first; nodes_[0] is the root
+  std::vector<Expansion> expansions_;  // per node
 };
 
 }  // namespace lbmshape

@@ -37,9 +37,9 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
     for (size_t b = 0; b < cells.blockCount(); ++b) {
       glm::ivec3 lo, hi;
       cells.blockRange(b, lo, hi);
-      const double g = gradient.over(frame.toWorld(glm::dvec3(lo - 1)), frame.toWorld(glm::dvec3(hi)),
-                                     kUsefulGrowth / frame.voxel) *
-                       frame.voxel;
+      const double g =
+          gradient.over(frame.toWorld(glm::dvec3(lo - 1)), frame.toWorld(glm::dvec3(hi)), kUsefulGrowth / frame.voxel) *
+          frame.voxel;
       growth[b] = g > kUsefulGrowth ? kHopeless : float(g);
     }
   }

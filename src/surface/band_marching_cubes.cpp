@@ -46,8 +46,9 @@ public:
       const glm::ivec3 n = b + glm::ivec3(k & 1, k >> 1 & 1, k >> 2 & 1);
       if (!bricks.bricks().contains(n.x, n.y, n.z)) continue;
       const int32_t s = bricks.slot(n.x, n.y, n.z);
-      const int8_t side =
-          s != noBrick ? sides[size_t(s)] : (field_.farValue() * field_.farSide(n.x, n.y, n.z) > iso_ ? int8_t(1) : int8_t(-1));
+      const int8_t side = s != noBrick
+                              ? sides[size_t(s)]
+                              : (field_.farValue() * field_.farSide(n.x, n.y, n.z) > iso_ ? int8_t(1) : int8_t(-1));
       uniform = side == own;
     }
     if (uniform) return;
@@ -77,8 +78,8 @@ private:
   EdgeKey keyOf(int edge, const glm::ivec3& c) const
   {
     const cube::Edge& e = cube::edges()[edge];
-    const glm::ivec3 lower = c + glm::ivec3(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1),
-                                           cube::cornerOffset(e.lower, 2));
+    const glm::ivec3 lower =
+        c + glm::ivec3(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1), cube::cornerOffset(e.lower, 2));
     return EdgeKey(e_.index(lower.x, lower.y, lower.z)) * 3 + e.axis;
   }
 

@@ -21,10 +21,7 @@ public:
   const uint64_t* row(int y, int z) const { return bits_.data() + (size_t(z) * ny_ + y) * words_; }
 
   // Word w of the row moved down by one sample: bit b holds sample 64 w + b + 1.
-  uint64_t next(const uint64_t* row, int w) const
-  {
-    return (row[w] >> 1) | (w + 1 < words_ ? row[w + 1] << 63 : 0);
-  }
+  uint64_t next(const uint64_t* row, int w) const { return (row[w] >> 1) | (w + 1 < words_ ? row[w + 1] << 63 : 0); }
 
   // Bits of word w for the samples x < count.
   static uint64_t below(int w, int count)

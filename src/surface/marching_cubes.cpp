@@ -106,9 +106,8 @@ PlaneCounts countPlanes(const Grid& g, const InsideMask& mask)
         if (b) plane += std::popcount(bits.crossCuts(a, b, w));
         if (c) riser += std::popcount(bits.crossCuts(a, c, w));
         if (b && c)
-          InsideMask::forEachBit(bits.mixedCubes(a, b, c, mask.row(y + 1, z + 1), w), w, [&](int x) {
-            triangles += cases[g.caseIndex(x, y, z)].triangleCount();
-          });
+          InsideMask::forEachBit(bits.mixedCubes(a, b, c, mask.row(y + 1, z + 1), w), w,
+                                 [&](int x) { triangles += cases[g.caseIndex(x, y, z)].triangleCount(); });
       }
     }
     counts.planeVertices[z] = plane;
@@ -132,9 +131,9 @@ std::array<EdgeSlot, 12> makeEdgeSlots()
   for (int e = 0; e < 12; ++e) {
     const int k = e & 3, lowBit = k & 1, highBit = k >> 1;
     switch (e / 4) {
-      case 0: slots[e] = {highBit ? EdgeSlot::X1 : EdgeSlot::X0, 0, uint8_t(lowBit)}; break;
-      case 1: slots[e] = {highBit ? EdgeSlot::Y1 : EdgeSlot::Y0, uint8_t(lowBit), 0}; break;
-      default: slots[e] = {EdgeSlot::Z, uint8_t(lowBit), uint8_t(highBit)}; break;
+    case 0: slots[e] = {highBit ? EdgeSlot::X1 : EdgeSlot::X0, 0, uint8_t(lowBit)}; break;
+    case 1: slots[e] = {highBit ? EdgeSlot::Y1 : EdgeSlot::Y0, uint8_t(lowBit), 0}; break;
+    default: slots[e] = {EdgeSlot::Z, uint8_t(lowBit), uint8_t(highBit)}; break;
     }
   }
   return slots;
@@ -225,11 +224,11 @@ private:
     const EdgeSlot s = slots_[edge];
     const size_t i = size_t(y + s.dy) * g_.nx + (x + s.dx);
     switch (s.kind) {
-      case EdgeSlot::X0: return lower.x[i];
-      case EdgeSlot::X1: return upper.x[i];
-      case EdgeSlot::Y0: return lower.y[i];
-      case EdgeSlot::Y1: return upper.y[i];
-      default: return risers_[i];
+    case EdgeSlot::X0: return lower.x[i];
+    case EdgeSlot::X1: return upper.x[i];
+    case EdgeSlot::Y0: return lower.y[i];
+    case EdgeSlot::Y1: return upper.y[i];
+    default: return risers_[i];
     }
   }
 

@@ -20,8 +20,10 @@ RampSum rampSum(const std::vector<float>& values, double shift, Counted counted)
   for (size_t i = 0; i < values.size(); ++i) {
     if (!counted(i)) continue;
     const double x = double(values[i]) + shift + 0.5;
-    if (x >= 1.0) voxels += 1.0;
-    else if (x > 0.0) voxels += x, slope += 1.0;
+    if (x >= 1.0)
+      voxels += 1.0;
+    else if (x > 0.0)
+      voxels += x, slope += 1.0;
   }
   return {voxels, slope};
 }

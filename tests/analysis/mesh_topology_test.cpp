@@ -138,8 +138,8 @@ TEST(MeshTopology, SphereAreaAndVolumeApproachTheAnalyticValues)
 TEST(MeshTopology, DegenerateTrianglesAndUnusedVerticesAreCounted)
 {
   TriangleMesh m = tetrahedron();
-  m.positions.push_back({5, 5, 5});           // unreferenced
-  m.triangles.push_back({1, 1, 2});           // repeated index
+  m.positions.push_back({5, 5, 5});  // unreferenced
+  m.triangles.push_back({1, 1, 2});  // repeated index
   const MeshTopology t = analyzeTopology(m);
   EXPECT_EQ(t.unreferencedVertices, 1u);
   EXPECT_EQ(t.degenerateTriangles, 1u);

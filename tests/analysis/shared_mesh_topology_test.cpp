@@ -48,16 +48,11 @@ INSTANTIATE_TEST_SUITE_P(
     Readme, SharedMeshTopology,
     ::testing::Values(Expected{"bunny.obj", 29834, 59664, 0, 0, 0},
                       Expected{"bunny_scan.obj", 34834, 69451, std::nullopt, 223, 0},
-                      Expected{"armadillo.obj", 43243, 86482, 0, 0, 0},
-                      Expected{"horse.obj", 48485, 96966, 0, 0, 0},
-                      Expected{"spot.obj", 11533, 23062, 0, 0, 0},
-                      Expected{"fandisk.obj", 6475, 12946, 0, 0, 0},
-                      Expected{"rocker_arm.obj", 10044, 20088, 1, 0, 0},
-                      Expected{"kitten.obj", 14472, 28944, 1, 0, 0},
-                      Expected{"knot.obj", 3200, 6400, 1, 0, 0},
-                      Expected{"eight.obj", 315, 634, 2, 0, 0},
-                      Expected{"fertility.obj", 4494, 9000, 4, 0, 0},
-                      Expected{"igea.obj", 134345, 268686, 0, 0, 0}),
+                      Expected{"armadillo.obj", 43243, 86482, 0, 0, 0}, Expected{"horse.obj", 48485, 96966, 0, 0, 0},
+                      Expected{"spot.obj", 11533, 23062, 0, 0, 0}, Expected{"fandisk.obj", 6475, 12946, 0, 0, 0},
+                      Expected{"rocker_arm.obj", 10044, 20088, 1, 0, 0}, Expected{"kitten.obj", 14472, 28944, 1, 0, 0},
+                      Expected{"knot.obj", 3200, 6400, 1, 0, 0}, Expected{"eight.obj", 315, 634, 2, 0, 0},
+                      Expected{"fertility.obj", 4494, 9000, 4, 0, 0}, Expected{"igea.obj", 134345, 268686, 0, 0, 0}),
     [](const ::testing::TestParamInfo<Expected>& info) {
       return info.param.file.substr(0, info.param.file.find('.'));
     });

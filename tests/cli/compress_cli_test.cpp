@@ -20,7 +20,8 @@ TEST(CompressCli, DenoiseWritesASmallerValidGlb)
   writeMesh(testing::icosphere(4), folder / "in.obj");
   const std::string in = (folder / "in.obj").string();
   ASSERT_EQ(testing::runLbmshape({"denoise", in, (folder / "plain.glb").string(), "--res", "64"}).exitCode, 0);
-  const testing::CliResult r = testing::runLbmshape({"denoise", in, (folder / "small.glb").string(), "--res", "64", "--compress"});
+  const testing::CliResult r =
+      testing::runLbmshape({"denoise", in, (folder / "small.glb").string(), "--res", "64", "--compress"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_LT(fs::file_size(folder / "small.glb") * 3, fs::file_size(folder / "plain.glb"));
   const auto validation = testing::validateGltf(folder / "small.glb");
@@ -41,8 +42,9 @@ TEST(CompressCli, MorphCompressesItsFramesAndItsAnimation)
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "sphere.obj");
   writeMesh(testing::torusMesh(1.0, 0.4, 48, 24), folder / "torus.obj");
-  const testing::CliResult r = testing::runLbmshape({"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(),
-                                                     (folder / "frames").string(), "--res", "24", "--frames", "4", "--compress"});
+  const testing::CliResult r =
+      testing::runLbmshape({"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(),
+                            (folder / "frames").string(), "--res", "24", "--frames", "4", "--compress"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"frame_0000.glb", "frame_0003.glb", "morph.glb"}) {
     const auto validation = testing::validateGltf(folder / "frames" / name);
@@ -53,8 +55,8 @@ TEST(CompressCli, MorphCompressesItsFramesAndItsAnimation)
   EXPECT_EQ(animation.scene["meshes"], 4);
   EXPECT_EQ(animation.scene["animations"], 1);
   // lbmshape reads its compressed frames back, for render and compare.
-  const testing::CliResult sheet = testing::runLbmshape(
-      {"render", (folder / "frames").string(), (folder / "sheet.png").string(), "--json"});
+  const testing::CliResult sheet =
+      testing::runLbmshape({"render", (folder / "frames").string(), (folder / "sheet.png").string(), "--json"});
   ASSERT_EQ(sheet.exitCode, 0) << sheet.err;
   EXPECT_EQ(nlohmann::json::parse(sheet.out)["meshes"].size(), 4u);
 }

@@ -18,9 +18,9 @@ TEST(CurvatureColours, DenoiseColoursConvexRedAndSaddlesBlue)
   testing::ScratchFolder folder;
   // A fat torus: convex outside, saddle-shaped (H < 0) around its hole.
   writeMesh(testing::torusMesh(1.0, 0.8, 96, 48), folder / "torus.obj");
-  const testing::CliResult r = testing::runLbmshape({"denoise", (folder / "torus.obj").string(),
-                                                     (folder / "out.glb").string(), "--res", "48", "--color", "curvature",
-                                                     "--json"});
+  const testing::CliResult r =
+      testing::runLbmshape({"denoise", (folder / "torus.obj").string(), (folder / "out.glb").string(), "--res", "48",
+                            "--color", "curvature", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_GT(nlohmann::json::parse(r.out)["curvature_scale"].get<double>(), 0.0);
   EXPECT_NE(r.err.find("mean curvature"), std::string::npos) << "the scale is printed: " << r.err;
@@ -32,7 +32,8 @@ TEST(CurvatureColours, DenoiseColoursConvexRedAndSaddlesBlue)
   int red = 0, blue = 0;
   for (size_t v = 0; v < read.vertexCount(); ++v) {
     const glm::vec3 c = read.colours[v];
-    EXPECT_TRUE(glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) && glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))));
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) &&
+                glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))));
     const double rho = std::hypot(read.positions[v].x, read.positions[v].y);
     if (std::abs(read.positions[v].z) > 0.2) continue;  // the equators
     if (rho > 1.6) red += c.r > c.b + 0.2f;
@@ -54,8 +55,8 @@ TEST(CurvatureColours, MorphColoursEveryFrameOnTheTargetsScale)
   writeMesh(testing::icosphere(3), folder / "sphere.obj");
   writeMesh(testing::torusMesh(1.0, 0.4, 48, 24), folder / "torus.obj");
   const testing::CliResult r = testing::runLbmshape(
-      {"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(), (folder / "frames").string(), "--res",
-       "24", "--frames", "3", "--color", "curvature", "--compress", "--json"});
+      {"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(), (folder / "frames").string(),
+       "--res", "24", "--frames", "3", "--color", "curvature", "--compress", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_GT(nlohmann::json::parse(r.out)["curvature_scale"].get<double>(), 0.0);
   for (const char* name : {"frame_0000.glb", "frame_0002.glb", "morph.glb"}) {
@@ -77,7 +78,8 @@ TEST(CurvatureColours, FormatsWithoutVertexColoursAreRefusedBeforeAnyWork)
   const std::string in = (folder / "in.obj").string();
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"denoise", in, (folder / "out.ply").string(), "--color", "curvature"},
-        std::vector<std::string>{"morph", in, in, (folder / "frames").string(), "--format", "stl", "--color", "curvature"},
+        std::vector<std::string>{"morph", in, in, (folder / "frames").string(), "--format", "stl", "--color",
+                                 "curvature"},
         std::vector<std::string>{"denoise", in, (folder / "out.glb").string(), "--color", "rainbow"}}) {
     const testing::CliResult r = testing::runLbmshape(args);
     EXPECT_EQ(r.exitCode, 2) << r.err;

@@ -58,85 +58,105 @@ TEST_P(DenoiseBadInput, ExitCodeOneLineNoOutput)
 
 INSTANTIATE_TEST_SUITE_P(
     Table, DenoiseBadInput,
-    ::testing::Values(
-        BadInput{"missing_file", 3, [](const fs::path& f) { return std::pair{(f / "nothing.obj").string(), (f / "out.glb").string()}; }},
-        BadInput{"empty_file", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "empty.obj", "");
-                   return std::pair{(f / "empty.obj").string(), (f / "out.glb").string()};
-                 }},
-        BadInput{"binary_garbage_named_obj", 3,
-                 [](const fs::path& f) {
-                   std::string junk;
-                   for (int i = 0; i < 4096; ++i) junk += char((i * 7919 + 13) % 256);
-                   writeText(f / "junk.obj", junk);
-                   return std::pair{(f / "junk.obj").string(), (f / "out.glb").string()};
-                 }},
-        BadInput{"nan_coordinates", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
-                   return std::pair{(f / "nan.obj").string(), (f / "out.glb").string()};
-                 }},
-        BadInput{"single_triangle", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-                   return std::pair{(f / "one.obj").string(), (f / "out.glb").string()};
-                 }},
-        BadInput{"zero_area_bounding_box", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n");
-                   return std::pair{(f / "line.obj").string(), (f / "out.glb").string()};
-                 }},
-        BadInput{"flat_mesh", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "flat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
-                   return std::pair{(f / "flat.obj").string(), (f / "out.glb").string()};
-                 }},
-        // Open sheets that are not flat: the winding number stays below 1/2
-        // everywhere, so nothing is inside. Before any smoothing, and the
-        // input is to blame, not the smoothing (exit 3, not 5).
-        BadInput{"open_sheet_bent_into_a_half_cylinder", 3,
-                 [](const fs::path& f) {
-                   // Triangles facing the axis: the concave side is outside.
-                   writeMesh(testing::sheet(16, [](double u, double v) {
-                               const double a = std::numbers::pi * (1.0 - u);
-                               return glm::dvec3(std::cos(a), std::sin(a), 4.0 * v);
-                             }), f / "gutter.obj");
-                   return std::pair{(f / "gutter.obj").string(), (f / "out.glb").string()};
-                 },
-                 "gutter.obj: it encloses no volume"},
-        BadInput{"open_wavy_square", 3,
-                 [](const fs::path& f) {
-                   writeMesh(testing::sheet(16, [](double u, double v) {
-                               return glm::dvec3(u, v, 0.01 * std::sin(7.0 * u) * std::cos(5.0 * v));
-                             }), f / "square.obj");
-                   return std::pair{(f / "square.obj").string(), (f / "out.glb").string()};
-                 },
-                 "square.obj: it encloses no volume"},
-        BadInput{"missing_output_folder", 4,
-                 [](const fs::path& f) { return std::pair{sphereObj(f), (f / "no" / "such" / "out.glb").string()}; }},
-        BadInput{"output_folder_is_a_file", 4,
-                 [](const fs::path& f) {
-                   writeText(f / "afile", "x");
-                   return std::pair{sphereObj(f), (f / "afile" / "out.glb").string()};
-                 }},
-        BadInput{"unknown_output_extension", 2,
-                 [](const fs::path& f) { return std::pair{sphereObj(f), (f / "out.xyz").string()}; }},
-        BadInput{"unknown_input_extension", 3,
-                 [](const fs::path& f) {
-                   writeText(f / "mesh.xyz", "v 0 0 0\n");
-                   return std::pair{(f / "mesh.xyz").string(), (f / "out.glb").string()};
-                 }}),
+    ::testing::Values(BadInput{"missing_file", 3,
+                               [](const fs::path& f) {
+                                 return std::pair{(f / "nothing.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"empty_file", 3,
+                               [](const fs::path& f) {
+                                 writeText(f / "empty.obj", "");
+                                 return std::pair{(f / "empty.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"binary_garbage_named_obj", 3,
+                               [](const fs::path& f) {
+                                 std::string junk;
+                                 for (int i = 0; i < 4096; ++i) junk += char((i * 7919 + 13) % 256);
+                                 writeText(f / "junk.obj", junk);
+                                 return std::pair{(f / "junk.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"nan_coordinates", 3,
+                               [](const fs::path& f) {
+                                 writeText(
+                                     f / "nan.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
+                                 return std::pair{(f / "nan.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"single_triangle", 3,
+                               [](const fs::path& f) {
+                                 writeText(f / "one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+                                 return std::pair{(f / "one.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"zero_area_bounding_box", 3,
+                               [](const fs::path& f) {
+                                 writeText(f / "line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n");
+                                 return std::pair{(f / "line.obj").string(), (f / "out.glb").string()};
+                               }},
+                      BadInput{"flat_mesh", 3,
+                               [](const fs::path& f) {
+                                 writeText(f / "flat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
+                                 return std::pair{(f / "flat.obj").string(), (f / "out.glb").string()};
+                               }},
+                      // Open sheets that are not flat: the winding number stays below 1/2
+                      // everywhere, so nothing is inside. Before any smoothing, and the
+                      // input is to blame, not the smoothing (exit 3, not 5).
+                      BadInput{"open_sheet_bent_into_a_half_cylinder", 3,
+                               [](const fs::path& f) {
+                                 // Triangles facing the axis: the concave side is outside.
+                                 writeMesh(testing::sheet(16,
+                                                          [](double u, double v) {
+                                                            const double a = std::numbers::pi * (1.0 - u);
+                                                            return glm::dvec3(std::cos(a), std::sin(a), 4.0 * v);
+                                                          }),
+                                           f / "gutter.obj");
+                                 return std::pair{(f / "gutter.obj").string(), (f / "out.glb").string()};
+                               },
+                               "gutter.obj: it encloses no volume"},
+                      BadInput{"open_wavy_square", 3,
+                               [](const fs::path& f) {
+                                 writeMesh(testing::sheet(16,
+                                                          [](double u, double v) {
+                                                            return glm::dvec3(
+                                                                u, v, 0.01 * std::sin(7.0 * u) * std::cos(5.0 * v));
+                                                          }),
+                                           f / "square.obj");
+                                 return std::pair{(f / "square.obj").string(), (f / "out.glb").string()};
+                               },
+                               "square.obj: it encloses no volume"},
+                      BadInput{"missing_output_folder", 4,
+                               [](const fs::path& f) {
+                                 return std::pair{sphereObj(f), (f / "no" / "such" / "out.glb").string()};
+                               }},
+                      BadInput{"output_folder_is_a_file", 4,
+                               [](const fs::path& f) {
+                                 writeText(f / "afile", "x");
+                                 return std::pair{sphereObj(f), (f / "afile" / "out.glb").string()};
+                               }},
+                      BadInput{"unknown_output_extension", 2,
+                               [](const fs::path& f) {
+                                 return std::pair{sphereObj(f), (f / "out.xyz").string()};
+                               }},
+                      BadInput{"unknown_input_extension", 3,
+                               [](const fs::path& f) {
+                                 writeText(f / "mesh.xyz", "v 0 0 0\n");
+                                 return std::pair{(f / "mesh.xyz").string(), (f / "out.glb").string()};
+                               }}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(DenoiseCli, BadParametersAreUsageErrors)
 {
   testing::ScratchFolder folder;
   const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
-  for (std::vector<std::string> extra : {std::vector<std::string>{"--gamma", "0"}, {"--gamma", "-1"}, {"--steps", "-2"},
-                                         {"--res", "2"}, {"--voxel", "-0.1"}, {"--voxel", "0"}, {"--voxel", "nan"},
-                                         {"--voxel", "inf"}, {"--noise", "-0.5"},
-                                         {"--anisotropic", "--preserve-features"}, {"--res", "64", "--voxel", "0.1"}}) {
+  for (std::vector<std::string> extra : {std::vector<std::string>{"--gamma", "0"},
+                                         {"--gamma", "-1"},
+                                         {"--steps", "-2"},
+                                         {"--res", "2"},
+                                         {"--voxel", "-0.1"},
+                                         {"--voxel", "0"},
+                                         {"--voxel", "nan"},
+                                         {"--voxel", "inf"},
+                                         {"--noise", "-0.5"},
+                                         {"--anisotropic", "--preserve-features"},
+                                         {"--res", "64", "--voxel", "0.1"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());
     testing::CliResult r = testing::runLbmshape(args);
@@ -159,12 +179,14 @@ TEST(DenoiseCli, WritesValidGltfAndReportsJson)
     auto j = nlohmann::json::parse(r.out);
     for (const char* key : {"input", "output", "grid", "gamma", "steps", "ms", "mlups", "volume_change", "device"})
       EXPECT_TRUE(j.contains(key)) << key;
-    for (const char* stage : {"read", "sdf", "lbm", "extract", "write", "total"}) EXPECT_TRUE(j["ms"].contains(stage)) << stage;
+    for (const char* stage : {"read", "sdf", "lbm", "extract", "write", "total"})
+      EXPECT_TRUE(j["ms"].contains(stage)) << stage;
     // The device's busy time within each stage, from timestamps: some in the
     // lattice stage, and never more than the stage's wall time.
     ASSERT_TRUE(j["device_ms"].is_object());
     EXPECT_GT(j["device_ms"].value("lbm", 0.0), 0.0) << j["device_ms"];
-    for (const auto& [stage, ms] : j["device_ms"].items()) EXPECT_LE(ms.get<double>(), j["ms"][stage].get<double>()) << stage;
+    for (const auto& [stage, ms] : j["device_ms"].items())
+      EXPECT_LE(ms.get<double>(), j["ms"][stage].get<double>()) << stage;
     EXPECT_TRUE(j["output"]["closed_manifold"].get<bool>());
     EXPECT_LT(std::abs(j["volume_change"].get<double>()), 0.1);
     const auto validation = testing::validateGltf(output);
@@ -218,7 +240,8 @@ TEST(DenoiseCli, WarnsOnlyWhenGammaAndStepsAreOutsideTheAccurateRange)
   for (const std::string& line : testing::nonEmptyLines(fewSteps.err))
     if (line.rfind("lbmshape: warning: ", 0) == 0) warnings.push_back(line);
   ASSERT_EQ(warnings.size(), 1u) << fewSteps.err;
-  EXPECT_NE(warnings[0].find("--gamma = 1 over 3 steps smooths 61.8 % less than the diffusion equation"), std::string::npos)
+  EXPECT_NE(warnings[0].find("--gamma = 1 over 3 steps smooths 61.8 % less than the diffusion equation"),
+            std::string::npos)
       << warnings[0];
   EXPECT_NE(warnings[0].find("more steps at a smaller --gamma"), std::string::npos) << warnings[0];
 }
@@ -263,7 +286,8 @@ TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
   testing::ScratchFolder folder;
   const std::string input = sphereObj(folder.path());
   for (const char* name : {"a.obj", "b.obj"})
-    ASSERT_EQ(testing::runLbmshape({"noise", input, (folder / name).string(), "--sigma", "0.3", "--seed", "5"}).exitCode, 0);
+    ASSERT_EQ(
+        testing::runLbmshape({"noise", input, (folder / name).string(), "--sigma", "0.3", "--seed", "5"}).exitCode, 0);
   auto compare = [&](const std::string& x, const std::string& y) {
     return nlohmann::json::parse(testing::runLbmshape({"compare", x, y, "--json", "--samples", "2000"}).out);
   };
@@ -283,8 +307,8 @@ TEST(NoiseCli, WithResSigmaIsInVoxelsOfDenoisesGrid)
       testing::runLbmshape({"noise", input, (folder / "n.obj").string(), "--sigma", "0.5", "--res", "40", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto noise = nlohmann::json::parse(r.out);
-  const testing::CliResult d = testing::runLbmshape(
-      {"denoise", input, (folder / "d.obj").string(), "--res", "40", "--steps", "0", "--json"});
+  const testing::CliResult d =
+      testing::runLbmshape({"denoise", input, (folder / "d.obj").string(), "--res", "40", "--steps", "0", "--json"});
   ASSERT_EQ(d.exitCode, 0) << d.err;
   const double voxel = nlohmann::json::parse(d.out)["grid"]["voxel"].get<double>();
   EXPECT_EQ(noise["sigma_unit"], "voxel");

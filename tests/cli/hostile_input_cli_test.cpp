@@ -53,7 +53,8 @@ protected:
 
 TEST_P(HostileFileCli, CompareRefusesIt)
 {
-  expectRefused(testing::runLbmshapeWithin(fourGigabytes, {"compare", input_.string(), (folder_ / "cube.obj").string(), "-q"}));
+  expectRefused(
+      testing::runLbmshapeWithin(fourGigabytes, {"compare", input_.string(), (folder_ / "cube.obj").string(), "-q"}));
 }
 
 TEST_P(HostileFileCli, DenoiseRefusesIt)
@@ -72,9 +73,10 @@ TEST(MemoryPressure, CompareEndsWithItsResultOrOutOfMemoryNeverASignal)
   writeMesh(testing::icosphere(6), folder / "a.obj");
   writeMesh(testing::icosphere(6, 1.01), folder / "b.obj");
   for (size_t megabytes : {60, 100, 150, 250}) {
-    const auto result =
-        testing::runLbmshapeWithin(megabytes, {"compare", (folder / "a.obj").string(), (folder / "b.obj").string(), "-q"});
-    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n" << result.err;
+    const auto result = testing::runLbmshapeWithin(
+        megabytes, {"compare", (folder / "a.obj").string(), (folder / "b.obj").string(), "-q"});
+    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n"
+                                                              << result.err;
     if (result.exitCode == 5) {
       EXPECT_EQ(testing::nonEmptyLines(result.err).size(), 1u) << result.err;
       EXPECT_NE(result.err.find("lbmshape: error: out of memory"), std::string::npos) << result.err;
@@ -91,18 +93,22 @@ TEST(MemoryPressure, AMorphEndsWellAndLeavesNoEmptyFolder)
   for (size_t megabytes : {150, 300, 500, 800}) {
     // Two folders deep, both new: a failed morph removes both.
     const fs::path frames = folder / ("run" + std::to_string(megabytes)) / "frames";
-    const auto result = testing::runLbmshapeWithin(megabytes, {"morph", (folder / "a.obj").string(),
-                                                               (folder / "b.obj").string(), frames.string(),
-                                                               "--res", "48", "--frames", "6", "-q"});
-    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n" << result.err;
+    const auto result =
+        testing::runLbmshapeWithin(megabytes, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                               frames.string(), "--res", "48", "--frames", "6", "-q"});
+    EXPECT_TRUE(result.exitCode == 0 || result.exitCode == 5) << megabytes << " MB: exit " << result.exitCode << "\n"
+                                                              << result.err;
     if (result.exitCode == 5) {
       // One error line (the tests run with the validation layer on, whose
       // warnings about the failed allocation may come before it).
       const auto lines = testing::nonEmptyLines(result.err);
-      EXPECT_EQ(std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("lbmshape: error: ", 0) == 0; }), 1)
+      EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                              [](const std::string& l) { return l.rfind("lbmshape: error: ", 0) == 0; }),
+                1)
           << result.err;
     }
-    EXPECT_EQ(fs::exists(frames.parent_path()), fs::exists(frames)) << megabytes << " MB: an empty parent was left behind";
+    EXPECT_EQ(fs::exists(frames.parent_path()), fs::exists(frames))
+        << megabytes << " MB: an empty parent was left behind";
     if (fs::exists(frames)) {
       EXPECT_FALSE(fs::is_empty(frames)) << megabytes << " MB: an empty folder was left behind";
       for (const auto& entry : fs::directory_iterator(frames))
@@ -121,7 +127,8 @@ TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
   writeMesh(testing::icosphere(3), folder / "a.obj");
   const std::string a = (folder / "a.obj").string();
   for (std::vector<std::string> args :
-       {std::vector<std::string>{"--device", "reference", "denoise", a, (folder / "out.glb").string(), "--res", "400", "--dense"},
+       {std::vector<std::string>{"--device", "reference", "denoise", a, (folder / "out.glb").string(), "--res", "400",
+                                 "--dense"},
         {"--device", "reference", "denoise", a, (folder / "out.glb").string(), "--res", "1000"},
         {"--device", "reference", "morph", a, a, (folder / "frames").string(), "--res", "400"}}) {
     const auto result = testing::runLbmshapeWithin(1000, args);
@@ -141,9 +148,9 @@ TEST(MemoryPressure, AnAnimationThatCannotFitIsRefusedBeforeAnyWorkSayingWhatWou
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
   // 100,000 frames of a sphere 90 voxels across: hundreds of GB of meshes.
-  const auto result = testing::runLbmshapeWithin(
-      1000, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(), (folder / "frames").string(), "--res",
-             "96", "--frames", "100000"});
+  const auto result =
+      testing::runLbmshapeWithin(1000, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
+                                        (folder / "frames").string(), "--res", "96", "--frames", "100000"});
   EXPECT_EQ(result.exitCode, 5) << result.err;
   const auto lines = testing::messageLines(result.err);
   ASSERT_EQ(lines.size(), 1u) << result.err;
@@ -156,14 +163,15 @@ TEST(StandardOutput, ResultsThatCannotBeWrittenAreAnOutputError)
 {
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(1), folder / "a.obj");
-  const auto result = testing::runLbmshape({"compare", (folder / "a.obj").string(), (folder / "a.obj").string(), "--json"});
+  const auto result =
+      testing::runLbmshape({"compare", (folder / "a.obj").string(), (folder / "a.obj").string(), "--json"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   // runLbmshape sends stdout to a file; /dev/full is the disk that is always full.
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
   const std::string mesh = (folder / "a.obj").string();
   std::string command(1, '\'');
-  for (const std::string& piece : {testing::lbmshapeBinary(), std::string("' compare '"), mesh, std::string("' '"), mesh,
-                                   std::string("' --json >/dev/full 2>/dev/null")})
+  for (const std::string& piece : {testing::lbmshapeBinary(), std::string("' compare '"), mesh, std::string("' '"),
+                                   mesh, std::string("' --json >/dev/full 2>/dev/null")})
     command += piece;
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -36,10 +36,19 @@ protected:
   nlohmann::json threeJobs()
   {
     return nlohmann::json::array({
-        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "sphere_smooth.glb"}, {"res", 24}, {"preserve-features", true}},
+        {{"command", "denoise"},
+         {"input", "sphere.obj"},
+         {"output", "sphere_smooth.glb"},
+         {"res", 24},
+         {"preserve-features", true}},
         {{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 24}},
-        {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "frames"}, {"res", 24},
-         {"frames", 3}, {"gamma", 0.1}},
+        {{"command", "morph"},
+         {"source", "sphere.obj"},
+         {"target", "torus.obj"},
+         {"output", "frames"},
+         {"res", 24},
+         {"frames", 3},
+         {"gamma", 0.1}},
     });
   }
 };
@@ -72,9 +81,10 @@ TEST_F(JobsFile, FailFastStopsAtTheFailure)
 
 TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
 {
-  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"frobnicate", 1}},
-                                     {{"command", "explode"}},
-                                     {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"res", 20}}});
+  auto jobs =
+      nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"frobnicate", 1}},
+                             {{"command", "explode"}},
+                             {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"res", 20}}});
   testing::CliResult r = testing::runLbmshape({"run", write(jobs).string(), "--json"});
   EXPECT_EQ(r.exitCode, 2);
   const auto report = nlohmann::json::parse(r.out);
@@ -98,9 +108,10 @@ TEST_F(JobsFile, DuplicateKeysAndOutputsAreRefusedBeforeAnyJob)
   EXPECT_NE(twice.err.find("job 2 gives \"res\" twice"), std::string::npos) << twice.err;
   EXPECT_FALSE(fs::exists(folder / "a.glb")) << "no job ran";
 
-  auto jobs = nlohmann::json::array({{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "same.glb"}, {"res", 16}},
-                                     {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "other.glb"}, {"res", 16}},
-                                     {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "./x/../same.glb"}, {"res", 16}}});
+  auto jobs = nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "same.glb"}, {"res", 16}},
+       {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "other.glb"}, {"res", 16}},
+       {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "./x/../same.glb"}, {"res", 16}}});
   fs::create_directory(folder / "x");
   testing::CliResult same = testing::runLbmshape({"run", write(jobs).string()});
   EXPECT_EQ(same.exitCode, 2) << same.err;
@@ -115,8 +126,12 @@ TEST_F(JobsFile, JobsShareOneDeviceAndMorphCreatesItsFolder)
 {
   auto jobs = nlohmann::json::array(
       {{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "smooth.obj"}, {"res", 16}},
-       {{"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "new/nested/frames"},
-        {"res", 16}, {"frames", 2}},
+       {{"command", "morph"},
+        {"source", "sphere.obj"},
+        {"target", "torus.obj"},
+        {"output", "new/nested/frames"},
+        {"res", 16},
+        {"frames", 2}},
        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "no_such_folder/smooth.obj"}, {"res", 16}}});
   testing::CliResult r = testing::runLbmshape({"-v", "run", write(jobs).string(), "--json"});
   EXPECT_EQ(r.exitCode, 4) << r.err;
@@ -166,8 +181,8 @@ TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)
   nlohmann::json jobs = nlohmann::json::array(
       {{{"command", "denoise"}, {"input", "no_such_mesh.obj"}, {"output", "missing.glb"}, {"res", 16}}});
   for (const JobCase& c : jobCases) {
-    nlohmann::json job = {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", std::string(c.name) + ".obj"},
-                          {"res", 16}};
+    nlohmann::json job = {
+        {"command", "denoise"}, {"input", "sphere.obj"}, {"output", std::string(c.name) + ".obj"}, {"res", 16}};
     job.update(c.options);
     if (job["output"].is_null()) job.erase("output");
     jobs.push_back(job);
@@ -188,13 +203,17 @@ TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)
     ++failures;
     ASSERT_FALSE(result["ok"].get<bool>()) << c.name;
     EXPECT_EQ(result["exit_code"], 2) << c.name << ": a usage error";
-    EXPECT_NE(result["error"].get<std::string>().find(c.errorNames), std::string::npos) << c.name << ": " << result["error"];
+    EXPECT_NE(result["error"].get<std::string>().find(c.errorNames), std::string::npos)
+        << c.name << ": " << result["error"];
     const std::string line = "failed: " + result["error"].get<std::string>();
     const auto lines = testing::nonEmptyLines(r.err);
-    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
-      return l.rfind("lbmshape: warning: " + job + " ", 0) == 0 && l.size() >= line.size() &&
-             l.compare(l.size() - line.size(), line.size(), line) == 0;
-    })) << c.name << ": the log names the job\n" << r.err;
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
+                            [&](const std::string& l) {
+                              return l.rfind("lbmshape: warning: " + job + " ", 0) == 0 && l.size() >= line.size() &&
+                                     l.compare(l.size() - line.size(), line.size(), line) == 0;
+                            }))
+        << c.name << ": the log names the job\n"
+        << r.err;
     EXPECT_FALSE(fs::exists(folder / (std::string(c.name) + ".obj"))) << c.name;
   }
   EXPECT_EQ(report["failed"], failures);
@@ -207,7 +226,8 @@ nlohmann::json fiveDenoiseJobs()
 {
   nlohmann::json jobs = nlohmann::json::array();
   for (int k = 1; k <= 5; ++k)
-    jobs.push_back({{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "s" + std::to_string(k) + ".obj"}, {"res", 16}});
+    jobs.push_back(
+        {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "s" + std::to_string(k) + ".obj"}, {"res", 16}});
   return jobs;
 }
 
@@ -246,8 +266,8 @@ TEST_F(JobsFile, GnuParallelRunsThePartsSideBySide)
     GTEST_SKIP() << "GNU parallel is not installed (Debian: apt-get install parallel; scripts/install-deps.sh "
                     "--with-test-tools installs it)";
   const fs::path file = write(fiveDenoiseJobs());
-  const std::string command = "parallel --halt now,fail=1 '" + testing::lbmshapeBinary() + "' -q run '" + file.string() +
-                              "' --shard {}/3 ::: 1 2 3";
+  const std::string command = "parallel --halt now,fail=1 '" + testing::lbmshapeBinary() + "' -q run '" +
+                              file.string() + "' --shard {}/3 ::: 1 2 3";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   for (int k = 1; k <= 5; ++k) EXPECT_TRUE(fs::exists(folder / ("s" + std::to_string(k) + ".obj"))) << k;
 }

@@ -69,7 +69,8 @@ TEST(JsonResults, BenchReportsConsistentFigures)
     const auto& b = j[backend];
     ASSERT_TRUE(b.is_object()) << backend;
     EXPECT_GT(b["ms_per_step"].get<double>(), 0.0);
-    EXPECT_NEAR(b["mlups"].get<double>(), cells / (b["ms_per_step"].get<double>() * 1e3), 1e-6 * b["mlups"].get<double>());
+    EXPECT_NEAR(b["mlups"].get<double>(), cells / (b["ms_per_step"].get<double>() * 1e3),
+                1e-6 * b["mlups"].get<double>());
   }
   EXPECT_NEAR(j["vulkan"]["gbps"].get<double>(), j["vulkan"]["mlups"].get<double>() * 152e-3, 1e-6);
   EXPECT_NEAR(j["vulkan_over_reference"].get<double>(),
@@ -90,7 +91,8 @@ TEST(JsonResults, BenchReportsConsistentFigures)
 
 TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
 {
-  auto j = parseStdout(testing::runLbmshape({"bench", "--band", "--json", "--size", "48,40,40", "--steps", "2", "--runs", "1"}));
+  auto j = parseStdout(
+      testing::runLbmshape({"bench", "--band", "--json", "--size", "48,40,40", "--steps", "2", "--runs", "1"}));
   EXPECT_EQ(j["device"], selectedDeviceName());
   const auto& band = j["band"];
   EXPECT_EQ(band["half_width"], 6.0) << "a denoise's at the defaults (lbm/band_width.hpp)";
@@ -113,8 +115,8 @@ TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
               j["vulkan"]["mlups"].get<double>() / j["reference"]["mlups"].get<double>(), 1e-9);
   expectDenoiseStages(j["denoise"], 48, "band", j["vulkan"]["stored_mlups"].get<double>());
 
-  auto narrow = parseStdout(
-      testing::runLbmshape({"bench", "--band", "--half-width", "2", "--json", "--size", "48,40,40", "--steps", "1", "--runs", "1"}));
+  auto narrow = parseStdout(testing::runLbmshape(
+      {"bench", "--band", "--half-width", "2", "--json", "--size", "48,40,40", "--steps", "1", "--runs", "1"}));
   EXPECT_EQ(narrow["band"]["half_width"], 2.0);
   EXPECT_LT(narrow["band"]["streaming_cells"].get<size_t>(), streaming);
 }
@@ -160,8 +162,8 @@ TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
 
 TEST(JsonResults, ReferenceDeviceRunsWithoutVulkan)
 {
-  auto j = parseStdout(
-      testing::runLbmshape({"--device", "reference", "bench", "--json", "--size", "12,12,12", "--steps", "3", "--runs", "1"}));
+  auto j = parseStdout(testing::runLbmshape(
+      {"--device", "reference", "bench", "--json", "--size", "12,12,12", "--steps", "3", "--runs", "1"}));
   EXPECT_TRUE(j["vulkan"].is_null());
   EXPECT_GT(j["reference"]["mlups"].get<double>(), 0.0);
 }

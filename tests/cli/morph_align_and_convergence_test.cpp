@@ -44,10 +44,9 @@ TEST_P(MorphAlign, TargetLandsOnTheSourceInItsCoordinates)
 {
   const bool fit = GetParam() == "fit";
   const fs::path out = folder / "frames";
-  testing::CliResult r = testing::runLbmshape({"morph", (folder / "sphere.obj").string(), (folder / "box.obj").string(),
-                                               out.string(), "--align", GetParam(), "--res", "40", "--cs", "0.3",
-                                               "--frames", "3", "--steps", "60", "--format", "obj", "--no-animation",
-                                               "--json"});
+  testing::CliResult r = testing::runLbmshape(
+      {"morph", (folder / "sphere.obj").string(), (folder / "box.obj").string(), out.string(), "--align", GetParam(),
+       "--res", "40", "--cs", "0.3", "--frames", "3", "--steps", "60", "--format", "obj", "--no-animation", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   const double voxel = report["grid"]["voxel"];
@@ -82,10 +81,10 @@ TEST(MorphConvergence, LoggedAndLaterFramesRepeatTheConvergedShape)
   writeMesh(testing::icosphere(3, 1.1), folder / "large.obj");
   const fs::path out = folder / "frames";
   const int frames = 12;
-  testing::CliResult r = testing::runLbmshape({"morph", (folder / "small.obj").string(), (folder / "large.obj").string(),
-                                               out.string(), "--align", "none", "--res", "32", "--cs", "0.5",
-                                               "--frames", std::to_string(frames), "--steps-per-frame", "1", "--format", "obj",
-                                               "--no-animation", "--json"});
+  testing::CliResult r =
+      testing::runLbmshape({"morph", (folder / "small.obj").string(), (folder / "large.obj").string(), out.string(),
+                            "--align", "none", "--res", "32", "--cs", "0.5", "--frames", std::to_string(frames),
+                            "--steps-per-frame", "1", "--format", "obj", "--no-animation", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   ASSERT_FALSE(report["converged_at_step"].is_null()) << r.out;

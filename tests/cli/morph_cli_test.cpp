@@ -20,7 +20,6 @@
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
-
 namespace lbmshape {
 namespace {
 
@@ -40,8 +39,8 @@ protected:
 TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
 {
   const fs::path out = folder / "frames";
-  testing::CliResult r =
-      testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "32", "--frames", "5", "--fps", "10", "--json"});
+  testing::CliResult r = testing::runLbmshape(
+      {"morph", sphere, torus, out.string(), "--res", "32", "--frames", "5", "--fps", "10", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (int k = 0; k < 5; ++k) {
     const fs::path frame = out / ("frame_000" + std::to_string(k) + ".glb");
@@ -60,7 +59,8 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
   }
   EXPECT_NEAR(end, 5 / 10.0, 1e-6) << "the animation spans frames / fps";
   auto report = nlohmann::json::parse(r.out);
-  for (const char* key : {"steps", "frames", "converged_at_step", "ms", "mlups", "final"}) EXPECT_TRUE(report.contains(key)) << key;
+  for (const char* key : {"steps", "frames", "converged_at_step", "ms", "mlups", "final"})
+    EXPECT_TRUE(report.contains(key)) << key;
   for (const char* stage : {"sdf", "lbm", "extract", "write"}) EXPECT_TRUE(report["ms"].contains(stage)) << stage;
   EXPECT_GT(report["device_ms"].value("lbm", 0.0), 0.0) << report["device_ms"];
   for (const auto& [stage, ms] : report["device_ms"].items())
@@ -83,7 +83,8 @@ TEST_F(MorphCli, FramesDoNotDependOnTheWritersTiming)
                   .exitCode,
               0);
   for (int k = 0; k < 12; ++k) {
-    const std::string name = k < 10 ? "frame_000" + std::to_string(k) + ".obj" : "frame_00" + std::to_string(k) + ".obj";
+    const std::string name =
+        k < 10 ? "frame_000" + std::to_string(k) + ".obj" : "frame_00" + std::to_string(k) + ".obj";
     const std::string a = bytes(folder / "a" / name);
     EXPECT_FALSE(a.empty()) << name;
     EXPECT_EQ(a, bytes(folder / "b" / name)) << name;
@@ -94,8 +95,8 @@ TEST_F(MorphCli, OtherFrameFormats)
 {
   for (const char* format : {"obj", "ply"}) {
     const fs::path out = folder / format;
-    ASSERT_EQ(testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "24", "--frames", "3", "--format", format,
-                                    "--no-animation"})
+    ASSERT_EQ(testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "24", "--frames", "3", "--format",
+                                    format, "--no-animation"})
                   .exitCode,
               0);
     EXPECT_NO_THROW(readMesh(out / (std::string("frame_0002.") + format)));
@@ -144,27 +145,28 @@ TEST_P(MorphBadInput, ExitCodeAndOneLine)
 
 INSTANTIATE_TEST_SUITE_P(
     Table, MorphBadInput,
-    ::testing::Values(BadMorph{"missing_target", 3, {"SPHERE", "MISSING", "OUT", "--res", "16"}},
-                      BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
-                      BadMorph{"target_encloses_nothing", 3, {"SPHERE", "SHEET", "OUT", "--res", "16"}},
-                      BadMorph{"source_encloses_nothing", 3, {"SHEET", "SPHERE", "OUT", "--res", "16"}},
-                      BadMorph{"same_file_twice_is_fine", 0, {"SPHERE", "SPHERE", "OUT", "--res", "16", "--frames", "2", "-q"}},
-                      BadMorph{"unwritable_folder", 4, {"SPHERE", "TORUS", "FILE", "--res", "16"}},
-                      BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},
-                      BadMorph{"zero_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "0"}},
-                      BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
-                      BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
-                      BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
-                      BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}},
-                      // 0 is a value to refuse, not "the default": a morph of no steps only repeats the source.
-                      BadMorph{"zero_steps", 2, {"SPHERE", "TORUS", "OUT", "--steps", "0"}},
-                      BadMorph{"zero_steps_per_frame", 2, {"SPHERE", "TORUS", "OUT", "--steps-per-frame", "0"}},
-                      BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}},
-                      // The bounds of core/parameter_bounds.hpp, refused before any work.
-                      BadMorph{"cs_above_one", 2, {"SPHERE", "TORUS", "OUT", "--cs", "1.5"}},
-                      BadMorph{"gamma_above_one", 2, {"SPHERE", "TORUS", "OUT", "--gamma", "1e9"}},
-                      BadMorph{"too_many_frames", 2, {"SPHERE", "TORUS", "OUT", "--frames", "100001"}},
-                      BadMorph{"too_many_steps", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1000", "--steps-per-frame", "2000"}}),
+    ::testing::Values(
+        BadMorph{"missing_target", 3, {"SPHERE", "MISSING", "OUT", "--res", "16"}},
+        BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
+        BadMorph{"target_encloses_nothing", 3, {"SPHERE", "SHEET", "OUT", "--res", "16"}},
+        BadMorph{"source_encloses_nothing", 3, {"SHEET", "SPHERE", "OUT", "--res", "16"}},
+        BadMorph{"same_file_twice_is_fine", 0, {"SPHERE", "SPHERE", "OUT", "--res", "16", "--frames", "2", "-q"}},
+        BadMorph{"unwritable_folder", 4, {"SPHERE", "TORUS", "FILE", "--res", "16"}},
+        BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},
+        BadMorph{"zero_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "0"}},
+        BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
+        BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
+        BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
+        BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}},
+        // 0 is a value to refuse, not "the default": a morph of no steps only repeats the source.
+        BadMorph{"zero_steps", 2, {"SPHERE", "TORUS", "OUT", "--steps", "0"}},
+        BadMorph{"zero_steps_per_frame", 2, {"SPHERE", "TORUS", "OUT", "--steps-per-frame", "0"}},
+        BadMorph{"zero_voxel", 2, {"SPHERE", "TORUS", "OUT", "--voxel", "0"}},
+        // The bounds of core/parameter_bounds.hpp, refused before any work.
+        BadMorph{"cs_above_one", 2, {"SPHERE", "TORUS", "OUT", "--cs", "1.5"}},
+        BadMorph{"gamma_above_one", 2, {"SPHERE", "TORUS", "OUT", "--gamma", "1e9"}},
+        BadMorph{"too_many_frames", 2, {"SPHERE", "TORUS", "OUT", "--frames", "100001"}},
+        BadMorph{"too_many_steps", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1000", "--steps-per-frame", "2000"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 using testing::spawnLbmshape;
@@ -189,8 +191,8 @@ int expectOnlyCompleteFrames(const fs::path& folder)
 TEST_F(MorphCli, CtrlCLeavesOnlyCompleteFrames)
 {
   const fs::path out = folder / "frames";
-  const pid_t pid = spawnLbmshape(
-      {"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "400", "--format", "obj", "--no-animation"});
+  const pid_t pid = spawnLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "64", "--frames", "400",
+                                   "--format", "obj", "--no-animation"});
   ASSERT_GT(pid, 0);
   waitForFile(out / "frame_0003.obj", std::chrono::seconds(60));  // a few frames, then Ctrl-C
   kill(pid, SIGINT);
@@ -234,8 +236,8 @@ TEST_F(MorphCli, CtrlCStopsALongFrameAtOnce)
 TEST_F(MorphCli, ASecondMorphIntoTheSameFolderIsRefused)
 {
   const fs::path out = folder / "frames";
-  const pid_t pid = spawnLbmshape(
-      {"-q", "morph", sphere, torus, out.string(), "--res", "48", "--frames", "400", "--format", "obj", "--no-animation"});
+  const pid_t pid = spawnLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "48", "--frames", "400",
+                                   "--format", "obj", "--no-animation"});
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForFile(out / "frame_0001.obj", std::chrono::seconds(60)));
   testing::CliResult second =
@@ -253,7 +255,8 @@ TEST_F(MorphCli, AFolderThatCannotBeMadeIsRefusedBeforeAnyWork)
 {
   std::ofstream(folder / "file.txt") << "not a folder";
   const fs::path out = folder / "file.txt" / "frames";
-  testing::CliResult r = testing::runLbmshape({"-v", "morph", sphere, torus, out.string(), "--res", "32", "--frames", "3"});
+  testing::CliResult r =
+      testing::runLbmshape({"-v", "morph", sphere, torus, out.string(), "--res", "32", "--frames", "3"});
   EXPECT_EQ(r.exitCode, 4) << r.err;
   EXPECT_NE(r.err.find("is not a folder"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("sdf"), std::string::npos) << "refused before any work: " << r.err;

@@ -43,9 +43,9 @@ TEST_F(MorphThroughNothing, EmptyFramesAreWrittenAndTheMorphComesBack)
 {
   const fs::path out = folder / "frames";
   const int frames = 17;
-  testing::CliResult r = testing::runLbmshape({"morph", left, right, out.string(), "--align", "none", "--res", "40",
-                                               "--frames", std::to_string(frames), "--steps", "48", "--cs", "0.2",
-                                               "--json"});
+  testing::CliResult r =
+      testing::runLbmshape({"morph", left, right, out.string(), "--align", "none", "--res", "40", "--frames",
+                            std::to_string(frames), "--steps", "48", "--cs", "0.2", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   const auto empty = report["empty_frames"].get<std::vector<int>>();
@@ -69,17 +69,16 @@ TEST_F(MorphThroughNothing, EmptyFramesAreWrittenAndTheMorphComesBack)
   const auto animation = testing::glbJson(out / "morph.glb");
   ASSERT_EQ(animation["nodes"].size(), size_t(frames));
   for (int k = 0; k < frames; ++k)
-    EXPECT_EQ(animation["nodes"][size_t(k)].contains("mesh"),
-              std::find(empty.begin(), empty.end(), k) == empty.end())
+    EXPECT_EQ(animation["nodes"][size_t(k)].contains("mesh"), std::find(empty.begin(), empty.end(), k) == empty.end())
         << "node " << k;
 }
 
 TEST_F(MorphThroughNothing, EmptyFramesInOtherFormatsAreFilesWithNoTriangles)
 {
   const fs::path out = folder / "obj";
-  testing::CliResult r = testing::runLbmshape({"morph", left, right, out.string(), "--align", "none", "--res", "32",
-                                               "--frames", "9", "--steps", "48", "--cs", "0.2", "--format", "obj",
-                                               "--no-animation", "--json"});
+  testing::CliResult r =
+      testing::runLbmshape({"morph", left, right, out.string(), "--align", "none", "--res", "32", "--frames", "9",
+                            "--steps", "48", "--cs", "0.2", "--format", "obj", "--no-animation", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto empty = nlohmann::json::parse(r.out)["empty_frames"].get<std::vector<int>>();
   ASSERT_FALSE(empty.empty());
@@ -93,8 +92,8 @@ TEST_F(MorphThroughNothing, AMorphThatEndsWithNothingFails)
 {
   // Six steps at Cs = 0.2 end half way, where the blend has no inside.
   const fs::path out = folder / "frames";
-  testing::CliResult r = testing::runLbmshape(
-      {"morph", left, right, out.string(), "--align", "none", "--res", "24", "--frames", "5", "--steps", "6", "--cs", "0.2"});
+  testing::CliResult r = testing::runLbmshape({"morph", left, right, out.string(), "--align", "none", "--res", "24",
+                                               "--frames", "5", "--steps", "6", "--cs", "0.2"});
   EXPECT_EQ(r.exitCode, 5) << r.err;
   ASSERT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("frame 4, the last, has no surface"), std::string::npos) << r.err;

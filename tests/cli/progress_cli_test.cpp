@@ -48,14 +48,16 @@ TEST_F(DenoiseProgress, StagesShowHowFarTheyAreOnStderrOnly)
 {
   setenv("LBMSHAPE_PROGRESS_MS", "0", 1);  // every stage is "long"
   const fs::path output = folder / "out.glb";
-  testing::CliResult r = testing::runLbmshape({"denoise", input, output.string(), "--res", "48", "--steps", "200", "--json"});
+  testing::CliResult r =
+      testing::runLbmshape({"denoise", input, output.string(), "--res", "48", "--steps", "200", "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(hasLineStartingWith(r.err, "lbmshape: lbm ")) << r.err;
   EXPECT_TRUE(hasLineStartingWith(r.err, "% (steps)")) << r.err;
   EXPECT_TRUE(hasLineStartingWith(r.err, "lbmshape: sdf ")) << r.err;
   EXPECT_NO_THROW(nlohmann::json::parse(r.out)) << "stdout holds only the JSON result: " << r.out;
 
-  testing::CliResult quiet = testing::runLbmshape({"-q", "denoise", input, output.string(), "--res", "48", "--steps", "50"});
+  testing::CliResult quiet =
+      testing::runLbmshape({"-q", "denoise", input, output.string(), "--res", "48", "--steps", "50"});
   ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
   EXPECT_EQ(quiet.err, "");
 }
@@ -63,8 +65,8 @@ TEST_F(DenoiseProgress, StagesShowHowFarTheyAreOnStderrOnly)
 TEST_F(DenoiseProgress, CtrlCStopsALongRunAndWritesNothing)
 {
   const fs::path output = folder / "out.glb";
-  std::vector<std::string> args = {testing::lbmshapeBinary(), "denoise", input, output.string(), "--res", "64",
-                                   "--steps", "1000000"};
+  std::vector<std::string> args = {
+      testing::lbmshapeBinary(), "denoise", input, output.string(), "--res", "64", "--steps", "1000000"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

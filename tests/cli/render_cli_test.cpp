@@ -41,8 +41,8 @@ TEST(RenderCli, DrawsAMeshIntoAPngOfTheAskedSize)
 {
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "sphere.obj");
-  const testing::CliResult r =
-      testing::runLbmshape({"render", (folder / "sphere.obj").string(), (folder / "sphere.png").string(), "--size", "320x200"});
+  const testing::CliResult r = testing::runLbmshape(
+      {"render", (folder / "sphere.obj").string(), (folder / "sphere.png").string(), "--size", "320x200"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(pngSize(folder / "sphere.png"), std::make_pair(320, 200));
   // A unit sphere fills 92 % of the 200-pixel height: pi (0.46 * 200)^2 of 64000 pixels.
@@ -146,21 +146,21 @@ TEST_P(RenderBadArguments, ExitCodeOneLineNoPicture)
 
 INSTANTIATE_TEST_SUITE_P(
     Table, RenderBadArguments,
-    ::testing::Values(BadRender{"size_zero", {"--size", "0x0"}, 2, "--size"},
-                      BadRender{"size_huge", {"--size", "100000x100000"}, 2, "--size"},
-                      BadRender{"size_too_many_pixels", {"--size", "8192x8192"}, 2, "--size"},
-                      BadRender{"size_not_a_size", {"--size", "big"}, 2, "--size"},
-                      BadRender{"unknown_view", {"--view", "sideways"}, 2, "--view"},
-                      BadRender{"elevation_past_the_pole", {"--view", "0,100"}, 2, "--view"},
-                      BadRender{"unknown_colour", {"--color", "rainbow"}, 2, "--color"},
-                      BadRender{"count_zero", {"--count", "0"}, 2, "--count"},
-                      BadRender{"negative_columns", {"--columns", "-1"}, 2, "--columns"},
-                      BadRender{"cells_too_small", {"--size", "16x16", "--labels"}, 2, "--size", false},
-                      BadRender{"not_a_png", {}, 2, ".png", false, "out.jpg"},
-                      BadRender{"mesh_without_triangles", {}, 3, "mesh.obj", true},
-                      BadRender{"missing_reference", {"--color", "distance:/nonexistent/ref.obj"}, 3, "ref.obj"},
-                      BadRender{"unwritable_picture", {}, 4, "/nonexistent-folder/out.png", false,
-                                "/nonexistent-folder/out.png"}),
+    ::testing::Values(
+        BadRender{"size_zero", {"--size", "0x0"}, 2, "--size"},
+        BadRender{"size_huge", {"--size", "100000x100000"}, 2, "--size"},
+        BadRender{"size_too_many_pixels", {"--size", "8192x8192"}, 2, "--size"},
+        BadRender{"size_not_a_size", {"--size", "big"}, 2, "--size"},
+        BadRender{"unknown_view", {"--view", "sideways"}, 2, "--view"},
+        BadRender{"elevation_past_the_pole", {"--view", "0,100"}, 2, "--view"},
+        BadRender{"unknown_colour", {"--color", "rainbow"}, 2, "--color"},
+        BadRender{"count_zero", {"--count", "0"}, 2, "--count"},
+        BadRender{"negative_columns", {"--columns", "-1"}, 2, "--columns"},
+        BadRender{"cells_too_small", {"--size", "16x16", "--labels"}, 2, "--size", false},
+        BadRender{"not_a_png", {}, 2, ".png", false, "out.jpg"},
+        BadRender{"mesh_without_triangles", {}, 3, "mesh.obj", true},
+        BadRender{"missing_reference", {"--color", "distance:/nonexistent/ref.obj"}, 3, "ref.obj"},
+        BadRender{"unwritable_picture", {}, 4, "/nonexistent-folder/out.png", false, "/nonexistent-folder/out.png"}),
     [](const ::testing::TestParamInfo<BadRender>& info) { return std::string(info.param.name); });
 
 TEST(RenderCli, APictureNeedsAMeshAndAPicture)
@@ -173,8 +173,9 @@ TEST(Preview, DenoiseDrawsTheInputAndTheResultSideBySide)
 {
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "in.obj");
-  const testing::CliResult r = testing::runLbmshape({"denoise", (folder / "in.obj").string(), (folder / "out.glb").string(),
-                                                     "--res", "32", "--preview", (folder / "cmp.png").string(), "--json"});
+  const testing::CliResult r =
+      testing::runLbmshape({"denoise", (folder / "in.obj").string(), (folder / "out.glb").string(), "--res", "32",
+                            "--preview", (folder / "cmp.png").string(), "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto [w, h] = pngSize(folder / "cmp.png");
   EXPECT_EQ(w, 1024);
@@ -189,8 +190,8 @@ TEST(Preview, ABadPreviewPathIsRefusedBeforeAnyWork)
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(2), folder / "in.obj");
   const auto before = folder.entries();
-  for (const auto& [preview, code] : {std::pair{(folder / "cmp.jpg").string(), 2},
-                                      std::pair{std::string("/nonexistent-folder/cmp.png"), 4}}) {
+  for (const auto& [preview, code] :
+       {std::pair{(folder / "cmp.jpg").string(), 2}, std::pair{std::string("/nonexistent-folder/cmp.png"), 4}}) {
     const testing::CliResult r = testing::runLbmshape(
         {"denoise", (folder / "in.obj").string(), (folder / "out.glb").string(), "--res", "24", "--preview", preview});
     EXPECT_EQ(r.exitCode, code) << r.err;
@@ -204,10 +205,9 @@ TEST(Preview, MorphDrawsAContactSheetIntoItsOwnFolder)
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3), folder / "sphere.obj");
   writeMesh(testing::torusMesh(1.0, 0.4, 48, 24), folder / "torus.obj");
-  const testing::CliResult r =
-      testing::runLbmshape({"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(),
-                            (folder / "frames").string(), "--res", "24", "--frames", "9", "--no-animation", "--preview",
-                            (folder / "frames" / "sheet.png").string()});
+  const testing::CliResult r = testing::runLbmshape(
+      {"morph", (folder / "sphere.obj").string(), (folder / "torus.obj").string(), (folder / "frames").string(),
+       "--res", "24", "--frames", "9", "--no-animation", "--preview", (folder / "frames" / "sheet.png").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   // Source, six frames, target: two rows of four cells of 384 pixels.
   const auto [w, h] = pngSize(folder / "frames" / "sheet.png");

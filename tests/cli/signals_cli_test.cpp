@@ -59,10 +59,18 @@ TEST_P(StopSignal, LeavesOnlyCompleteFilesAndSaysWhichSignal)
   for (int attempt = 0; attempt < 20; ++attempt) {
     const fs::path out = folder / ("out" + std::to_string(attempt));
     std::vector<std::string> args =
-        c.morph ? std::vector<std::string>{"morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
-                                           out.string(), "--res", "40", "--frames", "60", "--format", "obj"}
-                : std::vector<std::string>{"denoise", (folder / "a.obj").string(), (out.string() + ".glb"),
-                                           "--res", "64", "--steps", "60"};
+        c.morph ? std::vector<std::string>{"morph",
+                                           (folder / "a.obj").string(),
+                                           (folder / "b.obj").string(),
+                                           out.string(),
+                                           "--res",
+                                           "40",
+                                           "--frames",
+                                           "60",
+                                           "--format",
+                                           "obj"}
+                : std::vector<std::string>{
+                      "denoise", (folder / "a.obj").string(), (out.string() + ".glb"), "--res", "64", "--steps", "60"};
     const pid_t pid = testing::spawnLbmshape(args);
     ASSERT_GT(pid, 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(delayMs(random)));
@@ -95,10 +103,10 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
   const fs::path out = folder / "frames", log = folder / "stderr.txt";
-  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
-                                            out.string(), "--res", "48", "--frames", "400", "--format", "obj",
-                                            "--no-animation"},
-                                           log.string());
+  const pid_t pid =
+      testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(),
+                              "--res", "48", "--frames", "400", "--format", "obj", "--no-animation"},
+                             log.string());
   ASSERT_GT(pid, 0);
   testing::waitForFile(out / "frame_0004.obj", std::chrono::seconds(60));
   kill(pid, SIGTERM);
@@ -124,10 +132,10 @@ TEST(LastResort, AnAbortInTheMiddleOfAMorphLeavesNoPartialFile)
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
   const fs::path out = folder / "new" / "frames", log = folder / "stderr.txt";
-  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
-                                            out.string(), "--res", "48", "--frames", "400", "--format", "obj",
-                                            "--no-animation"},
-                                           log.string());
+  const pid_t pid =
+      testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(),
+                              "--res", "48", "--frames", "400", "--format", "obj", "--no-animation"},
+                             log.string());
   ASSERT_GT(pid, 0);
   testing::waitForFile(out / "frame_0002.obj", std::chrono::seconds(60));
   kill(pid, SIGABRT);
@@ -209,9 +217,9 @@ TEST(StopSignal, AnIgnoredHangUpStaysIgnored)
   struct sigaction ignore = {}, previous = {};
   ignore.sa_handler = SIG_IGN;
   sigaction(SIGHUP, &ignore, &previous);  // inherited by the child, as nohup does
-  const pid_t pid = testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
-                                            out.string(), "--res", "32", "--frames", "12", "--format", "obj",
-                                            "--no-animation"});
+  const pid_t pid =
+      testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(),
+                              "--res", "32", "--frames", "12", "--format", "obj", "--no-animation"});
   sigaction(SIGHUP, &previous, nullptr);
   ASSERT_GT(pid, 0);
   testing::waitForFile(out / "frame_0001.obj", std::chrono::seconds(60));

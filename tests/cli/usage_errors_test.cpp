@@ -34,7 +34,8 @@ TEST_P(UsageErrors, ExitTwoWithOneLine)
 // device limit alone is tested in lattice_memory_test.cpp.
 TEST(DeviceLimits, AGridLargerThanTheDeviceIsRefusedWithExitFive)
 {
-  for (const auto& [size, mentions] : {std::pair{"2000,2000,2000", "cells"}, std::pair{"400,400,400", "does not fit"}}) {
+  for (const auto& [size, mentions] :
+       {std::pair{"2000,2000,2000", "cells"}, std::pair{"400,400,400", "does not fit"}}) {
     const testing::CliResult r = testing::runLbmshape({"bench", "--size", size});
     EXPECT_EQ(r.exitCode, 5) << size << ": " << r.err;
     const auto lines = testing::nonEmptyLines(r.err);
@@ -46,27 +47,37 @@ TEST(DeviceLimits, AGridLargerThanTheDeviceIsRefusedWithExitFive)
 
 INSTANTIATE_TEST_SUITE_P(
     Bench, UsageErrors,
-    ::testing::Values(UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
-                      UsageCase{"negative_gamma", {"bench", "--gamma", "-0.1", "--size", "8,8,8"}, "--gamma"},
-                      UsageCase{"zero_size", {"bench", "--size", "0,8,8"}, "grid size"},
-                      UsageCase{"negative_size", {"bench", "--size", "8,-3,8"}, "grid size"},
-                      UsageCase{"two_sizes", {"bench", "--size", "8,8"}, "--size"},
-                      UsageCase{"tiny_gamma", {"bench", "--gamma", "1e-9", "--size", "8,8,8"}, "too small"},
-                      UsageCase{"paper_and_size", {"bench", "--paper", "--size", "8,8,8"}, "--paper"},
-                      UsageCase{"no_steps", {"bench", "--steps", "0", "--size", "8,8,8"}, "--steps"},
-                      UsageCase{"gamma_above_one", {"bench", "--gamma", "1.5", "--size", "8,8,8"}, "above 1"},
-                      UsageCase{"denoise_gamma_above_one", {"denoise", "in.obj", "out.glb", "--gamma", "1e9"}, "--gamma = 1e+09 is above 1"},
-                      UsageCase{"denoise_too_many_steps", {"denoise", "in.obj", "out.glb", "--steps", "1000001"}, "--steps must be from 0 to 1000000"},
-                      UsageCase{"compare_too_many_samples", {"compare", "a.obj", "b.obj", "--samples", "4000000000"}, "--samples must be from 1 to 10000000"},
-                      UsageCase{"half_width_without_band", {"bench", "--half-width", "4", "--size", "8,8,8"}, "--band"},
-                      UsageCase{"band_half_width_zero", {"bench", "--band", "--half-width", "0.5", "--size", "16,16,16"}, "--half-width"},
-                      UsageCase{"band_half_width_huge", {"bench", "--band", "--half-width", "65", "--size", "16,16,16"}, "--half-width"},
-                      UsageCase{"band_and_paper", {"bench", "--band", "--paper"}, "--paper"},
-                      UsageCase{"unknown_device", {"--device", "no-such-gpu", "info"}, "no-such-gpu"},
-                      UsageCase{"unknown_option", {"bench", "--frobnicate"}, "frobnicate"},
-                      UsageCase{"no_command", {}, "subcommand"},
-                      UsageCase{"unknown_command", {"frobnicate", "a.obj"}, "unknown command 'frobnicate'; the commands are denoise, morph"},
-                      UsageCase{"unknown_command_after_options", {"-v", "--device", "0", "smooth"}, "unknown command 'smooth'"}),
+    ::testing::Values(
+        UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
+        UsageCase{"negative_gamma", {"bench", "--gamma", "-0.1", "--size", "8,8,8"}, "--gamma"},
+        UsageCase{"zero_size", {"bench", "--size", "0,8,8"}, "grid size"},
+        UsageCase{"negative_size", {"bench", "--size", "8,-3,8"}, "grid size"},
+        UsageCase{"two_sizes", {"bench", "--size", "8,8"}, "--size"},
+        UsageCase{"tiny_gamma", {"bench", "--gamma", "1e-9", "--size", "8,8,8"}, "too small"},
+        UsageCase{"paper_and_size", {"bench", "--paper", "--size", "8,8,8"}, "--paper"},
+        UsageCase{"no_steps", {"bench", "--steps", "0", "--size", "8,8,8"}, "--steps"},
+        UsageCase{"gamma_above_one", {"bench", "--gamma", "1.5", "--size", "8,8,8"}, "above 1"},
+        UsageCase{"denoise_gamma_above_one",
+                  {"denoise", "in.obj", "out.glb", "--gamma", "1e9"},
+                  "--gamma = 1e+09 is above 1"},
+        UsageCase{"denoise_too_many_steps",
+                  {"denoise", "in.obj", "out.glb", "--steps", "1000001"},
+                  "--steps must be from 0 to 1000000"},
+        UsageCase{"compare_too_many_samples",
+                  {"compare", "a.obj", "b.obj", "--samples", "4000000000"},
+                  "--samples must be from 1 to 10000000"},
+        UsageCase{"half_width_without_band", {"bench", "--half-width", "4", "--size", "8,8,8"}, "--band"},
+        UsageCase{
+            "band_half_width_zero", {"bench", "--band", "--half-width", "0.5", "--size", "16,16,16"}, "--half-width"},
+        UsageCase{
+            "band_half_width_huge", {"bench", "--band", "--half-width", "65", "--size", "16,16,16"}, "--half-width"},
+        UsageCase{"band_and_paper", {"bench", "--band", "--paper"}, "--paper"},
+        UsageCase{"unknown_device", {"--device", "no-such-gpu", "info"}, "no-such-gpu"},
+        UsageCase{"unknown_option", {"bench", "--frobnicate"}, "frobnicate"}, UsageCase{"no_command", {}, "subcommand"},
+        UsageCase{"unknown_command",
+                  {"frobnicate", "a.obj"},
+                  "unknown command 'frobnicate'; the commands are denoise, morph"},
+        UsageCase{"unknown_command_after_options", {"-v", "--device", "0", "smooth"}, "unknown command 'smooth'"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CommandLine, HelpAndVersionSucceed)

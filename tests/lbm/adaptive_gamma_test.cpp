@@ -129,8 +129,10 @@ template <class Solver, class Field>
 Field hostLoop(Solver& solver, const Field& start, const Field& uniformGamma, int steps, double halfWidth)
 {
   solver.setGammaPerCell(uniformGamma);
-  if constexpr (std::is_same_v<Field, Volume>) solver.initialize(start);
-  else solver.initialize(start, halfWidth);
+  if constexpr (std::is_same_v<Field, Volume>)
+    solver.initialize(start);
+  else
+    solver.initialize(start, halfWidth);
   Field before = solver.field(), gamma = uniformGamma;
   for (int s = 0; s < steps; ++s) {
     solver.step(1);
@@ -146,8 +148,10 @@ template <class Solver, class Field>
 Field insideTheSolver(Solver& solver, const Field& start, int steps, double halfWidth)
 {
   solver.setPaperRule(gamma0);
-  if constexpr (std::is_same_v<Field, Volume>) solver.initialize(start);
-  else solver.initialize(start, halfWidth);
+  if constexpr (std::is_same_v<Field, Volume>)
+    solver.initialize(start);
+  else
+    solver.initialize(start, halfWidth);
   solver.step(steps);
   return solver.field();
 }

@@ -236,14 +236,15 @@ class BandVulkanMatchesReference : public testing::GpuTest, public ::testing::Wi
 
 TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
 {
-  const int variant = GetParam();  // 0 plain, 1 source, 2 gamma per cell, 3 both, 4 the paper's rule
+  const int variant = GetParam();    // 0 plain, 1 source, 2 gamma per cell, 3 both, 4 the paper's rule
   const Extent3 extent{37, 29, 45};  // sides that are no multiple of 8; the sphere reaches the faces
   const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
   auto bricks = testing::bricksNear(field, 8.0);
   BandField start = testing::bandOf(field, bricks);
   const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 11);
   for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
-  auto gpu = testing::makeBandSolver(Backend::Vulkan, bricks), cpu = testing::makeBandSolver(Backend::Reference, bricks);
+  auto gpu = testing::makeBandSolver(Backend::Vulkan, bricks),
+       cpu = testing::makeBandSolver(Backend::Reference, bricks);
   for (BandSolver* s : {gpu.get(), cpu.get()}) {
     s->setUniformGamma(0.15);
     if (variant == 4) s->setPaperRule(0.15);

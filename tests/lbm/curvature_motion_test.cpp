@@ -42,7 +42,8 @@ double farFieldRadius(double t) { return 0.5 * (R0 + std::sqrt(R0 * R0 - 8.0 * g
 // linearly between the last cell inside and the first outside.
 std::array<double, 6> axisRadii(const Volume& X)
 {
-  const std::array<std::array<int, 3>, 6> rays = {{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+  const std::array<std::array<int, 3>, 6> rays = {
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
   std::array<double, 6> radii{};
   for (size_t k = 0; k < rays.size(); ++k) {
     auto value = [&](int d) {

@@ -69,19 +69,17 @@ TEST_P(DiffusionCoefficient, VarianceGrowsByTwoGammaT)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Gammas, DiffusionCoefficient,
-                         ::testing::Values(DiffusionCase{testing::Backend::Vulkan, 0.05},
-                                           DiffusionCase{testing::Backend::Vulkan, 0.2},
-                                           DiffusionCase{testing::Backend::Vulkan, 0.5},
-                                           DiffusionCase{testing::Backend::Reference, 0.05},
-                                           DiffusionCase{testing::Backend::Reference, 0.2},
-                                           DiffusionCase{testing::Backend::Reference, 0.5}),
-                         [](const auto& info) {
-                           // gamma_0_05, gamma_0_20, gamma_0_50
-                           const long hundredths = std::lround(info.param.gamma * 100);
-                           return std::string(info.param.backend == testing::Backend::Vulkan ? "vulkan" : "reference") +
-                                  "_gamma_0_" + (hundredths < 10 ? "0" : "") + std::to_string(hundredths);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Gammas, DiffusionCoefficient,
+    ::testing::Values(DiffusionCase{testing::Backend::Vulkan, 0.05}, DiffusionCase{testing::Backend::Vulkan, 0.2},
+                      DiffusionCase{testing::Backend::Vulkan, 0.5}, DiffusionCase{testing::Backend::Reference, 0.05},
+                      DiffusionCase{testing::Backend::Reference, 0.2}, DiffusionCase{testing::Backend::Reference, 0.5}),
+    [](const auto& info) {
+      // gamma_0_05, gamma_0_20, gamma_0_50
+      const long hundredths = std::lround(info.param.gamma * 100);
+      return std::string(info.param.backend == testing::Backend::Vulkan ? "vulkan" : "reference") + "_gamma_0_" +
+             (hundredths < 10 ? "0" : "") + std::to_string(hundredths);
+    });
 
 // From step 0 the growth is not 2 gamma n: every run starts in equilibrium,
 // the first step spreads by 1/3 whatever tau is, and the excess decays like
@@ -126,8 +124,8 @@ INSTANTIATE_TEST_SUITE_P(GammasAndSteps, StartUpTransient,
                                            StartUpCase{testing::Backend::Vulkan, 1.0, 3}),
                          [](const auto& info) {
                            return std::string(info.param.backend == testing::Backend::Vulkan ? "vulkan" : "reference") +
-                                  "_gamma_" + std::to_string(int(std::lround(info.param.gamma * 100))) + "_hundredths_" +
-                                  std::to_string(info.param.steps) + "_steps";
+                                  "_gamma_" + std::to_string(int(std::lround(info.param.gamma * 100))) +
+                                  "_hundredths_" + std::to_string(info.param.steps) + "_steps";
                          });
 
 TEST(StartUpError, IsSmallAtTheDefaultsAndLargeForFewStepsOfALargeGamma)

@@ -25,7 +25,7 @@ std::string fitError(const Extent3& extent, const gpu::DeviceDescription& device
 TEST(LatticeLayout, SizesFollowTheRowGroups)
 {
   const LatticeLayout l = latticeLayout({33, 40, 27});
-  EXPECT_EQ(l.row, 36);                                   // padded to whole blocks of four cells
+  EXPECT_EQ(l.row, 36);                                     // padded to whole blocks of four cells
   EXPECT_EQ(l.blocks, (36u * 40 * 27 / 4 + 15) / 16 * 16);  // and to a multiple of 16 blocks
   EXPECT_EQ(l.copyBytes, l.blocks * 19 * 16);
   uint64_t next = 0;

@@ -237,7 +237,8 @@ TEST(BadInputMessages, AStrayVertexFarFromTheRestIsNamed)
 
   TriangleMesh twoParts = testing::icosphere(3), far = testing::icosphere(3);
   for (const auto& p : far.positions) twoParts.positions.push_back(p + glm::dvec3(300.0, 0.0, 0.0));
-  for (const auto& t : far.triangles) twoParts.triangles.push_back(t + uint32_t(testing::icosphere(3).positions.size()));
+  for (const auto& t : far.triangles)
+    twoParts.triangles.push_back(t + uint32_t(testing::icosphere(3).positions.size()));
   EXPECT_EQ(readMesh(objFile(folder.path(), textOf(twoParts))).triangleCount(), 2 * far.triangleCount());
 }
 

@@ -35,11 +35,13 @@ std::vector<unsigned char> decodeView(const meshio::GlbContent& glb, int view)
 {
   const nlohmann::json& ext = glb.json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"];
   EXPECT_EQ(ext["buffer"], 0);
-  const size_t count = ext["count"], stride = ext["byteStride"], offset = ext.value("byteOffset", 0), length = ext["byteLength"];
+  const size_t count = ext["count"], stride = ext["byteStride"], offset = ext.value("byteOffset", 0),
+               length = ext["byteLength"];
   std::vector<unsigned char> out(count * stride);
   const unsigned char* encoded = glb.binary.data() + offset;
-  const int status = ext["mode"] == "TRIANGLES" ? meshopt_decodeIndexBuffer(out.data(), count, stride, encoded, length)
-                                                : meshopt_decodeVertexBuffer(out.data(), count, stride, encoded, length);
+  const int status = ext["mode"] == "TRIANGLES"
+                         ? meshopt_decodeIndexBuffer(out.data(), count, stride, encoded, length)
+                         : meshopt_decodeVertexBuffer(out.data(), count, stride, encoded, length);
   EXPECT_EQ(status, 0);
   return out;
 }
@@ -165,7 +167,8 @@ TEST(CompressedGltf, AnAnimationKeepsItsNodesAndDecodesEveryFrame)
   EXPECT_FALSE(glb.json["nodes"][roots[1].get<int>()].contains("mesh")) << "an empty frame is a node without a mesh";
   EXPECT_FALSE(glb.json["nodes"][roots[1].get<int>()].contains("children"));
   for (const auto& channel : glb.json["animations"][0]["channels"])
-    EXPECT_NE(std::find(roots.begin(), roots.end(), channel["target"]["node"]), roots.end()) << "animations scale the frames' own nodes";
+    EXPECT_NE(std::find(roots.begin(), roots.end(), channel["target"]["node"]), roots.end())
+        << "animations scale the frames' own nodes";
   expectSameMesh(frames[2], decodeMesh(glb, roots[2]), 4.0 / 65535.0);
 }
 
@@ -184,9 +187,11 @@ TEST(CompressedGltf, OnlyGlbFilesAreCompressed)
 {
   testing::ScratchFolder folder;
   for (const char* name : {"m.gltf", "m.obj", "m.ply"})
-    EXPECT_THROW(writeMesh(testing::icosphere(1), folder / name, EmptyMesh::Refused, GltfCompression::Meshopt), UsageError)
+    EXPECT_THROW(writeMesh(testing::icosphere(1), folder / name, EmptyMesh::Refused, GltfCompression::Meshopt),
+                 UsageError)
         << name;
-  EXPECT_THROW(writeGltfAnimation({testing::icosphere(1)}, 24.0, folder / "m.gltf", GltfCompression::Meshopt), UsageError);
+  EXPECT_THROW(writeGltfAnimation({testing::icosphere(1)}, 24.0, folder / "m.gltf", GltfCompression::Meshopt),
+               UsageError);
   EXPECT_TRUE(folder.entries().empty());
 }
 
@@ -248,27 +253,33 @@ TEST_P(CompressedGltfRefused, WithOneLineNamingTheProblem)
   }
 }
 
-nlohmann::json& meshopt(nlohmann::json& json, int view) { return json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
+nlohmann::json& meshopt(nlohmann::json& json, int view)
+{
+  return json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"];
+}
 
 INSTANTIATE_TEST_SUITE_P(
     Table, CompressedGltfRefused,
     ::testing::Values(
-        BadCompression{"corrupt_data",
-                       [](nlohmann::json&, std::vector<unsigned char>& bin) { std::fill(bin.begin(), bin.begin() + 64, 0xff); },
-                       "malformed"},
+        BadCompression{
+            "corrupt_data",
+            [](nlohmann::json&, std::vector<unsigned char>& bin) { std::fill(bin.begin(), bin.begin() + 64, 0xff); },
+            "malformed"},
         BadCompression{"count_beyond_budget", [](nlohmann::json& j, auto&) { meshopt(j, 0)["count"] = 1u << 31; },
                        "more bytes than"},
         BadCompression{"past_the_chunk", [](nlohmann::json& j, auto&) { meshopt(j, 1)["byteLength"] = 1u << 30; },
                        "past the binary chunk"},
         BadCompression{"other_buffer", [](nlohmann::json& j, auto&) { meshopt(j, 0)["buffer"] = 1; }, "other than"},
-        BadCompression{"unknown_mode", [](nlohmann::json& j, auto&) { meshopt(j, 0)["mode"] = "SPIRAL"; }, "unknown mode"},
+        BadCompression{"unknown_mode", [](nlohmann::json& j, auto&) { meshopt(j, 0)["mode"] = "SPIRAL"; },
+                       "unknown mode"},
         BadCompression{"odd_stride", [](nlohmann::json& j, auto&) { meshopt(j, 0)["byteStride"] = 6; }, "byteStride"},
         BadCompression{"negative_count", [](nlohmann::json& j, auto&) { meshopt(j, 0)["count"] = -3; }, "count"},
         BadCompression{"no_mode", [](nlohmann::json& j, auto&) { meshopt(j, 2).erase("mode"); }, "no mode"},
         BadCompression{"filtered_indices", [](nlohmann::json& j, auto&) { meshopt(j, 2)["filter"] = "OCTAHEDRAL"; },
                        "only attributes"},
         BadCompression{"unknown_filter", [](nlohmann::json& j, auto&) { meshopt(j, 1)["filter"] = "FANCY"; }, "FANCY"},
-        BadCompression{"not_whole_triangles", [](nlohmann::json& j, auto&) { meshopt(j, 2)["count"] = 7; }, "whole triangles"},
+        BadCompression{"not_whole_triangles", [](nlohmann::json& j, auto&) { meshopt(j, 2)["count"] = 7; },
+                       "whole triangles"},
         BadCompression{"filter_not_a_name", [](nlohmann::json& j, auto&) { meshopt(j, 1)["filter"] = 3; }, "filter"},
         BadCompression{"buffer_not_an_object", [](nlohmann::json& j, auto&) { j["buffers"][0] = 5; }, "buffer"}),
     [](const ::testing::TestParamInfo<BadCompression>& info) { return std::string(info.param.name); });

@@ -59,7 +59,8 @@ int HandMadeGltf::addIndices16(const std::vector<uint16_t>& indices)
 int HandMadeGltf::addColours(const std::vector<glm::vec3>& colours)
 {
   const int view = addView(colours.data(), colours.size() * sizeof(glm::vec3), 34962);
-  json["accessors"].push_back({{"bufferView", view}, {"componentType", 5126}, {"count", colours.size()}, {"type", "VEC3"}});
+  json["accessors"].push_back(
+      {{"bufferView", view}, {"componentType", 5126}, {"count", colours.size()}, {"type", "VEC3"}});
   return int(json["accessors"].size() - 1);
 }
 

@@ -17,7 +17,6 @@ double signedVolume(const TriangleMesh& mesh)
   return volume;
 }
 
-
 void writeText(const std::filesystem::path& path, const std::string& text)
 {
   std::ofstream(path, std::ios::binary) << text;

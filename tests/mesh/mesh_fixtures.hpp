@@ -13,7 +13,6 @@
 
 namespace lbmshape::testing::meshio {
 
-
 // sum over triangles of det(a, b, c) / 6: the enclosed volume, positive when
 // the triangles face outwards.
 double signedVolume(const TriangleMesh& mesh);

@@ -17,7 +17,6 @@ namespace {
 
 namespace meshio = testing::meshio;
 
-
 void expectColour(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-4f)
 {
   EXPECT_NEAR(actual.r, expected.r, tolerance);
@@ -25,7 +24,10 @@ void expectColour(const glm::vec3& actual, const glm::vec3& expected, float tole
   EXPECT_NEAR(actual.b, expected.b, tolerance);
 }
 
-float srgb(float linear) { return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f; }
+float srgb(float linear)
+{
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
 
 TEST(VertexColours, GltfColour0IsReadAndShownInSrgb)
 {
@@ -109,7 +111,8 @@ TEST(VertexColours, PlyRedGreenBlueInBytesOrFloats)
 {
   testing::ScratchFolder folder;
   std::ofstream(folder / "bytes.ply") << plyTetrahedron(
-      "property uchar red\nproperty uchar green\nproperty uchar blue\n", {"255 0 0", "0 51 0", "0 0 255", "255 255 255"});
+      "property uchar red\nproperty uchar green\nproperty uchar blue\n",
+      {"255 0 0", "0 51 0", "0 0 255", "255 255 255"});
   const TriangleMesh bytes = readMesh(folder / "bytes.ply");
   ASSERT_EQ(bytes.colours.size(), 4u);
   expectColour(bytes.colours[0], {1, 0, 0});

@@ -64,10 +64,12 @@ inline std::string bandCaseName(const ::testing::TestParamInfo<BandCase>& info) 
 
 }  // namespace lbmshape::testing
 
-#define LBMSHAPE_BAND_DENOISE_MODES(Suite)                                                                 \
-  INSTANTIATE_TEST_SUITE_P(Modes, Suite,                                                                   \
-                           ::testing::Values(::lbmshape::testing::BandCase{"isotropic", ::lbmshape::Smoothing::Isotropic, 7}, \
-                                             ::lbmshape::testing::BandCase{"isotropic_40_steps", ::lbmshape::Smoothing::Isotropic, 40}, \
-                                             ::lbmshape::testing::BandCase{"preserve_features", ::lbmshape::Smoothing::PreserveFeatures, 7}, \
-                                             ::lbmshape::testing::BandCase{"anisotropic", ::lbmshape::Smoothing::Anisotropic, 7}), \
-                           ::lbmshape::testing::bandCaseName)
+#define LBMSHAPE_BAND_DENOISE_MODES(Suite)                                                                \
+  INSTANTIATE_TEST_SUITE_P(                                                                               \
+      Modes, Suite,                                                                                       \
+      ::testing::Values(                                                                                  \
+          ::lbmshape::testing::BandCase{"isotropic", ::lbmshape::Smoothing::Isotropic, 7},                \
+          ::lbmshape::testing::BandCase{"isotropic_40_steps", ::lbmshape::Smoothing::Isotropic, 40},      \
+          ::lbmshape::testing::BandCase{"preserve_features", ::lbmshape::Smoothing::PreserveFeatures, 7}, \
+          ::lbmshape::testing::BandCase{"anisotropic", ::lbmshape::Smoothing::Anisotropic, 7}),           \
+      ::lbmshape::testing::bandCaseName)

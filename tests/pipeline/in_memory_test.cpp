@@ -90,10 +90,11 @@ TEST(InMemory, TheFirstErrorOfTheSinkStopsTheMorph)
   o.steps = 30;
   int calls = 0;
   try {
-    morphMeshes(testing::icosphere(3), testing::scaled(testing::icosphere(3), 0.7), o, device, [&](int k, const TriangleMesh&) {
-      ++calls;
-      throw OutputError("no room for frame " + std::to_string(k));
-    });
+    morphMeshes(testing::icosphere(3), testing::scaled(testing::icosphere(3), 0.7), o, device,
+                [&](int k, const TriangleMesh&) {
+                  ++calls;
+                  throw OutputError("no room for frame " + std::to_string(k));
+                });
     FAIL() << "no error";
   } catch (const OutputError& e) {
     EXPECT_STREQ(e.what(), "no room for frame 0");

@@ -120,7 +120,8 @@ TEST_F(Morph, FramesDoNotDependOnTheBatchesOfSteps)
   o.frames = 4;
   o.stepsPerFrame = 7;
   o.animation = false;
-  for (const auto& [batch, out] : {std::pair<std::optional<int>, const char*>{1, "one"}, {3, "three"}, {std::nullopt, "adaptive"}}) {
+  for (const auto& [batch, out] :
+       {std::pair<std::optional<int>, const char*>{1, "one"}, {3, "three"}, {std::nullopt, "adaptive"}}) {
     o.stepsPerBatch = batch;
     morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / out, o, device);
   }
@@ -140,8 +141,7 @@ TEST_F(Morph, ConvergedMorphRepeatsItsLastShape)
   MorphOptions o = sphereToTorus();
   o.frames = 6;
   o.stepsPerFrame = 1;
-  const nlohmann::json report =
-      morphFiles(folder / "torus.obj", folder / "torus.obj", folder / "frames", o, device);
+  const nlohmann::json report = morphFiles(folder / "torus.obj", folder / "torus.obj", folder / "frames", o, device);
   ASSERT_FALSE(report["converged_at_step"].is_null());
   EXPECT_EQ(report["converged_at_step"], 1);
   EXPECT_EQ(report["steps"], 1);

@@ -31,7 +31,8 @@ TEST_P(BandDenoiseOfAScan, GivesTheGridsResult)
 }
 
 INSTANTIATE_TEST_SUITE_P(Defaults, BandDenoiseOfAScan,
-                         ::testing::Values(testing::BandCase{"isotropic", Smoothing::Isotropic, 7}), testing::bandCaseName);
+                         ::testing::Values(testing::BandCase{"isotropic", Smoothing::Isotropic, 7}),
+                         testing::bandCaseName);
 
 }  // namespace
 }  // namespace lbmshape

@@ -118,7 +118,8 @@ TEST(Framing, NearerPointsHaveSmallerDepth)
   const std::vector<TriangleMesh> meshes = {testing::box({-1, -1, -1}, {1, 1, 1})};
   Picture p = pictureOf(meshes, 256, 256, false, false);
   const Framing f = frame(p, arrange(p).meshCells[0]);
-  const float nearZ = (f.clipFromCentred * glm::vec4(0, 0, 1, 1)).z, farZ = (f.clipFromCentred * glm::vec4(0, 0, -1, 1)).z;
+  const float nearZ = (f.clipFromCentred * glm::vec4(0, 0, 1, 1)).z,
+              farZ = (f.clipFromCentred * glm::vec4(0, 0, -1, 1)).z;
   EXPECT_LT(nearZ, farZ);
 }
 

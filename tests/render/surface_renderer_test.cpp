@@ -66,7 +66,8 @@ TEST_F(SurfaceRenderer, PixelsAreLitAsTheCpuReferenceLightsTheirNormal)
       // The sphere's normal where the pixel's centre meets it (view space: y up).
       const double u = (x + 0.5 - kSize / 2.0) / kUnitRadiusPixels, v = -(y + 0.5 - kSize / 2.0) / kUnitRadiusPixels;
       if (u * u + v * v > 0.85 * 0.85) continue;
-      const glm::dvec3 expected = render::shade(glm::dvec3(render::plainSurfaceColour()), {u, v, std::sqrt(1 - u * u - v * v)});
+      const glm::dvec3 expected =
+          render::shade(glm::dvec3(render::plainSurfaceColour()), {u, v, std::sqrt(1 - u * u - v * v)});
       const glm::dvec3 drawn = glm::dvec3(image.colour(x, y));
       const double difference = glm::length(drawn - expected) * 255.0;
       worst = std::max(worst, difference), sum += difference, ++n;

@@ -45,7 +45,8 @@ TEST(View, AnyAzimuthAndElevationGiveARightHandedOrthonormalCamera)
 
 TEST(View, AnythingElseIsAUsageErrorNamingTheOption)
 {
-  for (const char* text : {"", "sideways", "30", "30,", ",20", "30,20,10", "a,b", "30,91", "nan,0", "inf,0", "0,-90.5"}) {
+  for (const char* text :
+       {"", "sideways", "30", "30,", ",20", "30,20,10", "a,b", "30,91", "nan,0", "inf,0", "0,-90.5"}) {
     try {
       parseView(text);
       ADD_FAILURE() << "accepted '" << text << "'";

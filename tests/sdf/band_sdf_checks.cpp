@@ -30,7 +30,8 @@ void expectBandHoldsTheGridsField(const TriangleMesh& mesh, int resolution, doub
         }
         const float got = band.at(x, y, z);
         if (i < 0) {
-          ASSERT_EQ(got > 0, expected > 0) << "a brick beyond the band on the wrong side at (" << x << ", " << y << ", " << z << ")";
+          ASSERT_EQ(got > 0, expected > 0)
+              << "a brick beyond the band on the wrong side at (" << x << ", " << y << ", " << z << ")";
           continue;
         }
         if (std::abs(expected) > 1e-3f) {

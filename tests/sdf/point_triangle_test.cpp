@@ -42,7 +42,8 @@ TEST(ClosestPointOnTriangle, MatchesProjectionOracleOnRandomTriangles)
 {
   std::mt19937 rng(1);
   for (int t = 0; t < 200; ++t) {
-    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0), c = testing::sdf::randomPoint(rng, 1.0);
+    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0),
+                     c = testing::sdf::randomPoint(rng, 1.0);
     expectMatchesOracle(a, b, c, rng);
   }
 }
@@ -51,12 +52,12 @@ TEST(ClosestPointOnTriangle, HandlesDegenerateTriangles)
 {
   std::mt19937 rng(2);
   const glm::dvec3 a(0.1, 0.2, 0.3), b(0.7, -0.4, 0.5), c(-0.3, 0.6, -0.2);
-  expectMatchesOracle(a, a, a, rng);                       // a point
-  expectMatchesOracle(a, a, b, rng);                       // a segment, twice
+  expectMatchesOracle(a, a, a, rng);  // a point
+  expectMatchesOracle(a, a, b, rng);  // a segment, twice
   expectMatchesOracle(a, b, a, rng);
-  expectMatchesOracle(a, b, 0.5 * (a + b), rng);           // collinear, middle vertex last
-  expectMatchesOracle(a, 0.25 * a + 0.75 * b, b, rng);     // collinear, in order
-  expectMatchesOracle(a, b, b + 1e-9 * (c - a), rng, 1e-8);  // a needle
+  expectMatchesOracle(a, b, 0.5 * (a + b), rng);                         // collinear, middle vertex last
+  expectMatchesOracle(a, 0.25 * a + 0.75 * b, b, rng);                   // collinear, in order
+  expectMatchesOracle(a, b, b + 1e-9 * (c - a), rng, 1e-8);              // a needle
   expectMatchesOracle(a, b, 0.5 * (a + b) + 1e-9 * (c - a), rng, 1e-8);  // a sliver
 }
 
@@ -91,7 +92,8 @@ TEST(SolidAngle, MatchesSphericalExcessOracle)
 {
   std::mt19937 rng(4);
   for (int k = 0; k < 500; ++k) {
-    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0), c = testing::sdf::randomPoint(rng, 1.0);
+    const glm::dvec3 a = testing::sdf::randomPoint(rng, 1.0), b = testing::sdf::randomPoint(rng, 1.0),
+                     c = testing::sdf::randomPoint(rng, 1.0);
     const glm::dvec3 p = testing::sdf::randomPoint(rng, 1.0);
     EXPECT_NEAR(solidAngle(p, a, b, c) / (4.0 * std::numbers::pi),
                 testing::sdf::bruteForceWindingNumber(single(a, b, c), p), 1e-9);

@@ -76,7 +76,8 @@ TEST(SharedMeshSignedDistance, ScanWithHolesHasTheBruteForceWindingNumbersSign)
     // Half the cells, as a checkerboard, so that every part of the grid is
     // still compared: the brute force costs as much as the rest of CI's shared tests.
     if ((i % e.nx + i / e.nx % e.ny + i / e.nx / e.ny) % 2 != 0) continue;
-    const double w = bvh.exactWindingNumber(frame.cellCentre(int(i % e.nx), int(i / e.nx % e.ny), int(i / e.nx / e.ny)));
+    const double w =
+        bvh.exactWindingNumber(frame.cellCentre(int(i % e.nx), int(i / e.nx % e.ny), int(i / e.nx / e.ny)));
     // Within the fast evaluation's accuracy of 1/2 either sign is right.
     if (std::abs(w - 0.5) < 1e-3) {
       ++undecided;
@@ -90,7 +91,8 @@ TEST(SharedMeshSignedDistance, ScanWithHolesHasTheBruteForceWindingNumbersSign)
   print("bunny_scan", frame, stats);
   std::cout << "sign against the brute-force winding number: " << wrong << " wrong of " << compared
             << " cells farther than a voxel (" << inside << " inside, " << undecided
-            << " within 1e-3 of 1/2); closest to 1/2 compared: " << std::defaultfloat << std::setprecision(3) << nearestToHalf << "\n";
+            << " within 1e-3 of 1/2); closest to 1/2 compared: " << std::defaultfloat << std::setprecision(3)
+            << nearestToHalf << "\n";
   EXPECT_GT(stats.openEdges, 100u) << "the holes are there";
   EXPECT_GT(inside, compared / 50) << "the scan has an inside";
   EXPECT_LT(undecided, compared / 1000);
@@ -143,8 +145,8 @@ TEST(SharedMeshSignedDistance, ArmadilloFarFieldAgainstExact)
     signs += (fast[i] > 0) != (exact[i] > 0);
   }
   std::cout << std::setprecision(4) << "armadillo far field: propagated " << fastStats.farFieldMs << " ms, exact "
-            << exactStats.farFieldMs << " ms; worst excess " << worst << " voxel, mean " << sum / fast.size()
-            << ", " << off << " of " << fast.size() << " cells off by more than 1e-3 voxel\n";
+            << exactStats.farFieldMs << " ms; worst excess " << worst << " voxel, mean " << sum / fast.size() << ", "
+            << off << " of " << fast.size() << " cells off by more than 1e-3 voxel\n";
   EXPECT_EQ(signs, 0u);
   EXPECT_LT(worst, 0.25);
 }

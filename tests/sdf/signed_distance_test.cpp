@@ -18,8 +18,8 @@
 namespace lbmshape {
 namespace {
 
-constexpr double kBand = 3.0;       // voxels within which distances must be exact
-constexpr double kExact = 1e-3;     // voxels
+constexpr double kBand = 3.0;    // voxels within which distances must be exact
+constexpr double kExact = 1e-3;  // voxels
 
 glm::dvec3 centreOf(const GridFrame& frame, size_t i)
 {

@@ -24,8 +24,9 @@ TriangleMesh randomSoup(size_t count, uint32_t seed)
     const glm::dvec3 c = testing::sdf::randomPoint(rng, 1.0);
     const uint32_t v = uint32_t(mesh.positions.size());
     mesh.positions.push_back(c + testing::sdf::randomPoint(rng, 0.1));
-    mesh.positions.push_back(t % 17 == 0 ? mesh.positions.back() : c + testing::sdf::randomPoint(rng, 0.1));  // repeated vertex
-    mesh.positions.push_back(t % 13 == 0 ? 0.5 * (mesh.positions[v] + mesh.positions[v + 1])     // collinear
+    mesh.positions.push_back(t % 17 == 0 ? mesh.positions.back()
+                                         : c + testing::sdf::randomPoint(rng, 0.1));          // repeated vertex
+    mesh.positions.push_back(t % 13 == 0 ? 0.5 * (mesh.positions[v] + mesh.positions[v + 1])  // collinear
                                          : c + testing::sdf::randomPoint(rng, 0.1));
     mesh.triangles.push_back({v, v + 1, v + 2});
   }
@@ -35,7 +36,7 @@ TriangleMesh randomSoup(size_t count, uint32_t seed)
 TEST(TriangleBvh, ClosestMatchesBruteForce)
 {
   const TriangleMesh meshes[] = {randomSoup(3000, 1), testing::icosphere(3, 0.7),
-                                testing::box({-1, -1, -1}, {1, 1, 1})};
+                                 testing::box({-1, -1, -1}, {1, 1, 1})};
   for (const TriangleMesh& mesh : meshes) {
     const TriangleBvh bvh(mesh);
     std::mt19937 rng(2);

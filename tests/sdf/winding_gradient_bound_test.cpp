@@ -58,7 +58,7 @@ TEST(WindingGradientBound, BoundsTheGradientOfTheExactWindingNumber)
     const glm::dvec3 centre(u(rng), u(rng), u(rng));
     const glm::dvec3 half(0.05);
     const double g = bound.over(centre - half, centre + half, 1e30);
-    if (std::isinf(g)) continue;  // a rim edge meets the box
+    if (std::isinf(g)) continue;                       // a rim edge meets the box
     if (bvh.closest(centre).distance < 0.1) continue;  // the box may cross the surface, where w jumps
     // Central differences at a few points of the box.
     for (int s = 0; s < 4; ++s) {

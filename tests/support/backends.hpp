@@ -21,9 +21,10 @@ protected:
   std::unique_ptr<LatticeSolver> solver(Extent3 extent) { return makeSolver(GetParam(), extent); }
 };
 
-#define LBMSHAPE_ON_BOTH_BACKENDS(Suite) \
-  INSTANTIATE_TEST_SUITE_P(Backends, Suite, \
-                           ::testing::Values(::lbmshape::testing::Backend::Vulkan, ::lbmshape::testing::Backend::Reference), \
-                           ::lbmshape::testing::backendName)
+#define LBMSHAPE_ON_BOTH_BACKENDS(Suite)                                                                \
+  INSTANTIATE_TEST_SUITE_P(                                                                             \
+      Backends, Suite,                                                                                  \
+      ::testing::Values(::lbmshape::testing::Backend::Vulkan, ::lbmshape::testing::Backend::Reference), \
+      ::lbmshape::testing::backendName)
 
 }  // namespace lbmshape::testing

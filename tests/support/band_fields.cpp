@@ -20,7 +20,8 @@ std::shared_ptr<BrickSet> bricksNear(const Volume& field, double reach)
         bool near = false;
         for (int z = 8 * bz; z < std::min(8 * bz + 8, e.nz) && !near; ++z)
           for (int y = 8 * by; y < std::min(8 * by + 8, e.ny) && !near; ++y)
-            for (int x = 8 * bx; x < std::min(8 * bx + 8, e.nx) && !near; ++x) near = std::abs(field.at(x, y, z)) < reach;
+            for (int x = 8 * bx; x < std::min(8 * bx + 8, e.nx) && !near; ++x)
+              near = std::abs(field.at(x, y, z)) < reach;
         if (near) bricks->activate(bx, by, bz);
       }
   return bricks;

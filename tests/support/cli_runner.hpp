@@ -15,8 +15,8 @@ namespace lbmshape::testing {
 
 struct CliResult {
   int exitCode = -1;  // 128 + N when lbmshape died of signal N
-  std::string out;  // stdout
-  std::string err;  // stderr
+  std::string out;    // stdout
+  std::string err;    // stderr
 };
 
 CliResult runLbmshape(const std::vector<std::string>& arguments);
@@ -29,8 +29,8 @@ CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std:
 // address space for its shadow memory up front: no lbmshape of that build
 // starts under an address-space limit, so the tests that use one skip.
 constexpr bool addressSpaceLimitsWork() { return !builtWithAddressSanitizer; }
-#define LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS()                                                          \
-  if (!::lbmshape::testing::addressSpaceLimitsWork())                                                         \
+#define LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS()  \
+  if (!::lbmshape::testing::addressSpaceLimitsWork()) \
   GTEST_SKIP() << "AddressSanitizer reserves its shadow memory as address space: ulimit -v cannot apply here"
 
 // lbmshape started in the background, its stdout and stderr sent to

@@ -43,8 +43,7 @@ std::string runCapturingStdout(std::vector<std::string> argv, int& status, std::
       if (n < 0) break;
       output.append(buffer, size_t(n));
     }
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   } else {
     failure = "cannot run " + argv[0] + ": " + std::strerror(spawned);
   }
@@ -57,13 +56,16 @@ std::string runCapturingStdout(std::vector<std::string> argv, int& status, std::
 ThreeJsLoad loadWithThreeJs(const std::filesystem::path& file)
 {
   ThreeJsLoad result;
-  const std::filesystem::path script = std::filesystem::path(LBMSHAPE_GLTF_VALIDATOR_SCRIPT).parent_path() / "three_load.mjs";
+  const std::filesystem::path script =
+      std::filesystem::path(LBMSHAPE_GLTF_VALIDATOR_SCRIPT).parent_path() / "three_load.mjs";
   if (!std::filesystem::exists(script.parent_path() / "node_modules" / "three")) {
-    result.failure = "three.js is not installed (install it with: npm ci --prefix " + script.parent_path().string() + ")";
+    result.failure =
+        "three.js is not installed (install it with: npm ci --prefix " + script.parent_path().string() + ")";
     return result;
   }
   int status = 0;
-  const std::string output = runCapturingStdout({LBMSHAPE_NODE_EXECUTABLE, script.string(), file.string()}, status, result.failure);
+  const std::string output =
+      runCapturingStdout({LBMSHAPE_NODE_EXECUTABLE, script.string(), file.string()}, status, result.failure);
   if (!result.failure.empty()) return result;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     result.failure = "three.js could not load " + file.string() + " (see its message above)";

@@ -50,7 +50,8 @@ void GpuTest::SetUp()
 
 void GpuTest::TearDown()
 {
-  EXPECT_EQ(gpu().validationMessages(), messagesBefore_) << "the Vulkan validation layer reported problems (see stderr)";
+  EXPECT_EQ(gpu().validationMessages(), messagesBefore_)
+      << "the Vulkan validation layer reported problems (see stderr)";
 }
 
 }  // namespace lbmshape::testing

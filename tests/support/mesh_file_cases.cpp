@@ -170,8 +170,12 @@ struct Gltf {
     std::string bytes;
     for (const auto& c : corners)
       for (float v : c) bytes += little(v);
-    return accessor({{"bufferView", view(bytes)}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
-                     {"min", {0, 0, 0}}, {"max", {1, 1, 1}}});
+    return accessor({{"bufferView", view(bytes)},
+                     {"componentType", 5126},
+                     {"count", 4},
+                     {"type", "VEC3"},
+                     {"min", {0, 0, 0}},
+                     {"max", {1, 1, 1}}});
   }
   int indices()
   {
@@ -182,7 +186,8 @@ struct Gltf {
   }
   void mesh(int positionAccessor, int indexAccessor)
   {
-    json["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", positionAccessor}}}, {"indices", indexAccessor}}}}});
+    json["meshes"].push_back(
+        {{"primitives", {{{"attributes", {{"POSITION", positionAccessor}}}, {"indices", indexAccessor}}}}});
   }
   // A tetrahedron as mesh 0, shown by node 0 in scene 0.
   static Gltf tetra()
@@ -252,7 +257,8 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
       {"obj_tetra", ".obj", tetraObj, "", false},
       {"obj_cube_of_quads_in_every_corner_form", ".obj",
        "# a cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nvt 0 0\nvn 0 0 1\n"
-       "g cube\no cube\ns off\nusemtl none\nf 1 4 3 2\nf 5/1 6/1 7/1 8/1\nf 1//1 2//1 6//1 5//1\nf 2/1/1 3/1/1 7/1/1 6/1/1\n"
+       "g cube\no cube\ns off\nusemtl none\nf 1 4 3 2\nf 5/1 6/1 7/1 8/1\nf 1//1 2//1 6//1 5//1\nf 2/1/1 3/1/1 7/1/1 "
+       "6/1/1\n"
        "f -5 -1 -2 -6\nf -8 -4 -1 -5\nl 1 2\n",
        "", false},
       {"obj_windows_line_ends_colours_and_w", ".obj",
@@ -260,9 +266,11 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
        "", false},
       {"obj_with_byte_order_mark", ".obj", "\xEF\xBB\xBF" + tetraObj, "", false},
       {"obj_line_continuations_and_comments", ".obj",
-       "# a tetrahedron\nv 0 0 0 # the origin\nv 1 0 \\\n  0\nv 0 1 0\nv 0 0 1\nf 1 3 2 # base\nf 1 2 \\\n4\nf 1 4 3\nf 2 3 4\n",
+       "# a tetrahedron\nv 0 0 0 # the origin\nv 1 0 \\\n  0\nv 0 1 0\nv 0 0 1\nf 1 3 2 # base\nf 1 2 \\\n4\nf 1 4 "
+       "3\nf 2 3 4\n",
        "", false},
-      {"obj_fan_of_one_repeated_vertex", ".obj", [] { return tetraObj + "f 1" + repeat(" 1", 200000) + "\n"; }, "", true},
+      {"obj_fan_of_one_repeated_vertex", ".obj", [] { return tetraObj + "f 1" + repeat(" 1", 200000) + "\n"; }, "",
+       true},
       {"ply_ascii_tetra", ".ply", plyAsciiTetra(tetraPlyFaces), "", false},
       {"ply_binary_little_endian_mixed_types", ".ply", plyBinaryTetra(false), "", false},
       {"ply_binary_big_endian_mixed_types", ".ply", plyBinaryTetra(true), "", false},
@@ -293,9 +301,13 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
          for (int c = 1; c < 4; ++c)
            for (float v : corners[size_t(c)]) values += little(v);
          const int iv = g.view(idx), vv = g.view(values);
-         g.json["accessors"][0] = {{"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
-                                   {"sparse", {{"count", 3}, {"indices", {{"bufferView", iv}, {"componentType", 5123}}},
-                                               {"values", {{"bufferView", vv}}}}}};
+         g.json["accessors"][0] = {{"componentType", 5126},
+                                   {"count", 4},
+                                   {"type", "VEC3"},
+                                   {"sparse",
+                                    {{"count", 3},
+                                     {"indices", {{"bufferView", iv}, {"componentType", 5123}}},
+                                     {"values", {{"bufferView", vv}}}}}};
        }).gltf(),
        "", false},
       {"glb_nodes_translated_and_short_indices", ".glb",
@@ -303,7 +315,8 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
          std::string idx;
          for (const auto& f : faces)
            for (uint32_t i : f) idx += little(uint16_t(i));
-         g.json["accessors"][1] = {{"bufferView", g.view(idx)}, {"componentType", 5123}, {"count", 12}, {"type", "SCALAR"}};
+         g.json["accessors"][1] = {
+             {"bufferView", g.view(idx)}, {"componentType", 5123}, {"count", 12}, {"type", "SCALAR"}};
          g.json["nodes"] = {{{"translation", {5, 0, 0}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {0, 2, 0}}}};
        }).glb(),
        "", false},
@@ -332,9 +345,11 @@ std::vector<MeshFileCase> hostileMeshFiles()
       // PLY
       {"ply_property_before_any_element", ".ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n",
        "property before any element"},
-      {"ply_header_without_end", ".ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n" + repeat("0 0 0\n", 50),
+      {"ply_header_without_end", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n" + repeat("0 0 0\n", 50),
        "unknown header line '0 0 0'"},
-      {"ply_header_cut_short", ".ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n", "no 'end_header'"},
+      {"ply_header_cut_short", ".ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n",
+       "no 'end_header'"},
       {"ply_not_ply", ".ply", "plx\n" + tetraObj, "not a PLY file"},
       {"ply_unknown_format", ".ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format"},
       {"ply_unknown_type", ".ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n",
@@ -344,15 +359,18 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "longer than the rest of the file"},
       {"ply_vertex_count_two_to_the_62", ".ply",
        "ply\nformat binary_little_endian 1.0\nelement vertex 4611686018427387904\nproperty float x\nproperty float y\n"
-       "property float z\nend_header\n" + repeat(little(0.f), 12),
+       "property float z\nend_header\n" +
+           repeat(little(0.f), 12),
        "more than the 2^32 - 1 lbmshape can index"},
       {"ply_face_count_beyond_the_file", ".ply",
        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-       "element face 1000000\nproperty list uchar int vertex_indices\nend_header\n" + repeat(little(0.f), 12),
+       "element face 1000000\nproperty list uchar int vertex_indices\nend_header\n" +
+           repeat(little(0.f), 12),
        "more than the rest of the file can hold"},
       {"ply_binary_cut_short", ".ply", plyBinaryTetra(false).substr(0, plyBinaryTetra(false).size() - 40),
        "longer than the rest of the file"},
-      {"ply_binary_cut_inside_a_vertex", ".ply", plyBinaryTetra(false).substr(0, plyBinaryTetra(false).find("end_header") + 11 + 30),
+      {"ply_binary_cut_inside_a_vertex", ".ply",
+       plyBinaryTetra(false).substr(0, plyBinaryTetra(false).find("end_header") + 11 + 30),
        "more than the rest of the file can hold"},
       {"ply_ascii_cut_short", ".ply", plyAsciiTetra("3 0 2 1\n3 0 1 3\n3 0 3"), "ends in the middle"},
       {"ply_index_beyond_the_vertices", ".ply", plyAsciiTetra("3 0 2 1\n3 0 1 7\n3 0 3 2\n3 1 2 3\n"),
@@ -376,8 +394,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
          return text + "end_header\n";
        }(),
        "more than 1000 elements"},
-      {"ply_element_named_with_control_bytes", ".ply", "ply\nformat ascii 1.0\nelement \x1b]0;x\x07\xff -1\nend_header\n",
-       "negative count"},
+      {"ply_element_named_with_control_bytes", ".ply",
+       "ply\nformat ascii 1.0\nelement \x1b]0;x\x07\xff -1\nend_header\n", "negative count"},
       // OFF
       {"off_keyword_alone", ".off", "OFF\n", "before the vertex and face counts"},
       {"off_negative_vertex_count", ".off", "OFF\n-1 12 0\n0 0 0\n", "negative counts"},
@@ -394,7 +412,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
       // STL
       {"stl_vertex_nan", ".stl", stlAscii("   vertex nan 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
       {"stl_vertex_word", ".stl", stlAscii("   vertex abc 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
-      {"stl_vertex_with_two_coordinates", ".stl", stlAscii("   vertex 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
+      {"stl_vertex_with_two_coordinates", ".stl", stlAscii("   vertex 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"),
+       finite},
       {"stl_vertex_beyond_float", ".stl", stlAscii("   vertex 1e39 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
       {"stl_facet_with_four_vertices", ".stl",
        stlAscii("   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n   vertex 0 0 1\n"), "more than 3 vertices"},
@@ -404,8 +423,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"stl_binary_of_the_wrong_size", ".stl", stlBinaryTetra("binary").substr(0, 84 + 50 * 3 + 10),
        "header counts 4 triangles"},
       {"stl_too_short_for_anything", ".stl", "abc", "not an STL file"},
-      {"stl_binary_with_nan_corners", ".stl", "binary" + std::string(74, ' ') + little(uint32_t(1000)) + std::string(50000, '\xff'),
-       "not finite numbers"},
+      {"stl_binary_with_nan_corners", ".stl",
+       "binary" + std::string(74, ' ') + little(uint32_t(1000)) + std::string(50000, '\xff'), "not finite numbers"},
       {"stl_vertex_outside_a_facet", ".stl", "solid x\nvertex 0 0 0\nendsolid x\n", "expected 'facet' or 'endsolid'"},
       // glTF
       {"gltf_count_whose_size_wraps", ".gltf",
@@ -427,18 +446,19 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "no data, more than a file of this size"},
       {"gltf_negative_sparse_offset", ".gltf",
        tetraWith([](Gltf& g) {
-         g.json["accessors"][0]["sparse"] = {{"count", 1},
-                                             {"indices", {{"bufferView", 1}, {"byteOffset", -8}, {"componentType", 5125}}},
-                                             {"values", {{"bufferView", 0}}}};
+         g.json["accessors"][0]["sparse"] = {
+             {"count", 1},
+             {"indices", {{"bufferView", 1}, {"byteOffset", -8}, {"componentType", 5125}}},
+             {"values", {{"bufferView", 0}}}};
        }).gltf(),
        "negative sparse byteOffset"},
-      {"gltf_sparse_index_out_of_range", ".gltf",
-       tetraWith([](Gltf& g) {
-         const int view = g.view(little(uint32_t(4000)));
-         g.json["accessors"][0]["sparse"] = {{"count", 1},
-                                             {"indices", {{"bufferView", view}, {"componentType", 5125}}},
-                                             {"values", {{"bufferView", 0}}}};
-       }).gltf(),
+      {"gltf_sparse_index_out_of_range", ".gltf", tetraWith([](Gltf& g) {
+                                                    const int view = g.view(little(uint32_t(4000)));
+                                                    g.json["accessors"][0]["sparse"] = {
+                                                        {"count", 1},
+                                                        {"indices", {{"bufferView", view}, {"componentType", 5125}}},
+                                                        {"values", {{"bufferView", 0}}}};
+                                                  }).gltf(),
        "sparse index out of range"},
       {"gltf_stride_shorter_than_an_element", ".gltf",
        tetraWith([](Gltf& g) { g.json["bufferViews"][0]["byteStride"] = 4; }).gltf(), "less than an element"},
@@ -446,16 +466,17 @@ std::vector<MeshFileCase> hostileMeshFiles()
        tetraWith([](Gltf& g) {
          std::string idx;
          for (uint32_t i : {0u, 1u, 2u, 0u, 1u, 9u}) idx += little(i);
-         g.json["accessors"][1] = {{"bufferView", g.view(idx)}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}};
+         g.json["accessors"][1] = {
+             {"bufferView", g.view(idx)}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}};
        }).gltf(),
        "has index 9 but only 4 vertices"},
-      {"gltf_nodes_sharing_children_20_levels", ".gltf",
-       tetraWith([](Gltf& g) {
-         nlohmann::json nodes = nlohmann::json::array();
-         for (int i = 0; i < 20; ++i) nodes.push_back({{"children", {i + 1, i + 1}}});
-         nodes.push_back({{"mesh", 0}});
-         g.json["nodes"] = nodes;
-       }).gltf(),
+      {"gltf_nodes_sharing_children_20_levels", ".gltf", tetraWith([](Gltf& g) {
+                                                           nlohmann::json nodes = nlohmann::json::array();
+                                                           for (int i = 0; i < 20; ++i)
+                                                             nodes.push_back({{"children", {i + 1, i + 1}}});
+                                                           nodes.push_back({{"mesh", 0}});
+                                                           g.json["nodes"] = nodes;
+                                                         }).gltf(),
        "glTF nodes form trees"},
       {"gltf_node_with_two_parents", ".gltf",
        tetraWith([](Gltf& g) {
@@ -463,16 +484,18 @@ std::vector<MeshFileCase> hostileMeshFiles()
          g.json["scenes"] = {{{"nodes", {0, 1}}}};
        }).gltf(),
        "glTF nodes form trees"},
-      {"gltf_node_cycle", ".gltf",
-       tetraWith([](Gltf& g) { g.json["nodes"] = {{{"children", {1}}, {"mesh", 0}}, {{"children", {0}}}}; }).gltf(),
+      {"gltf_node_cycle", ".gltf", tetraWith([](Gltf& g) {
+                                     g.json["nodes"] = {{{"children", {1}}, {"mesh", 0}}, {{"children", {0}}}};
+                                   }).gltf(),
        "is its own ancestor"},
-      {"gltf_node_its_own_child", ".gltf",
-       tetraWith([](Gltf& g) { g.json["nodes"] = {{{"children", {0}}, {"mesh", 0}}}; }).gltf(), "is its own ancestor"},
-      {"gltf_scene_lists_a_child", ".gltf",
-       tetraWith([](Gltf& g) {
-         g.json["nodes"] = {{{"children", {1}}}, {{"mesh", 0}}};
-         g.json["scenes"] = {{{"nodes", {1}}}};
-       }).gltf(),
+      {"gltf_node_its_own_child", ".gltf", tetraWith([](Gltf& g) {
+                                             g.json["nodes"] = {{{"children", {0}}, {"mesh", 0}}};
+                                           }).gltf(),
+       "is its own ancestor"},
+      {"gltf_scene_lists_a_child", ".gltf", tetraWith([](Gltf& g) {
+                                              g.json["nodes"] = {{{"children", {1}}}, {{"mesh", 0}}};
+                                              g.json["scenes"] = {{{"nodes", {1}}}};
+                                            }).gltf(),
        "a scene lists root nodes"},
       {"gltf_extras_nested_50000_deep", ".gltf",
        [] {
@@ -495,7 +518,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
          std::string positions;
          for (int v = 0; v < 3000; ++v)
            for (float c : {float(v % 10), float(v / 10 % 10), float(v / 100)}) positions += little(c);
-         const int p = g.accessor({{"bufferView", g.view(positions)}, {"componentType", 5126}, {"count", 3000}, {"type", "VEC3"}});
+         const int p = g.accessor(
+             {{"bufferView", g.view(positions)}, {"componentType", 5126}, {"count", 3000}, {"type", "VEC3"}});
          g.json["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", p}}}}}}}};
          nlohmann::json nodes = nlohmann::json::array();
          for (int n = 0; n < 4000; ++n) nodes.push_back({{"mesh", 0}});
@@ -527,7 +551,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"glb_second_buffer_without_uri", ".glb",
        Gltf::tetra().glb([](nlohmann::json& json) { json["buffers"].push_back(json["buffers"][0]); }),
        "only buffer 0 may refer to the GLB"},
-      {"glb_buffer_of_zero_bytes", ".glb", Gltf::tetra().glb([](nlohmann::json& json) { json["buffers"][0]["byteLength"] = 0; }),
+      {"glb_buffer_of_zero_bytes", ".glb",
+       Gltf::tetra().glb([](nlohmann::json& json) { json["buffers"][0]["byteLength"] = 0; }),
        "no byteLength of at least 1"},
       {"glb_binary_chunk_longer_than_the_file", ".glb",
        [] {
@@ -537,11 +562,11 @@ std::vector<MeshFileCase> hostileMeshFiles()
          return bytes;
        }(),
        "second GLB chunk claims more bytes"},
-      {"gltf_accessor_of_no_elements_past_its_view", ".gltf",
-       tetraWith([](Gltf& g) {
-         g.json["accessors"][0]["count"] = 0;
-         g.json["accessors"][0]["byteOffset"] = uint64_t(18446744073709551615ull);
-       }).gltf(),
+      {"gltf_accessor_of_no_elements_past_its_view", ".gltf", tetraWith([](Gltf& g) {
+                                                                g.json["accessors"][0]["count"] = 0;
+                                                                g.json["accessors"][0]["byteOffset"] =
+                                                                    uint64_t(18446744073709551615ull);
+                                                              }).gltf(),
        "begins past the end of buffer view"},
       {"gltf_image_view_past_its_buffer", ".gltf",
        tetraWith([](Gltf& g) {
@@ -577,14 +602,12 @@ std::vector<MeshFileCase> hostileMeshFiles()
 MeshFileCase::MeshFileCase(std::string name, std::string extension, std::string bytes, std::string refusal, bool large)
     : name(std::move(name)), extension(std::move(extension)), refusal(std::move(refusal)), large(large),
       bytes_(std::make_shared<Bytes>(Bytes{nullptr, std::move(bytes), true}))
-{
-}
+{}
 
 MeshFileCase::MeshFileCase(std::string name, std::string extension, Maker makeBytes, std::string refusal, bool large)
     : name(std::move(name)), extension(std::move(extension)), refusal(std::move(refusal)), large(large),
       bytes_(std::make_shared<Bytes>(Bytes{std::move(makeBytes), {}, false}))
-{
-}
+{}
 
 const std::string& MeshFileCase::bytes() const
 {

@@ -13,9 +13,10 @@ namespace lbmshape::testing {
 // Path of a shared mesh, or empty if the folder is not there.
 std::filesystem::path sharedAsset(const std::string& name);
 
-#define LBMSHAPE_REQUIRE_SHARED_ASSET(var, name)                                                            \
-  const std::filesystem::path var = ::lbmshape::testing::sharedAsset(name);                                 \
-  if (var.empty()) GTEST_SKIP() << "shared test mesh " << (name)                                           \
-                                << " not found (clone ../shared beside the repository or set LBMSHAPE_SHARED_ASSETS): skipped"
+#define LBMSHAPE_REQUIRE_SHARED_ASSET(var, name)                            \
+  const std::filesystem::path var = ::lbmshape::testing::sharedAsset(name); \
+  if (var.empty())                                                          \
+  GTEST_SKIP() << "shared test mesh " << (name)                             \
+               << " not found (clone ../shared beside the repository or set LBMSHAPE_SHARED_ASSETS): skipped"
 
 }  // namespace lbmshape::testing

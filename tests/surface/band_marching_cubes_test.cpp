@@ -52,7 +52,8 @@ TEST(BandMarchingCubes, GivesTheGridsMesh)
   for (size_t v = 0; v < expected.vertexCount(); ++v)
     normals[{expected.positions[v].x, expected.positions[v].y, expected.positions[v].z}] = expected.normals[v];
   for (size_t v = 0; v < got.vertexCount(); ++v)
-    EXPECT_EQ(got.normals[v], (normals[{got.positions[v].x, got.positions[v].y, got.positions[v].z}])) << "vertex " << v;
+    EXPECT_EQ(got.normals[v], (normals[{got.positions[v].x, got.positions[v].y, got.positions[v].z}]))
+        << "vertex " << v;
   EXPECT_TRUE(analyzeTopology(got).closedManifold);
   EXPECT_LT(bricks->storedCells(), field.size()) << "a band, not the grid";
 }
@@ -60,7 +61,9 @@ TEST(BandMarchingCubes, GivesTheGridsMesh)
 TEST(BandMarchingCubes, DoesNotDependOnTheThreads)
 {
   const GridFrame frame = testing::cubicFrame({33, 33, 33}, 1.0);
-  const Volume field = testing::sampleImplicit(frame, [](const glm::dvec3& p) { return testing::sphereSdf(p, {16.2, 15.8, 16.1}, 11.3); });
+  const Volume field = testing::sampleImplicit(frame, [](const glm::dvec3& p) {
+    return testing::sphereSdf(p, {16.2, 15.8, 16.1}, 11.3);
+  });
   const BandField band = testing::bandOf(field, testing::bricksNear(field, 2.0));
   const TriangleMesh many = extractSurface(band, frame);
   omp_set_num_threads(1);

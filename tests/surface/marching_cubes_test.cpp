@@ -82,9 +82,9 @@ TEST(MarchingCubes, SphereIsClosedOutwardAndMatchesTheAnalyticSphere)
     const glm::dvec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     worstFaceNormal = std::max(worstFaceNormal, angleDegrees(glm::cross(b - a, c - a), (a + b + c) / 3.0 - centre));
   }
-  EXPECT_LT(worstRadius, 0.02);        // voxels
-  EXPECT_LT(worstVertexNormal, 1.0);   // degrees: central differences of an exact distance
-  EXPECT_LT(worstFaceNormal, 90.0);    // every triangle faces outward
+  EXPECT_LT(worstRadius, 0.02);       // voxels
+  EXPECT_LT(worstVertexNormal, 1.0);  // degrees: central differences of an exact distance
+  EXPECT_LT(worstFaceNormal, 90.0);   // every triangle faces outward
 }
 
 TEST(MarchingCubes, LiesOnAFineSphereMesh)
@@ -121,8 +121,8 @@ TEST(MarchingCubes, IsovalueSelectsAnInnerLevelSet)
 {
   const GridFrame frame = cubicFrame({64, 64, 64});
   const glm::dvec3 centre(32.3, 31.6, 32.1);
-  const TriangleMesh mesh =
-      extract(frame, [&](const glm::dvec3& p) { return testing::sphereSdf(p, centre, 25.0); }, 7.0f);
+  const TriangleMesh mesh = extract(
+      frame, [&](const glm::dvec3& p) { return testing::sphereSdf(p, centre, 25.0); }, 7.0f);
   expectClosedOutward(mesh, analyzeTopology(mesh));
   for (const auto& p : mesh.positions) ASSERT_NEAR(glm::length(p - centre), 18.0, 0.02);
 }
@@ -156,9 +156,8 @@ TEST(MarchingCubes, OverlappingSpheresMakeOneGenusZeroSurface)
   // Far apart, barely overlapping (a neck about 2.6 voxels wide) and deep.
   for (double distance : {1.5 * R, 2.0 * R - 0.5}) {
     const glm::dvec3 a(31.8 - distance / 2, 32.1, 31.7), b(31.8 + distance / 2, 32.1, 31.7);
-    const TriangleMesh mesh = extract(frame, [&](const glm::dvec3& p) {
-      return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R));
-    });
+    const TriangleMesh mesh = extract(
+        frame, [&](const glm::dvec3& p) { return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R)); });
     const MeshTopology topology = analyzeTopology(mesh);
     expectClosedOutward(mesh, topology);
     EXPECT_EQ(topology.components, 1u) << "centres " << distance << " apart";
@@ -174,9 +173,8 @@ TEST(MarchingCubes, TouchingSpheresStayManifold)
   const double R = 14.0;
   for (const glm::dvec3 contact : {glm::dvec3(32.0, 32.0, 32.0), glm::dvec3(31.5, 32.5, 31.5)}) {
     const glm::dvec3 a = contact - glm::dvec3(R, 0, 0), b = contact + glm::dvec3(R, 0, 0);
-    const TriangleMesh mesh = extract(frame, [&](const glm::dvec3& p) {
-      return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R));
-    });
+    const TriangleMesh mesh = extract(
+        frame, [&](const glm::dvec3& p) { return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R)); });
     const MeshTopology topology = analyzeTopology(mesh);
     expectClosedOutward(mesh, topology);
     EXPECT_LE(topology.components, 2u);
@@ -189,9 +187,8 @@ TEST(MarchingCubes, SeparateSpheresMakeTwoComponents)
   const GridFrame frame = cubicFrame({64, 64, 64});
   const double R = 12.0;
   const glm::dvec3 a(18.3, 31.6, 32.2), b(45.9, 32.4, 31.7);
-  const TriangleMesh mesh = extract(frame, [&](const glm::dvec3& p) {
-    return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R));
-  });
+  const TriangleMesh mesh = extract(
+      frame, [&](const glm::dvec3& p) { return std::max(testing::sphereSdf(p, a, R), testing::sphereSdf(p, b, R)); });
   const MeshTopology topology = analyzeTopology(mesh);
   expectClosedOutward(mesh, topology);
   EXPECT_EQ(topology.components, 2u);

@@ -53,6 +53,7 @@
   FIELD(int, slotsPerFieldPool)     \
   FIELD(float, omega)               \
   FIELD(float, decay)               \
+  FIELD(float, baseScale)           \
   FIELD(float, gamma0)              \
   FIELD(int, collide) /* 1: a step; 0: the field pass, X to the field buffer */ \
   FIELD(int, perCellOmega) /* 1: omega from the omega buffer */                  \
@@ -66,7 +67,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 14 * 4, "push constants: 14 words");
+static_assert(sizeof(StepParameters) == 15 * 4, "push constants: 15 words");
 }  // namespace lbmshape::band_shader
 #endif
 

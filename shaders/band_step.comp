@@ -126,7 +126,7 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   const int cells = (slot * 64 + z * 8 + y) * 2 + part;  // vec4 index in the per-cell arrays
   vec4 S = vec4(0.0);
   if (HAS_SOURCE) {
-    const vec4 A = texelFetch(sourceBase, cells);
+    const vec4 A = p.baseScale * texelFetch(sourceBase, cells);
     X = (X + 0.5 * A) / (1.0 + 0.5 * p.decay);
     S = A - p.decay * X;
   }

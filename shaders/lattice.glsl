@@ -83,7 +83,7 @@ vec4 fieldFromDistributions(out vec4 S)
            f[14] + f[15] + f[16] + f[17] + f[18];
   S = vec4(0.0);
   if (HAS_SOURCE) {
-    vec4 A = texelFetch(sourceBase, ownBlock);
+    vec4 A = params.baseScale * texelFetch(sourceBase, ownBlock);
     X = (X + 0.5 * A) / (1.0 + 0.5 * params.decay);
     S = A - params.decay * X;
   }

@@ -23,6 +23,7 @@
 #define LATTICE_STEP_PARAMETERS(FIELD) \
   FIELD(float, omega) /* 1/tau where it is the same in every cell */ \
   FIELD(float, decay) /* c of the source */                          \
+  FIELD(float, baseScale) /* k of the source: S = k base - c X */      \
   FIELD(float, gamma0) /* the paper's rule: gamma = gamma0 + kappa */
 
 #define LATTICE_DECLARE_FIELD(type, name) type name;
@@ -32,7 +33,7 @@ namespace lbmshape::lattice_shader {
 struct StepParameters {
   LATTICE_STEP_PARAMETERS(LATTICE_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 3 * 4, "push constants: 3 words");
+static_assert(sizeof(StepParameters) == 4 * 4, "push constants: 4 words");
 }  // namespace lbmshape::lattice_shader
 #endif
 

@@ -51,6 +51,8 @@ void BandReferenceSolver::setSource(std::optional<BandSource> source)
   source_ = std::move(source);
 }
 
+void BandReferenceSolver::setSourceStrength(float decay, float scale) { setStrength(source_, decay, scale); }
+
 void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*bricks_, field, "field");
@@ -128,6 +130,7 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
   glm::vec4* next = next_.data();
   const float* A = source_ ? source_->base.values().data() : nullptr;
   const float decay = source_ ? source_->decay : 0.0f;
+  const float scale = source_ ? source_->scale : 1.0f;
 #pragma omp parallel for schedule(static)
   for (size_t w = 0; w < work.size(); ++w) {
     const size_t s = size_t(work[w]);
@@ -166,8 +169,9 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
       }
       float S = 0.0f;
       if (A) {
-        X = (X + 0.5f * A[i]) / (1.0f + 0.5f * decay);
-        S = A[i] - decay * X;
+        const float a = scale * A[i];
+        X = (X + 0.5f * a) / (1.0f + 0.5f * decay);
+        S = a - decay * X;
       }
       if constexpr (!Collide) {
         (*fieldOut)[i] = X;

@@ -30,10 +30,11 @@
 
 namespace lbmshape {
 
-// S = base - decay * X in every cell of the band.
+// S = scale * base - decay * X in every cell of the band (LinearSource).
 struct BandSource {
   BandField base;
   float decay = 0.0f;
+  float scale = 1.0f;
 };
 
 // 1 for each stored cell inside the grid with |X| < halfWidth, else 0.
@@ -48,6 +49,8 @@ public:
   // The paper's anisotropic rule, as LatticeSolver::setPaperRule describes.
   virtual void setPaperRule(double gamma0) = 0;
   virtual void setSource(std::optional<BandSource> source) = 0;
+  // The source's decay and scale, its base kept (LatticeSolver's).
+  virtual void setSourceStrength(float decay, float scale) = 0;
 
   // Restart from field X, every cell at equilibrium (after setSource); the
   // cells flagged in `streams` (one byte a stored cell) stream, the others

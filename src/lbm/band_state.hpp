@@ -22,7 +22,7 @@ std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::op
 inline float collidedDensity(const BandField& field, const std::optional<BandSource>& source, size_t i)
 {
   const float X = field.values()[i];
-  const float S = source ? source->base.values()[i] - source->decay * X : 0.0f;
+  const float S = source ? source->scale * source->base.values()[i] - source->decay * X : 0.0f;
   return X + 0.5f * S;
 }
 

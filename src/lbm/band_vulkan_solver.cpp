@@ -269,6 +269,7 @@ struct BandVulkanSolver::Resources {
     p.slotsPerFieldPool = int(pools.slotsPerFieldPool);
     p.omega = uniformOmega;
     p.decay = sourceHost ? sourceHost->decay : 0.0f;
+    p.baseScale = sourceHost ? sourceHost->scale : 1.0f;
     p.gamma0 = float(paperRuleGamma0.value_or(0.0));
     p.collide = everySlot ? 0 : 1;
     p.perCellOmega = omegaPerCell.empty() ? 0 : 1;
@@ -391,6 +392,8 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
   }
   r_->sourceHost = std::move(source);
 }
+
+void BandVulkanSolver::setSourceStrength(float decay, float scale) { setStrength(r_->sourceHost, decay, scale); }
 
 void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
 {

@@ -33,6 +33,7 @@ public:
   void setGammaPerCell(const BandField& gamma) override;
   void setPaperRule(double gamma0) override;
   void setSource(std::optional<BandSource> source) override;
+  void setSourceStrength(float decay, float scale) override;
   using BandSolver::initialize;
   void initialize(const BandField& field, std::vector<uint8_t> streams) override;
   void step(int count) override;

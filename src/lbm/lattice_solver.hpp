@@ -21,10 +21,13 @@
 
 namespace lbmshape {
 
-// S = base - decay * X in every cell.
+// S = scale * base - decay * X in every cell. The morph's force is
+// Cs (X_target - X): base X_target, scale and decay Cs, so that a change of
+// Cs changes two numbers (setSourceStrength), not a field to upload.
 struct LinearSource {
   Volume base;
   float decay = 0.0f;
+  float scale = 1.0f;
 };
 
 class LatticeSolver : public SteppingSolver {
@@ -46,6 +49,9 @@ public:
 
   // Source term; std::nullopt removes it.
   virtual void setSource(std::optional<LinearSource> source) = 0;
+  // The source's decay and scale, its base kept: logic_error without a
+  // source. Takes effect at the next step, with no upload.
+  virtual void setSourceStrength(float decay, float scale) = 0;
 
   // Restart from field X, with every distribution at its equilibrium w_i X.
   // Call after setSource: the initial distributions account for S/2.

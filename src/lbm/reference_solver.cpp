@@ -52,6 +52,8 @@ void ReferenceSolver::setSource(std::optional<LinearSource> source)
   source_ = std::move(source);
 }
 
+void ReferenceSolver::setSourceStrength(float decay, float scale) { setStrength(source_, decay, scale); }
+
 void ReferenceSolver::initialize(const Volume& field)
 {
   solver_state::checkSameExtent(extent_, field.extent(), "field");
@@ -119,6 +121,7 @@ struct SweepState {
   float uniformOmega;
   const float* sourceBase;
   float decay;
+  float baseScale;
 };
 
 // The update of one cell from its pulled distributions f. The flags are
@@ -131,7 +134,7 @@ inline void updateCell(const SweepState& s, size_t own, const float* f)
   for (int i = 0; i < Q; ++i) X += f[i];
   float S = 0.0f;
   if constexpr (HasSource) {
-    float A = s.sourceBase[own];
+    float A = s.baseScale * s.sourceBase[own];
     X = (X + 0.5f * A) / (1.0f + 0.5f * s.decay);
     S = A - s.decay * X;
   }
@@ -204,11 +207,12 @@ void sweepRow(const SweepState& s, int y, int z, RowScratch& scratch)
     for (int x = first; x < last; ++x) X[x] += fi[x];
   }
   if constexpr (HasSource) {
-    const float* __restrict A = s.sourceBase + row;
-    const float decay = s.decay;
+    const float* __restrict base = s.sourceBase + row;
+    const float decay = s.decay, scale = s.baseScale;
     for (int x = first; x < last; ++x) {
-      X[x] = (X[x] + 0.5f * A[x]) / (1.0f + 0.5f * decay);
-      S[x] = A[x] - decay * X[x];
+      const float A = scale * base[x];
+      X[x] = (X[x] + 0.5f * A) / (1.0f + 0.5f * decay);
+      S[x] = A - decay * X[x];
     }
   } else {
     for (int x = first; x < last; ++x) S[x] = 0.0f;
@@ -256,7 +260,8 @@ void ReferenceSolver::sweep(Volume* fieldOut)
                omegaPerCell_.size() ? omegaPerCell_.data() : nullptr,
                uniformOmega_,
                source_ ? source_->base.data() : nullptr,
-               source_ ? source_->decay : 0.0f};
+               source_ ? source_->decay : 0.0f,
+               source_ ? source_->scale : 1.0f};
   const bool perCell = s.omegaPerCell != nullptr, withSource = s.sourceBase != nullptr;
   if (perCell && withSource)
     sweepAll<Collide, true, true>(s);

@@ -29,7 +29,7 @@ Volume initialDensity(const Volume& field, const std::optional<LinearSource>& so
   checkSameExtent(field.extent(), source->base.extent(), "source");
   Volume density(field.extent());
   for (size_t i = 0; i < field.size(); ++i) {
-    float s = source->base[i] - source->decay * field[i];
+    float s = source->scale * source->base[i] - source->decay * field[i];
     density[i] = field[i] - 0.5f * s;
   }
   return density;

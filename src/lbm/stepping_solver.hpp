@@ -3,6 +3,7 @@
 // the benchmarks drive either through this.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -21,6 +22,15 @@ protected:
   static void requirePaperRuleInitialized(bool set, bool initialized)
   {
     if (set && !initialized) throw std::logic_error("setPaperRule takes effect at initialize(): initialize first");
+  }
+
+  // For setSourceStrength(): it changes a source that is there.
+  template <typename Source>
+  static void setStrength(std::optional<Source>& source, float decay, float scale)
+  {
+    if (!source) throw std::logic_error("setSourceStrength without a source: setSource first");
+    source->decay = decay;
+    source->scale = scale;
   }
 
   // For previousField(): the copy the last step read is the state one step

@@ -138,7 +138,8 @@ struct VulkanSolver::Resources {
 
   StepParameters parameters() const
   {
-    return {uniformOmega, source ? source->decay : 0.0f, float(paperRuleGamma0.value_or(0.0))};
+    return {uniformOmega, source ? source->decay : 0.0f, source ? source->scale : 1.0f,
+            float(paperRuleGamma0.value_or(0.0))};
   }
 
   void upload(const Volume& values, GpuBuffer& target);
@@ -295,6 +296,8 @@ void VulkanSolver::setSource(std::optional<LinearSource> source)
   }
   r_->source = std::move(source);
 }
+
+void VulkanSolver::setSourceStrength(float decay, float scale) { setStrength(r_->source, decay, scale); }
 
 void VulkanSolver::initialize(const Volume& fieldValues)
 {

@@ -23,6 +23,7 @@ public:
   void setGammaPerCell(const Volume& gamma) override;
   void setPaperRule(double gamma0) override;
   void setSource(std::optional<LinearSource> source) override;
+  void setSourceStrength(float decay, float scale) override;
   void initialize(const Volume& field) override;
   void step(int count) override;
   int stepsTaken() const override;

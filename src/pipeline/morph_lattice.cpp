@@ -25,14 +25,6 @@ double maxDifferenceNear(const std::vector<float>& X, const std::vector<float>& 
   return worst;
 }
 
-// The morph force's constant part, Cs X_target, on the target's own cells.
-template <class Field>
-Field scaledBy(Field field, double cs)
-{
-  for (float& v : field.values()) v *= float(cs);
-  return field;
-}
-
 class GridMorph final : public MorphLattice {
 public:
   GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock,
@@ -72,7 +64,7 @@ public:
 
   SteppingSolver& solver() override { return *solver_; }
   void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
-  void setMorphSpeed(double cs) override { solver_->setSource(morphForce(cs)); }
+  void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
   FrameField field() override { return std::make_shared<const Volume>(solver_->field()); }
 
   double errorNearTarget(const FrameField& field, float band) const override
@@ -84,8 +76,8 @@ public:
   nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
 
 private:
-  // S = Cs X_target - Cs X.
-  LinearSource morphForce(double cs) const { return LinearSource{scaledBy(target_, cs), float(cs)}; }
+  // S = Cs X_target - Cs X: X_target uploaded once, Cs a push constant.
+  LinearSource morphForce(double cs) const { return LinearSource{target_, float(cs), float(cs)}; }
 
   GridFrame frame_;
   Volume source_, target_;
@@ -149,7 +141,7 @@ public:
 
   SteppingSolver& solver() override { return *solver_; }
   void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
-  void setMorphSpeed(double cs) override { solver_->setSource(morphForce(cs)); }
+  void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
   FrameField field() override { return std::make_shared<const BandField>(solver_->field()); }
 
   double errorNearTarget(const FrameField& field, float band) const override
@@ -170,7 +162,7 @@ public:
 
 private:
   // S = Cs X_target - Cs X.
-  BandSource morphForce(double cs) const { return BandSource{scaledBy(target_, cs), float(cs)}; }
+  BandSource morphForce(double cs) const { return BandSource{target_, float(cs), float(cs)}; }
 
   // The bricks between the two surfaces: outside both bands, and on
   // different sides of the two. No surface comes within W + 2 voxels of an

@@ -97,29 +97,25 @@ TEST_F(RecordedCommandsTest, GridStepsAfterASwitchToGammaPerCellMatchTheReferenc
   EXPECT_LT(testing::maxDifferenceForItsScale(vulkan.field(), reference.field()), testing::deviceTolerance);
 }
 
-// The band, one step at a time, with its source changed at every step as a
-// morph's closing phase does: the same field as the reference.
-TEST_F(RecordedCommandsTest, BandStepsReplayedAcrossSourceChangesMatchTheReference)
+// The band, one step at a time, with its source's strength changed at every
+// step as a morph's closing phase does: the same field as the reference.
+TEST_F(RecordedCommandsTest, BandStepsReplayedAcrossSourceStrengthChangesMatchTheReference)
 {
   const Extent3 extent{37, 29, 45};
   const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
   auto bricks = testing::bricksNear(field, 8.0);
   const BandField target = testing::bandOf(testing::sphereDistance(extent, 20.0, 14.0, 20.0, 12.0), bricks);
-  auto source = [&](float cs) {
-    BandField scaled = target;
-    for (float& v : scaled.values()) v *= cs;
-    return BandSource{std::move(scaled), cs};
-  };
   BandReferenceSolver reference(bricks);
   BandVulkanSolver vulkan(gpu(), bricks);
   for (BandSolver* s : std::initializer_list<BandSolver*>{&reference, &vulkan}) {
     s->setUniformGamma(0.15);
-    s->setSource(source(0.1f));
+    s->setSource(BandSource{target, 0.1f, 0.1f});
     s->initialize(testing::bandOf(field, bricks), 6.0);
     for (int k = 0; k < 4; ++k) s->step(1);
     for (int k = 1; k <= 6; ++k) {
       s->setUniformGamma(0.15 / k);
-      s->setSource(source(0.1f + 0.15f * float(k)));
+      const float cs = 0.1f + 0.15f * float(k);
+      s->setSourceStrength(cs, cs);
       s->step(1);
     }
   }

@@ -62,6 +62,43 @@ TEST_P(SourceTerm, MorphForceRelaxesTowardsTarget)
   EXPECT_NEAR(expected, target + (start - target) * std::exp(-c * 20), 2e-3) << "close to the exact ODE solution";
 }
 
+// A morph's closing changes Cs at every step: setSourceStrength(c, c) on
+// the target itself must act as a new source c T - c X would, without the
+// upload; and after it the trapezoidal rule with the new c holds.
+TEST_P(SourceTerm, ChangingTheStrengthActsAsANewScaledSource)
+{
+  const Extent3 extent{13, 11, 9};
+  const Volume target = testing::randomField(extent, -2.0f, 2.0f, 5);
+  const Volume start = testing::randomField(extent, -1.0f, 1.0f, 6);
+  auto scaled = [&](float c) {
+    Volume v = target;
+    for (float& x : v.values()) x *= c;
+    return LinearSource{std::move(v), c};
+  };
+  auto strength = this->solver(extent), uploads = this->solver(extent);
+  strength->setUniformGamma(0.05);
+  uploads->setUniformGamma(0.05);
+  strength->setSource(LinearSource{target, 0.1f, 0.1f});
+  uploads->setSource(scaled(0.1f));
+  strength->initialize(start);
+  uploads->initialize(start);
+  for (float c : {0.1f, 0.3f, 0.6f, 1.0f}) {
+    strength->setSourceStrength(c, c);
+    uploads->setSource(scaled(c));
+    strength->step(2);
+    uploads->step(2);
+  }
+  const Volume a = strength->field(), b = uploads->field();
+  EXPECT_LT(testing::maxDifferenceForItsScale(a, b), testing::deviceTolerance);
+  EXPECT_GT(testing::maxDifferenceForItsScale(a, start), 0.1) << "the source moved the field";
+}
+
+TEST_P(SourceTerm, AStrengthNeedsASource)
+{
+  auto solver = this->solver(Extent3{4, 4, 4});
+  EXPECT_THROW(solver->setSourceStrength(0.1f, 0.1f), std::logic_error);
+}
+
 LBMSHAPE_ON_BOTH_BACKENDS(SourceTerm);
 
 }  // namespace

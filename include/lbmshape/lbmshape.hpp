@@ -13,10 +13,13 @@
 //
 // Errors are exceptions derived from lbmshape::Error (core/error.hpp):
 // UsageError (a parameter out of range), InputError (a mesh that cannot be
-// read or encloses nothing), OutputError, DeviceError, NumericalError.
+// read or encloses nothing), OutputError, DeviceError, NumericalError. Their
+// messages name parameters as the option structs do ("grid.resolution must
+// be at least 8"; core/parameter_names.hpp).
 #pragma once
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "library_version.hpp"
 #include "lbmshape/version.hpp"
 #include "mesh/icosphere.hpp"

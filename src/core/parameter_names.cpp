@@ -33,6 +33,7 @@ Names namesOf(Parameter parameter)
   case Parameter::ColourByCurvature: return {"colourByCurvature", "--color curvature", nullptr};
   case Parameter::Animation: return {"animation = false", "--no-animation", nullptr};
   case Parameter::Force: return {"force", "--force", nullptr};
+  case Parameter::ReplaceInput: return {"replaceInput", "--force", nullptr};
   case Parameter::Preview: return {"preview", "--preview", nullptr};
   case Parameter::Device: return {"device", "--device", "device"};
   case Parameter::Size: return {"size", "--size", nullptr};
@@ -63,6 +64,11 @@ std::string nameOf(Parameter parameter, ParameterNaming naming)
   case ParameterNaming::Library: break;
   }
   return names.library;
+}
+
+bool audienceCanSet(Parameter parameter)
+{
+  return currentNaming != ParameterNaming::Python || namesOf(parameter).python != nullptr;
 }
 
 }  // namespace lbmshape

@@ -28,6 +28,7 @@ enum class Parameter {
   ColourByCurvature,
   Animation,
   Force,
+  ReplaceInput,
   Preview,
   Device,
   Size,
@@ -51,5 +52,9 @@ ParameterNaming parameterNaming();
 // The parameter as the current audience names it.
 std::string nameOf(Parameter parameter);
 std::string nameOf(Parameter parameter, ParameterNaming naming);
+
+// Whether the current audience can set it at all (the Python module takes
+// fewer parameters than the command line): a hint names only those.
+bool audienceCanSet(Parameter parameter);
 
 }  // namespace lbmshape

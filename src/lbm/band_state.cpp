@@ -41,7 +41,7 @@ std::vector<float> omegaFromGamma(const BandField& gamma)
 {
   std::vector<float> omega(gamma.values().size());
   for (size_t i = 0; i < omega.size(); ++i) {
-    relaxation::checkGamma(gamma.values()[i]);
+    relaxation::checkGamma(gamma.values()[i], "per-cell gamma");
     omega[i] = relaxation::singlePrecisionOmega(gamma.values()[i]);
   }
   return omega;

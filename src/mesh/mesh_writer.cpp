@@ -41,7 +41,8 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
   std::error_code ec;
   if (replaceInput || !std::filesystem::equivalent(output, input, ec) || ec) return;
   throw UsageError("the output " + output.string() + " is the input mesh " + input.string() +
-                   ": write the result elsewhere, or give " + nameOf(Parameter::Force) + " to replace the input");
+                   ": write the result elsewhere, or give " + nameOf(Parameter::ReplaceInput) +
+                   " to replace the input");
 }
 
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty,

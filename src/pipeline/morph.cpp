@@ -327,8 +327,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     return std::to_string(writer.stop()) + " complete frames" + (to.folder ? " in " + to.folder->string() : "") +
            " (at step " + std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
   };
-  // Steps up to `step`, gamma and Cs following the schedule. A new Cs is an
-  // upload of the force's field: only when it changes (start() set o.cs).
+  // Steps up to `step`, gamma and Cs following the schedule. A new Cs is
+  // two push constants (setSourceStrength): set only when it changes
+  // (start() set o.cs).
   double csNow = o.cs;
   const auto advanceTo = [&](int step) {
     while (solver.stepsTaken() < step) {

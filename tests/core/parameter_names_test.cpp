@@ -43,6 +43,17 @@ TEST(ParameterNames, EachAudienceHasItsOwnName)
   EXPECT_EQ(nameOf(Parameter::StepsPerFrame, ParameterNaming::CommandLine), "--steps-per-frame");
   // The Python module has no keyword for the margin: its struct name stands.
   EXPECT_EQ(nameOf(Parameter::Margin, ParameterNaming::Python), "grid.marginVoxels");
+  // --force is two fields: a denoise's replaceInput, a morph's force.
+  EXPECT_EQ(nameOf(Parameter::ReplaceInput, ParameterNaming::Library), "replaceInput");
+  EXPECT_EQ(nameOf(Parameter::ReplaceInput, ParameterNaming::CommandLine), "--force");
+}
+
+TEST(ParameterNames, HintsNameOnlyWhatTheAudienceCanSet)
+{
+  EXPECT_TRUE(audienceCanSet(Parameter::Voxel)) << "a C++ caller sets every field";
+  NamingFor python(ParameterNaming::Python);
+  EXPECT_FALSE(audienceCanSet(Parameter::Voxel)) << "lbmshape.denoise has no voxel keyword";
+  EXPECT_TRUE(audienceCanSet(Parameter::Resolution));
 }
 
 TEST(ParameterNames, ALibraryCallerIsToldTheOptionNotTheFlag)

@@ -132,6 +132,40 @@ TEST_P(BandSolverTest, FollowsTheGridWithTheMorphForce)
   EXPECT_LT(worst, 0.02) << "voxels, near the surface";
 }
 
+// setSourceStrength(c, c) on X_target acts as the source c X_target - c X
+// uploaded anew, as a morph's closing changes Cs (the grid's twin is in
+// source_term_test.cpp); and it needs a source.
+TEST_P(BandSolverTest, ChangingTheStrengthActsAsANewScaledSource)
+{
+  const Extent3 extent{30, 26, 28};
+  const Volume from = testing::sphereDistance(extent, 14.5, 13.0, 13.5, 8.0);
+  const Volume to = testing::sphereDistance(extent, 15.5, 12.5, 14.0, 10.0);
+  auto bricks = testing::bricksNear(from, 40.0);
+  const BandField target = testing::bandOf(to, bricks);
+  auto scaled = [&](float c) {
+    BandField v = target;
+    for (float& x : v.values()) x *= c;
+    return BandSource{std::move(v), c};
+  };
+  auto strength = solver(bricks), uploads = solver(bricks);
+  EXPECT_THROW(strength->setSourceStrength(0.1f, 0.1f), std::logic_error);
+  for (BandSolver* s : {strength.get(), uploads.get()}) s->setUniformGamma(0.05);
+  strength->setSource(BandSource{target, 0.1f, 0.1f});
+  uploads->setSource(scaled(0.1f));
+  for (BandSolver* s : {strength.get(), uploads.get()})
+    s->initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  for (float c : {0.1f, 0.3f, 0.6f, 1.0f}) {
+    strength->setSourceStrength(c, c);
+    uploads->setSource(scaled(c));
+    strength->step(2);
+    uploads->step(2);
+  }
+  const testing::BandDifference d = testing::differenceInside(strength->field(), uploads->field(), extent);
+  EXPECT_LE(d.worst, testing::deviceTolerance * d.scale) << "max |X|: " << d.scale;
+  EXPECT_GT(testing::differenceInside(strength->field(), testing::bandOf(from, bricks), extent).worst, 0.5)
+      << "the source moved the field";
+}
+
 TEST_P(BandSolverTest, HeldCellsKeepTheirValueWithoutASource)
 {
   const Extent3 extent{32, 32, 32};

@@ -2,6 +2,7 @@
 // rather than through CTest so that running a test binary by hand behaves the
 // same as under ctest.
 #include <cstdlib>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,17 @@ int main(int argc, char** argv)
   // Lavapipe's worker threads: one per core of these 2-core machines, unless
   // the caller chose otherwise.
   setenv("LP_NUM_THREADS", "2", 0);
+  // Tests labelled unit use no device: CTest runs them with
+  // LBMSHAPE_TEST_WITHOUT_DEVICE=1, and the Vulkan loader then finds no
+  // driver (VK_DRIVER_FILES; VK_ICD_FILENAMES for loaders before 1.3.207;
+  // nothing added by VK_ADD_DRIVER_FILES), so a test that reaches for a
+  // device fails instead of passing under the wrong label.
+  if (const char* without = std::getenv("LBMSHAPE_TEST_WITHOUT_DEVICE"); without && std::string(without) == "1") {
+    const char* none = "/nonexistent/lbmshape-unit-tests-use-no-vulkan-driver.json";
+    setenv("VK_DRIVER_FILES", none, 1);
+    setenv("VK_ICD_FILENAMES", none, 1);
+    unsetenv("VK_ADD_DRIVER_FILES");
+  }
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -13,7 +13,7 @@ Both are finely and evenly tessellated so that vertex noise (lbmshape noise)
 roughens the whole surface, flat faces and sharp edges alike. Plain Python,
 no packages.
 
-    python3 assets/generate_shapes.py assets
+    python3 assets/generate_shapes.py build/assets   (the build does this)
 """
 import math
 import sys

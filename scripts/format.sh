@@ -10,13 +10,10 @@ cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null || scripts/install-deps.sh --with-format-tools
 mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h' | grep -v '^shaders/')
 if [[ ${1:-} == --check ]]; then
-  status=0
-  for f in "${files[@]}"; do
-    if ! clang-format --style=file "$f" | cmp -s "$f" -; then
-      echo "$f is not formatted (scripts/format.sh formats it)"
-      status=1
-    fi
-  done
-  exit $status
+  # One process for every file (a process per file took 14 s of CI).
+  out=$(clang-format --style=file --dry-run --Werror "${files[@]}" 2>&1) && exit 0
+  grep -E '^[^ ]+:[0-9]+:[0-9]+: (error|warning):' <<<"$out" | cut -d: -f1 | sort -u |
+    sed 's|$| is not formatted (scripts/format.sh formats it)|' >&2
+  exit 1
 fi
 clang-format --style=file -i "${files[@]}"

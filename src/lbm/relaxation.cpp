@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
 #include "lbm/d3q19.hpp"
 
@@ -14,17 +15,18 @@ namespace lbmshape::relaxation {
 double tauFromGamma(double gamma) { return gamma / d3q19::soundSpeedSquared + 0.5; }
 double gammaFromTau(double tau) { return d3q19::soundSpeedSquared * (tau - 0.5); }
 
-void checkGamma(double gamma, const std::string& what)
+void checkGamma(double gamma, std::string_view what)
 {
+  const auto name = [what] { return what.empty() ? nameOf(Parameter::Gamma) : std::string(what); };
   if (!std::isfinite(gamma) || gamma <= 0.0) {
     std::ostringstream message;
-    message << what << " must be a positive number of voxels^2 per step (got " << gamma
+    message << name() << " must be a positive number of voxels^2 per step (got " << gamma
             << "); it sets tau = 3*gamma + 1/2, and tau <= 1/2 is unstable";
     throw UsageError(message.str());
   }
   if (gamma > parameter_bounds::maxGamma) {
     std::ostringstream message;
-    message << what << " = " << gamma << " is above " << parameter_bounds::maxGamma
+    message << name() << " = " << gamma << " is above " << parameter_bounds::maxGamma
             << " voxel^2 per step, where the lattice stops following the diffusion equation (tau = 3*gamma + 1/2 > 3.5"
             << " relaxes too slowly); for more smoothing, give more steps";
     throw UsageError(message.str());
@@ -33,7 +35,7 @@ void checkGamma(double gamma, const std::string& what)
   // exactly 2, which is tau = 1/2 again.
   if (!(float(omegaFromGamma(gamma)) < 2.0f)) {
     std::ostringstream message;
-    message << what << " = " << gamma << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
+    message << name() << " = " << gamma << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
             << " where the scheme is unstable; use at least 1e-7";
     throw UsageError(message.str());
   }

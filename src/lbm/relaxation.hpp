@@ -9,9 +9,7 @@
 // tests/ measures which one the lattice obeys.
 #pragma once
 
-#include <string>
-
-#include "core/parameter_names.hpp"
+#include <string_view>
 
 namespace lbmshape::relaxation {
 
@@ -25,8 +23,10 @@ inline float singlePrecisionOmega(float gamma) { return 1.0f / (3.0f * gamma + 0
 
 // Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's
 // linear stability range 1/2 < tau (omega < 2), and small enough for the
-// lattice to diffuse (core/parameter_bounds.hpp). `what` names the parameter.
-void checkGamma(double gamma, const std::string& what = nameOf(Parameter::Gamma));
+// lattice to diffuse (core/parameter_bounds.hpp). `what` names the value in
+// the message; by default it is the gamma parameter, named only when the
+// check fails (solvers check every cell of a per-cell gamma).
+void checkGamma(double gamma, std::string_view what = {});
 
 // How far `steps` steps started in equilibrium (f_i = w_i X, as every run
 // starts) miss the smoothing of the diffusion equation, as a fraction of it:

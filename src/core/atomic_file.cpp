@@ -56,6 +56,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
     // Listed before it is made (a second Ctrl-C or an abort ends the process
     // without unwinding): listed only after, a signal in between left it.
     // A name that is taken (a dead process's leftover) is taken off again.
+    const temporary_files::Creation creation;
     const int ticket = temporary_files::remember(candidate);
     int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {

@@ -5,6 +5,7 @@
 #include <climits>
 #include <cstring>
 
+#include <time.h>
 #include <unistd.h>
 
 namespace lbmshape::temporary_files {
@@ -22,7 +23,23 @@ struct Slot {
 };
 std::array<Slot, 32> slots;
 
+// Sequentially consistent, like Dekker's flags: either a Creation sees
+// `ending` and stops, or the handler sees it in `creating` and waits for it.
+std::atomic<bool> ending{false};
+std::atomic<int> creating{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
+
 }  // namespace
+
+Creation::Creation()
+{
+  creating.fetch_add(1);
+  if (!ending.load()) return;
+  creating.fetch_sub(1);
+  for (;;) ::pause();  // the handler is removing the files and ends the process
+}
+
+Creation::~Creation() { creating.fetch_sub(1); }
 
 int remember(const std::filesystem::path& path)
 {
@@ -48,6 +65,21 @@ void forget(int ticket)
 
 namespace {
 
+double secondsNow()
+{
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+// Bounded: the handler may be running on a thread that is itself inside a
+// Creation, which then never ends; its file, if made, is listed already.
+void waitForCreationsUnderWay()
+{
+  const double deadline = secondsNow() + 0.25;
+  while (creating.load() > 0 && secondsNow() < deadline) {}
+}
+
 void removeListed()
 {
   for (Slot& slot : slots) {
@@ -68,6 +100,8 @@ void removeListed()
 
 void removeAllFromSignalHandler()
 {
+  ending.store(true);
+  waitForCreationsUnderWay();
   // Twice: a listed folder may hold another listed folder of a later slot,
   // empty only once that one is gone.
   removeListed();

@@ -17,9 +17,23 @@ int remember(const std::filesystem::path& path);
 // Takes the file off the list (it was renamed or removed). Thread-safe.
 void forget(int ticket);
 
-// Removes every listed file (and every listed folder that is empty).
-// Async-signal-safe: for a signal handler, or for a process that ends
-// without unwinding (core/last_resort.hpp).
+// Held while a listed file or folder is being made. The handler below runs
+// on one thread while the others go on: without this, a writer could make
+// its (already listed) file just after the handler unlinked that name, and
+// the process would end with it left behind. Once the handler has begun, a
+// new Creation never returns: the process is about to end.
+class Creation {
+public:
+  Creation();
+  ~Creation();
+  Creation(const Creation&) = delete;
+  Creation& operator=(const Creation&) = delete;
+};
+
+// Removes every listed file (and every listed folder that is empty), after
+// waiting (briefly) for the Creations under way on other threads. The
+// process must end right after. Async-signal-safe: for a signal handler, or
+// for a process that ends without unwinding (core/last_resort.hpp).
 void removeAllFromSignalHandler();
 
 }  // namespace lbmshape::temporary_files

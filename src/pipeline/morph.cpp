@@ -130,7 +130,10 @@ void prepareFolder(const fs::path& folder)
     for (const auto& entry : fs::directory_iterator(folder, ec))
       if (entry.is_regular_file() && isOurFile(entry.path())) fs::remove(entry.path(), ec);
   }
-  fs::create_directories(folder, ec);
+  {
+    const temporary_files::Creation creation;  // the new folders are listed (FolderIfLeftEmpty)
+    fs::create_directories(folder, ec);
+  }
   if (ec) throw OutputError("cannot create the folder " + folder.string() + ": " + ec.message());
   AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
 }

@@ -1,13 +1,19 @@
 // AtomicFile: the target appears, or changes, only on commit().
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <fstream>
 #include <iterator>
+#include <memory>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/temporary_files.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 
@@ -101,6 +107,33 @@ TEST(AtomicFileDeathTest, ASecondCtrlCEndsTheProcessAndLeavesNoTemporaryFile)
       },
       ::testing::KilledBySignal(SIGINT), "");
   EXPECT_TRUE(folder.entries().empty()) << ::testing::PrintToString(folder.entries());
+}
+
+// The handler runs on one thread while the others go on writing: once it has
+// removed the listed files, no other thread may make a new one, or it stays
+// (LastResort.AnAbortInTheMiddleOfAMorphLeavesNoPartialFile, now and then).
+TEST(AtomicFileDeathTest, NoTemporaryFileIsMadeAfterTheHandlerHasRemovedThem)
+{
+  testing::ScratchFolder folder;
+  EXPECT_EXIT(
+      {
+        std::atomic<int> made{0};
+        std::thread writer([&] {
+          std::vector<std::unique_ptr<AtomicFile>> open;  // kept: each one stays until the process ends
+          for (int i = 0;; ++i) {
+            if (open.size() == 24) open.erase(open.begin());
+            open.push_back(std::make_unique<AtomicFile>(folder / ("frame_" + std::to_string(i) + ".obj")));
+            made.fetch_add(1);
+          }
+        });
+        while (made.load() < 100) std::this_thread::yield();
+        temporary_files::removeAllFromSignalHandler();
+        // A writer that went on would have made many files in this time.
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        const bool clean = folder.entries().empty();
+        std::_Exit(clean ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

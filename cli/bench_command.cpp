@@ -48,11 +48,9 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0)
 
 nlohmann::json timingJson(const StepTiming& t, bool withBandwidth)
 {
-  nlohmann::json j = {{"ms_per_step", t.msPerStep},
-                      {"best_ms_per_step", t.bestMsPerStep},
-                      {"first_step_ms", t.firstStepMs},
-                      {"warmup_steps", t.warmupSteps},
-                      {"mlups", t.mlups}};
+  nlohmann::json j = {{"ms_per_step", t.msPerStep},     {"best_ms_per_step", t.bestMsPerStep},
+                      {"first_step_ms", t.firstStepMs}, {"warmup_steps", t.warmupSteps},
+                      {"steps_per_run", t.stepsPerRun}, {"mlups", t.mlups}};
   if (withBandwidth) j["gbps"] = t.gbps;
   return j;
 }
@@ -67,7 +65,7 @@ SizeResult benchSize(const Extent3& extent, gpu::GpuContext* context, const Benc
   }
   log::info("timing the CPU reference on " + extent.toString() + "...");
   ReferenceSolver reference(extent);
-  result.reference = timeSolver(reference, settings);
+  result.reference = timeSolver(reference, referenceSettings(settings));
   return result;
 }
 
@@ -92,8 +90,10 @@ void printSingle(const SizeResult& r, const std::string& device, const Bandwidth
     std::cout << format("  vulkan     %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s", r.vulkan->msPerStep, r.vulkan->mlups,
                         r.vulkan->gbps)
               << format("  (first step %.0f ms)\n", r.vulkan->firstStepMs);
-  std::cout << format("  reference  %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s\n", r.reference.msPerStep, r.reference.mlups,
+  std::cout << format("  reference  %8.3f ms/step  %7.1f MLUPS  %6.1f GB/s", r.reference.msPerStep, r.reference.mlups,
                       r.reference.gbps);
+  if (r.reference.stepsPerRun != settings.steps) std::cout << format("  (runs of %.0f steps)", r.reference.stepsPerRun);
+  std::cout << "\n";
   std::cout << format("  memory bandwidth %.1f GB/s -> roofline %.0f MLUPS", bandwidth.gbps, roofline) << " ("
             << bandwidth.method << ")\n";
   if (r.vulkan)

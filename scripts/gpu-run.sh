@@ -45,8 +45,8 @@ assets=/work/shared/assets
 
 # Figures, on a quiet machine.
 { nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv; nproc
-  timeout 30 lbmshape bench --size 256,256,256 --json -q; echo
-  timeout 30 lbmshape bench --band --size 512,512,512 --json -q; echo; } >"$results/bench.log" 2>&1
+  timeout 90 lbmshape bench --size 256,256,256 --json -q; echo
+  timeout 90 lbmshape bench --band --size 512,512,512 --json -q; echo; } >"$results/bench.log" 2>&1
 for res in 128 256 512; do
   timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json \
     >"$results/denoise$res.json" 2>"$results/denoise$res.err"

@@ -1,6 +1,7 @@
 #include "bench/lattice_bench.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -24,19 +25,36 @@ StepTiming timeSolver(LatticeSolver& solver, const BenchSettings& settings)
   return timing;
 }
 
+BenchSettings referenceSettings(BenchSettings settings)
+{
+  settings.longestRunMs = 400.0;
+  return settings;
+}
+
 StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, double cellsPerStep)
 {
   StepTiming timing;
   Stopwatch first;
   solver.step(1);
   timing.firstStepMs = first.ms();
-  for (Stopwatch warm; warm.ms() < settings.warmupMs; ++timing.warmupSteps) solver.step(1);
+  Stopwatch warm;
+  while (warm.ms() < settings.warmupMs) {
+    solver.step(1);
+    ++timing.warmupSteps;
+  }
+  const double warmMs = warm.ms();
 
+  timing.stepsPerRun = settings.steps;
+  if (settings.longestRunMs > 0.0) {
+    const double pace = timing.warmupSteps > 0 ? warmMs / timing.warmupSteps : timing.firstStepMs;
+    const double fit = std::floor(settings.longestRunMs / std::max(pace, 1e-6));
+    timing.stepsPerRun = int(std::clamp(fit, 1.0, double(settings.steps)));
+  }
   std::vector<double> perStep;
   for (int r = 0; r < settings.runs; ++r) {
     Stopwatch watch;
-    solver.step(settings.steps);
-    perStep.push_back(watch.ms() / settings.steps);
+    solver.step(timing.stepsPerRun);
+    perStep.push_back(watch.ms() / timing.stepsPerRun);
   }
   std::sort(perStep.begin(), perStep.end());
   timing.msPerStep = perStep[perStep.size() / 2];

@@ -13,6 +13,7 @@ struct StepTiming {
   double bestMsPerStep = 0.0;
   double firstStepMs = 0.0;  // includes the driver's shader compilation
   int warmupSteps = 0;       // run after the first, untimed, for settings.warmupMs
+  int stepsPerRun = 0;       // settings.steps, or fewer within settings.longestRunMs
   double mlups = 0.0;        // million lattice updates per second (median)
   double gbps = 0.0;         // mlups * bytes per update
 };
@@ -25,7 +26,17 @@ struct BenchSettings {
   // clocks only after a few hundred milliseconds of work (an H100 took
   // 0.40 ms a step of 128^3 in a cold 100-step run, 0.145 ms once warm).
   double warmupMs = 500.0;
+  // When above 0, a timed run takes fewer than `steps` steps if the warm-up's
+  // pace says it would last longer than this: see referenceSettings().
+  double longestRunMs = 0.0;
 };
+
+// The settings the CPU reference is timed with: the user's, with runs of at
+// most about 0.4 s. Where the device is a real GPU, the grid it steps in a
+// few milliseconds takes the reference seconds a step; `bench --size
+// 256,256,256` on an H100 spent over 30 s timing the reference alone. A
+// rate needs no more steps than it takes to measure it.
+BenchSettings referenceSettings(BenchSettings settings);
 
 // Runs `settings.runs` times `settings.steps` steps on a random field after
 // one warm-up step, and reports per-step figures.

@@ -86,6 +86,9 @@ TEST(JsonResults, BenchReportsConsistentFigures)
   // than that a step).
   EXPECT_GE(j["vulkan"]["warmup_steps"].get<int>(), 1);
   EXPECT_GE(j["reference"]["warmup_steps"].get<int>(), 1);
+  EXPECT_EQ(j["vulkan"]["steps_per_run"], 5);
+  EXPECT_GE(j["reference"]["steps_per_run"].get<int>(), 1) << "runs of at most 0.4 s: fewer steps if slower";
+  EXPECT_LE(j["reference"]["steps_per_run"].get<int>(), 5);
   expectDenoiseStages(j["denoise"], 24, "grid", j["vulkan"]["mlups"].get<double>());
 }
 

@@ -14,7 +14,7 @@ struct DenoiseArguments {
   const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
   int steps = 0;
   const CLI::Option* stepsOption = nullptr;  // not given: as many steps as the noise needs
-  bool anisotropic = false, preserveFeatures = false;
+  bool isotropic = false, anisotropic = false, preserveFeatures = false;
   std::string preview;
   std::string colour = "none";
 };
@@ -25,6 +25,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   // would let --voxel 0 (or nan) fall back to --res instead of failing.
   if (a.voxelOption->count() > 0) a.options.grid.voxel = a.voxel;
   if (a.stepsOption->count() > 0) a.options.steps = a.steps;
+  if (a.isotropic) a.options.smoothing = Smoothing::Isotropic;
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   if (!a.preview.empty()) a.options.preview = a.preview;
@@ -58,8 +59,14 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
       "--steps", a->steps,
       "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7; the paper's runs: 7)");
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
-  auto* aniso = cmd->add_flag("--anisotropic", a->anisotropic, "Per-cell gamma = gamma + kappa, the paper's Eq. 20");
-  cmd->add_flag("--preserve-features", a->preserveFeatures, "Per-cell gamma falling at sharp edges")->excludes(aniso);
+  auto* preserve =
+      cmd->add_flag("--preserve-features", a->preserveFeatures, "Per-cell gamma falling at sharp edges (the default)");
+  auto* iso = cmd->add_flag("--isotropic", a->isotropic,
+                            "One gamma everywhere: the paper's motion by mean curvature, which rounds sharp edges")
+                  ->excludes(preserve);
+  cmd->add_flag("--anisotropic", a->anisotropic, "Per-cell gamma = gamma + kappa, the paper's Eq. 20")
+      ->excludes(preserve)
+      ->excludes(iso);
   cmd->add_option(
          "--noise", a->options.noise.amplitude,
          "Add the paper's uniform noise to the distance field first, as a fraction of its largest value (0.05 = 5%)")

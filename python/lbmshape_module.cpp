@@ -208,7 +208,7 @@ PYBIND11_MODULE(lbmshape, m)
       .def_property_readonly("name", &ComputeDevice::name);
 
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
-        py::arg("steps") = py::none(), py::arg("gamma") = 0.2, py::arg("smoothing") = "isotropic",
+        py::arg("steps") = py::none(), py::arg("gamma") = 0.2, py::arg("smoothing") = "preserve-features",
         py::arg("keep_volume") = true, py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
         "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
         "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The trade-off of denoising, measured beside OpenVDB. For every mesh and
 # noise level: a noisy copy (Gaussian noise along the normals, sigma in
-# voxels of the grid), then lbmshape's denoise at its defaults and with
+# voxels of the grid), then lbmshape's denoise at its defaults (which
+# preserve features) and with
 # 1..10 steps (isotropic, --preserve-features, --anisotropic), and OpenVDB's
 # LevelSetFilter::meanCurvature with 1..6 iterations (3 is what users run)
 # at the same voxel size; each result compared with the clean mesh:
@@ -54,8 +55,7 @@ for mesh in "$@"; do
     "$lbmshape" -q denoise "$noisy" "$out/result.obj" --res "$res" --force
     row lbmshape-default 0 "$out/result.obj"
     for method in "${methods[@]}"; do
-      flag=()
-      [[ $method == isotropic ]] || flag=(--"$method")
+      flag=(--"$method")
       for k in "${steps[@]}"; do
         "$lbmshape" -q denoise "$noisy" "$out/result.obj" --res "$res" --steps "$k" "${flag[@]}" --force
         row "$method" "$k" "$out/result.obj"

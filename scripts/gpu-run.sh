@@ -50,6 +50,8 @@ assets=/work/shared/assets
 for res in 128 256 512; do
   timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json \
     >"$results/denoise$res.json" 2>"$results/denoise$res.err"
+  timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json --isotropic \
+    >"$results/denoise$res-isotropic.json" 2>"$results/denoise$res-isotropic.err"
 done
 python3 scripts/make-sphere.py /tmp/sphere.obj
 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256 --res 256 --align none --force --json \

@@ -69,6 +69,7 @@ class Denoise(unittest.TestCase):
         v2, f2, report = lbmshape.denoise(v, f, res=40, steps=3, report=True)
         self.assertEqual(report["steps"], 3)
         self.assertEqual(report["steps_chosen"], "given")
+        self.assertEqual(report["smoothing"], "preserve-features")  # the default
         self.assertEqual(report["grid"]["size"], [40, 40, 40])
         self.assertIn("lbm", report["ms"])
 

@@ -15,6 +15,7 @@
 #include "mesh/mesh_validation.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "pipeline/feature_probe.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/render_job.hpp"
 #include "pipeline/smoothing_stop.hpp"
@@ -32,15 +33,11 @@ namespace lbmshape {
 namespace {
 
 // --preserve-features finds the edges on a copy of the field smoothed
-// isotropically until 2 gamma t = 4 voxels^2 (a diffusion length of 2 voxels:
-// the noise is gone, sharp edges are still sharp bends), and halves gamma
-// where the mean curvature there is 0.2 per voxel (a radius of 5 voxels).
-// Chosen on the fandisk with vertex noise of 0.2 and 0.3 mean edge lengths
-// (docs/denoising.md has the measurements).
-constexpr double featureProbeDiffusion = 2.0;  // gamma * steps
+// (feature_probe.hpp), and halves gamma where the mean curvature there is
+// 0.2 per voxel (a radius of 5 voxels). Chosen on the fandisk with vertex
+// noise of 0.2 and 0.3 mean edge lengths (docs/denoising.md has the
+// measurements).
 constexpr double featureEdgeCurvature = 0.2;
-
-int featureProbeSteps(double gamma) { return std::clamp(int(std::ceil(featureProbeDiffusion / gamma)), 1, 200); }
 
 const char* smoothingName(Smoothing s)
 {
@@ -163,12 +160,12 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
     start(solver, field, halfWidth);
     return runSteps(solver, std::move(field), o, progress);
   case Smoothing::PreserveFeatures: {
-    const int probeSteps = featureProbeSteps(o.gamma);
+    const FeatureProbe probe = featureProbe();
     const int steps = o.steps.value_or(smoothing_stop::mostSteps);
-    const double probeShare = double(probeSteps) / (probeSteps + steps);
-    solver.setUniformGamma(o.gamma);
+    const double probeShare = double(probe.steps) / (probe.steps + steps);
+    solver.setUniformGamma(probe.gamma);
     start(solver, field, halfWidth);
-    stepShowingProgress(solver, probeSteps, progress, "finding the edges", probeShare);
+    stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
     start(solver, field, halfWidth);
     return runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
@@ -177,11 +174,14 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   throw std::logic_error("unknown smoothing");
 }
 
-// The most steps a denoise makes from one start.
-int longestRun(const DenoiseOptions& o)
+// How far from the surface the band streams: as far as the smoothing's
+// steps need, or the edge-finding copy's, whichever is farther.
+double bandHalfWidth(const DenoiseOptions& o)
 {
-  const int steps = o.steps.value_or(smoothing_stop::mostSteps);
-  return o.smoothing == Smoothing::PreserveFeatures ? std::max(steps, featureProbeSteps(o.gamma)) : steps;
+  const double smoothing = streamingHalfWidth(o.gamma, o.steps.value_or(smoothing_stop::mostSteps));
+  if (o.smoothing != Smoothing::PreserveFeatures) return smoothing;
+  const FeatureProbe probe = featureProbe();
+  return std::max(smoothing, streamingHalfWidth(probe.gamma, probe.steps));
 }
 
 // The lattice stages of a denoise: signed distance, smoothing, surface.
@@ -235,7 +235,7 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
                          const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
 {
-  const double halfWidth = streamingHalfWidth(o.gamma, longestRun(o));
+  const double halfWidth = bandHalfWidth(o);
   BandField field = clock.time("sdf", [&](Progress& progress) {
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
     return signedDistanceBand(mesh, frame,

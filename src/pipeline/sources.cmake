@@ -2,6 +2,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/animation_memory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/compute_device.cpp
   ${CMAKE_CURRENT_LIST_DIR}/denoise.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/feature_probe.cpp
   ${CMAKE_CURRENT_LIST_DIR}/field_noise.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interruptible_steps.cpp

@@ -156,6 +156,8 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
                                          {"--voxel", "inf"},
                                          {"--noise", "-0.5"},
                                          {"--anisotropic", "--preserve-features"},
+                                         {"--isotropic", "--preserve-features"},
+                                         {"--isotropic", "--anisotropic"},
                                          {"--res", "64", "--voxel", "0.1"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -165,6 +167,22 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
     ASSERT_EQ(lines.size(), 1u) << r.err;
     EXPECT_NE(lines[0].find(extra[0]), std::string::npos) << "the message names the option: " << lines[0];
     EXPECT_FALSE(fs::exists(output));
+  }
+}
+
+// Feature-preserving smoothing is the default (docs/denoising.md, "How good
+// it is"); the paper's isotropic scheme and its anisotropic rule are flags.
+TEST(DenoiseCli, SmoothingPreservesFeaturesUnlessAskedOtherwise)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  for (const auto& [flag, smoothing] : std::vector<std::pair<std::string, std::string>>{
+           {"", "preserve-features"}, {"--isotropic", "isotropic"}, {"--anisotropic", "anisotropic"}}) {
+    std::vector<std::string> args = {"denoise", input, output, "--res", "24", "--steps", "2", "--json", "--force"};
+    if (!flag.empty()) args.push_back(flag);
+    testing::CliResult r = testing::runLbmshape(args);
+    ASSERT_EQ(r.exitCode, 0) << flag << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["smoothing"], smoothing) << flag;
   }
 }
 

@@ -116,6 +116,7 @@ TEST_F(Denoise, PreserveFeaturesRoundsABoxLessThanIsotropic)
   DenoiseOptions options;
   options.grid.resolution = 64;
   options.steps = 10;
+  options.smoothing = Smoothing::Isotropic;
   const double isotropic = compareSurfaces(box, run(box, options).mesh).meanNormalAngle;
   options.smoothing = Smoothing::PreserveFeatures;
   const double preserving = compareSurfaces(box, run(box, options).mesh).meanNormalAngle;

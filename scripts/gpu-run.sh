@@ -15,6 +15,9 @@ set -u
 results=/tmp/gpu-results
 rm -rf "$results" && mkdir -p "$results"
 save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
+# GPU_PHASES: which phases after the figures run (default all): scale
+# (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), tests.
+wanted() { [[ " ${GPU_PHASES:-scale jobs tests} " == *" $1 "* ]]; }
 trap save EXIT
 root=$PWD
 source .gpu/prepare.sh 2>"$results/prepare.log"
@@ -57,7 +60,10 @@ python3 scripts/make-sphere.py /tmp/sphere.obj
 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256 --res 256 --align none --force --json \
   >"$results/morph256.json" 2>"$results/morph256.err"
 save
-timeout 120 scripts/bench-scale.sh $assets/armadillo.obj 3 128 256 512 >"$results/scale.log" 2>&1
+if wanted scale; then
+  timeout 120 scripts/bench-scale.sh $assets/armadillo.obj 3 128 256 512 >"$results/scale.log" 2>&1
+fi
+if wanted jobs; then
 python3 - "$assets" >/tmp/jobs.json <<'PY'
 import json, os, sys
 print(json.dumps([{"command": "denoise", "input": f"{sys.argv[1]}/{m}", "output": f"/tmp/jobs-{m[:-4]}.glb", "res": 128}
@@ -73,9 +79,11 @@ PY
         "for m in $assets/*.obj; do $VDB_PEER denoise \$m /tmp/vdb.obj --res 128 --iters 3 --filter meancurv --threads $(nproc) >/dev/null 2>&1; done"
     done
   fi; } >"$results/jobs.log" 2>&1
+fi
 save
 
 # The suite, validation on (each program's main sets it), 4 shards a program.
+wanted tests || exit 0
 cd build/tests
 ls *_tests | while read -r program; do for shard in 0 1 2 3; do echo "$program $shard"; done; done |
   timeout -s KILL "${GPU_TEST_SECONDS:-150}" xargs -P "$(nproc)" -n 2 sh -c \

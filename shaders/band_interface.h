@@ -60,6 +60,19 @@
   FIELD(int, hasSource)    /* 1: the morph's source term */                       \
   FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */
 
+// vec4 index of moment m (0..3) of row `row` (y + 8 z), half `half` (cells
+// 0-3 or 4-7) of brick slot s, in a copy of the moments.
+#define BAND_MOMENT_INDEX(s, m, row, half) ((((s) * 4 + (m)) * 64 + (row)) * 2 + (half))
+
+// The surface-speed pass (band_speed.comp): for every brick slot s, over its
+// cells with |X older| < 1, the sum of |X newer - X older| and their number,
+// from rho* of the two copies (the fields of the last two steps when there
+// is no source: BandSolver::storedField).
+#define BAND_SPEED_BINDING_NEWER 0     // samplerBuffer: the newer copy of the moments
+#define BAND_SPEED_BINDING_OLDER 1     // samplerBuffer: the older copy
+#define BAND_SPEED_BINDING_PARTIALS 2  // storage buffer, vec2 [s]: (sum, count)
+#define BAND_SPEED_PARAMETERS(FIELD) FIELD(int, slots)
+
 #define BAND_DECLARE_FIELD(type, name) type name;
 
 #ifdef __cplusplus
@@ -68,6 +81,9 @@ struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
 static_assert(sizeof(StepParameters) == 15 * 4, "push constants: 15 words");
+struct SpeedParameters {
+  BAND_SPEED_PARAMETERS(BAND_DECLARE_FIELD)
+};
 }  // namespace lbmshape::band_shader
 #endif
 

@@ -49,7 +49,7 @@ vec4 fa[19], fb[19];  // the row's cells 0-3 and 4-7, pulled
 vec4 ownA[4], ownB[4];  // the same cells' own moments
 
 // vec4 index of moment `m` of row (yy, zz), half hh, of brick s.
-int momentAt(int s, int m, int yy, int zz, int hh) { return ((s * 4 + m) * 64 + (zz * 8 + yy)) * 2 + hh; }
+int momentAt(int s, int m, int yy, int zz, int hh) { return BAND_MOMENT_INDEX(s, m, zz * 8 + yy, hh); }
 int neighbourSlot(int dx, int dy, int dz) { return texelFetch(neighbours, slot * 27 + (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1)).x; }
 vec4 moment(int index) { return texelFetch(moments, index); }
 

@@ -27,6 +27,7 @@
 
 #include "band/band_field.hpp"
 #include "lbm/stepping_solver.hpp"
+#include "lbm/surface_change.hpp"
 
 namespace lbmshape {
 
@@ -73,6 +74,11 @@ public:
   // the band, only a copy of one float a cell. Throws std::logic_error with
   // a source or before `back` steps.
   virtual BandField storedField(int back) = 0;
+  // How far the surface moved from storedField(2) to storedField(1)
+  // (meanSurfaceChange), under the same conditions. The CPU reference
+  // compares the two fields; the Vulkan solver sums on the device and reads
+  // back two floats a brick instead of two fields.
+  virtual double surfaceSpeed() { return meanSurfaceChange(storedField(1).values(), storedField(2).values()); }
 };
 
 }  // namespace lbmshape

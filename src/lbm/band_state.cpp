@@ -39,11 +39,19 @@ std::vector<int32_t> slotsToStep(const BrickSet& bricks, const std::vector<uint8
 
 std::vector<float> omegaFromGamma(const BandField& gamma)
 {
-  std::vector<float> omega(gamma.values().size());
-  for (size_t i = 0; i < omega.size(); ++i) {
-    relaxation::checkGamma(gamma.values()[i], "per-cell gamma");
-    omega[i] = relaxation::singlePrecisionOmega(gamma.values()[i]);
+  const std::vector<float>& g = gamma.values();
+  std::vector<float> omega(g.size());
+  // Checked in parallel, the first bad value reported after the loop: an
+  // exception may not leave an OpenMP loop.
+  size_t firstBad = g.size();
+#pragma omp parallel for schedule(static) reduction(min : firstBad)
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (relaxation::acceptableGamma(g[i]))
+      omega[i] = relaxation::singlePrecisionOmega(g[i]);
+    else
+      firstBad = std::min(firstBad, i);
   }
+  if (firstBad < g.size()) relaxation::checkGamma(g[firstBad], "per-cell gamma");
   return omega;
 }
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cstring>
 
+#include <glm/glm.hpp>
+
 #include "band_interface.h"
 #include "core/error.hpp"
 #include "core/memory_sizes.hpp"
@@ -51,6 +53,17 @@ std::vector<vk::DescriptorSetLayoutBinding> bindings()
           {BAND_BINDING_GAMMA, T::eStorageTexelBuffer, 1, {}}};
 }
 
+gpu::ProgramSpec speedProgram()
+{
+  using T = vk::DescriptorType;
+  return {"band_speed",
+          {{BAND_SPEED_BINDING_NEWER, T::eUniformTexelBuffer, 1, {}},
+           {BAND_SPEED_BINDING_OLDER, T::eUniformTexelBuffer, 1, {}},
+           {BAND_SPEED_BINDING_PARTIALS, T::eStorageBuffer, 1, {}}},
+          {},
+          sizeof(band_shader::SpeedParameters)};
+}
+
 }  // namespace
 
 // How the band's buffers split into pools of whole bricks, each within the
@@ -81,6 +94,8 @@ struct BandVulkanSolver::Resources {
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
         source(c, 16, texels, MemoryUse::Device),
+        partials(c, 8 * bricks->activeCount(),
+                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device),
         staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
                 vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
@@ -94,6 +109,7 @@ struct BandVulkanSolver::Resources {
     std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
     sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
     writeDescriptors();
+    writeSpeedDescriptors();
   }
 
   gpu::GpuContext& context;
@@ -108,10 +124,16 @@ struct BandVulkanSolver::Resources {
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
   GpuBuffer omega, source;
+  GpuBuffer partials;  // the surface-speed pass's (sum, count) per slot
   GpuBuffer staging;
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
   std::vector<vk::raii::DescriptorSet> sets;  // [k]: reads copy k, writes the other
+  // The surface-speed pass's: [k] reads copy k as the newer, the other as
+  // the older. Its own views: the moments buffers are never replaced.
+  std::vector<vk::raii::BufferView> speedViews;
+  vk::raii::DescriptorPool speedPool{nullptr};
+  std::vector<vk::raii::DescriptorSet> speedSets;
   // Batches of steps, recorded once each (by count, first copy, slots, push
   // constants and pipeline) and replayed; writeDescriptors() clears them.
   gpu::RecordedCommandCache recordedSteps;
@@ -178,6 +200,33 @@ struct BandVulkanSolver::Resources {
     context.device().updateDescriptorSets(writes, {});
   }
 
+  void writeSpeedDescriptors()
+  {
+    using T = vk::DescriptorType;
+    const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 2 * 2),
+                                                         vk::DescriptorPoolSize(T::eStorageBuffer, 2)};
+    speedPool = vk::raii::DescriptorPool(
+        context.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
+    const auto& setLayout = context.program(speedProgram()).setLayout;
+    const std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
+    speedSets = vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*speedPool, layouts));
+    for (const GpuBuffer& copy : moments)
+      speedViews.emplace_back(
+          context.device(),
+          vk::BufferViewCreateInfo({}, copy.handle(), vk::Format::eR32G32B32A32Sfloat, 0, VK_WHOLE_SIZE));
+    const vk::DescriptorBufferInfo partialsInfo(partials.handle(), 0, VK_WHOLE_SIZE);
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (size_t k = 0; k < 2; ++k) {
+      const vk::DescriptorSet set = *speedSets[k];
+      writes.emplace_back(set, BAND_SPEED_BINDING_NEWER, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr,
+                          &*speedViews[k]);
+      writes.emplace_back(set, BAND_SPEED_BINDING_OLDER, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr,
+                          &*speedViews[1 - k]);
+      writes.emplace_back(set, BAND_SPEED_BINDING_PARTIALS, 0, 1, T::eStorageBuffer, nullptr, &partialsInfo);
+    }
+    context.device().updateDescriptorSets(writes, {});
+  }
+
   // Fills `bytes` of a device buffer through the staging buffer, a chunk of
   // whole `unit`s at a time: fill(first, count, to) writes units
   // [first, first + count) at `to`.
@@ -191,6 +240,29 @@ struct BandVulkanSolver::Resources {
       fill(first, count, staging.mapped());
       context.runAndWait([&](vk::CommandBuffer cmd) {
         cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, first * unit, chunk));
+      });
+    }
+  }
+
+  // Fills `units` pieces of `unitBytes` of a device buffer, piece u at offset
+  // u * targetStride, through the staging buffer a chunk at a time:
+  // fill(first, count, to) packs pieces [first, first + count) at `to`.
+  // `before` is recorded ahead of the first chunk's copy, with its own
+  // barrier.
+  template <class Fill, class Before>
+  void uploadStrided(const GpuBuffer& target, uint64_t units, uint64_t unitBytes, uint64_t targetStride, Fill fill,
+                     Before before)
+  {
+    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unitBytes);
+    std::vector<vk::BufferCopy> regions;
+    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
+      const uint64_t count = std::min(unitsPerChunk, units - first);
+      fill(first, count, staging.mapped());
+      regions.clear();
+      for (uint64_t k = 0; k < count; ++k) regions.emplace_back(k * unitBytes, (first + k) * targetStride, unitBytes);
+      context.runAndWait([&](vk::CommandBuffer cmd) {
+        if (first == 0) before(cmd);
+        cmd.copyBuffer(staging.handle(), target.handle(), regions);
       });
     }
   }
@@ -404,22 +476,34 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
     r_->upload(gamma.data(), 4 * r_->cells, r_->omega);
     r_->paperRuleReady = true;
   }
-  // rho* and j* = 0 per brick, laid out [moment][cell], built a chunk at a
-  // time in the staging buffer; the second copy is the first's, on the
-  // device (bricks a step skips keep their moments in both).
-  r_->uploadUnits(r_->moments[0], r_->moments[0].bytes(), momentBytesPerSlot,
-                  [&](uint64_t first, uint64_t count, std::byte* to) {
-                    float* out = reinterpret_cast<float*>(to);
+  // rho* per brick (the first of its four moments, laid out [moment][cell])
+  // built a chunk at a time in the staging buffer, j* = 0 filled on the
+  // device: a quarter of the bytes cross from the host. The second copy is
+  // the first's, on the device (bricks a step skips keep their moments in
+  // both).
+  const vk::MemoryBarrier transferWritten(vk::AccessFlagBits::eTransferWrite,
+                                          vk::AccessFlagBits::eTransferWrite | vk::AccessFlagBits::eTransferRead);
+  auto afterTransfers = [&](vk::CommandBuffer cmd) {
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eTransfer, {}, transferWritten,
+                        {}, {});
+  };
+  r_->uploadStrided(
+      r_->moments[0], r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot,
+      [&](uint64_t first, uint64_t count, std::byte* to) {
+        float* out = reinterpret_cast<float*>(to);
 #pragma omp parallel for schedule(static)
-                    for (uint64_t k = 0; k < count; ++k) {
-                      float* brick = out + k * 4 * brickCells;
-                      const size_t firstCell = size_t(first + k) * brickCells;
-                      for (int l = 0; l < brickCells; ++l)
-                        brick[l] = band_state::collidedDensity(field, r_->sourceHost, firstCell + size_t(l));
-                      std::fill(brick + brickCells, brick + 4 * brickCells, 0.0f);
-                    }
-                  });
+        for (uint64_t k = 0; k < count; ++k) {
+          const size_t firstCell = size_t(first + k) * brickCells;
+          for (int l = 0; l < brickCells; ++l)
+            out[k * brickCells + size_t(l)] = band_state::collidedDensity(field, r_->sourceHost, firstCell + size_t(l));
+        }
+      },
+      [&](vk::CommandBuffer cmd) {
+        cmd.fillBuffer(r_->moments[0].handle(), 0, VK_WHOLE_SIZE, 0u);  // 0.0f
+        afterTransfers(cmd);
+      });
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    afterTransfers(cmd);
     cmd.copyBuffer(r_->moments[0].handle(), r_->moments[1].handle(), vk::BufferCopy(0, 0, r_->moments[0].bytes()));
   });
 
@@ -496,6 +580,30 @@ BandField BandVulkanSolver::storedField(int back)
                           {});
                     });
   return out;
+}
+
+double BandVulkanSolver::surfaceSpeed()
+{
+  band_state::checkStoredField(2, r_->steps, r_->sourceHost.has_value());
+  const uint32_t slots = uint32_t(r_->bricks->activeCount());
+  std::vector<glm::vec2> partials(slots);
+  auto& program = r_->context.program(speedProgram());
+  r_->download(r_->partials, r_->partials.bytes(), partials.data(), [&](vk::CommandBuffer cmd) {
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead), {}, {});
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->speedSets[size_t(r_->current)],
+                           {});
+    cmd.pushConstants<band_shader::SpeedParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0,
+                                                    band_shader::SpeedParameters{int(slots)});
+    cmd.dispatch(std::min<uint32_t>(slots, BAND_MAX_WORKGROUPS_X),
+                 (slots + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
+  });
+  double sum = 0.0, count = 0.0;
+  for (const glm::vec2& brick : partials) sum += double(brick.x), count += double(brick.y);
+  return count > 0.0 ? sum / count : 0.0;
 }
 
 BandField BandVulkanSolver::field()

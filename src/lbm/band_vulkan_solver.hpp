@@ -41,6 +41,7 @@ public:
   BandField field() override;
   BandField previousField() override;
   BandField storedField(int back) override;
+  double surfaceSpeed() override;
 
   // Bytes the solver keeps on the device per stored cell (both copies of
   // the moments, the field, the brick tables, and per-cell omega or source

@@ -9,7 +9,10 @@
 // tests/ measures which one the lattice obeys.
 #pragma once
 
+#include <cmath>
 #include <string_view>
+
+#include "core/parameter_bounds.hpp"
 
 namespace lbmshape::relaxation {
 
@@ -20,6 +23,12 @@ inline double omegaFromGamma(double gamma) { return 1.0 / tauFromGamma(gamma); }
 // it under the paper's rule: a per-cell gamma gives the same omega whether
 // the host or the device converts it.
 inline float singlePrecisionOmega(float gamma) { return 1.0f / (3.0f * gamma + 0.5f); }
+
+// What checkGamma accepts, without a message: for loops over every cell.
+inline bool acceptableGamma(double gamma)
+{
+  return std::isfinite(gamma) && gamma > 0.0 && gamma <= parameter_bounds::maxGamma;
+}
 
 // Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's
 // linear stability range 1/2 < tau (omega < 2), and small enough for the

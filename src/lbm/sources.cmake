@@ -7,5 +7,6 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/reference_solver.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relaxation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solver_state.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/surface_change.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vulkan_solver.cpp
 )

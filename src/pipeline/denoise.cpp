@@ -91,16 +91,44 @@ struct SmoothedField {
 };
 
 // What --steps auto reads from each kind of lattice. The grid computes the
-// field of the step it has reached (a pass over the lattice) and its other
-// copy still holds the step before: it reads at once. The band reads one
-// step late and with no pass: after step k its two copies of the moments
-// hold the fields of steps k - 1 and k - 2 (BandSolver::storedField).
-int readingLag(const LatticeSolver&) { return 0; }
-Volume measuredField(LatticeSolver& solver) { return solver.field(); }
-Volume fieldBeforeIt(LatticeSolver& solver) { return solver.previousField(); }
-int readingLag(const BandSolver&) { return 1; }
-BandField measuredField(BandSolver& solver) { return solver.storedField(1); }
-BandField fieldBeforeIt(BandSolver& solver) { return solver.storedField(2); }
+// field of the step it has reached (a pass over the lattice), reads it back
+// and compares it with the last on the host; its other copy still holds the
+// step before. The band reads one step late and with no pass: after step k
+// its two copies of the moments hold the fields of steps k - 1 and k - 2
+// (BandSolver::storedField), which it compares where they are
+// (BandSolver::surfaceSpeed): only the field it keeps is read back.
+class GridReading {
+public:
+  static constexpr int lag = 0;
+  GridReading(LatticeSolver& solver, const Volume& x0) : solver_(solver), speed_(x0.values()) {}
+  double speedOfTheStep()
+  {
+    last_ = solver_.field();
+    return speed_.advance(last_.values());
+  }
+  Volume fieldOfTheStep() { return std::move(last_); }
+  Volume fieldBeforeIt() { return solver_.previousField(); }
+
+private:
+  LatticeSolver& solver_;
+  smoothing_stop::SurfaceSpeed speed_;
+  Volume last_;
+};
+
+class BandReading {
+public:
+  static constexpr int lag = 1;
+  BandReading(BandSolver& solver, const BandField&) : solver_(solver) {}
+  double speedOfTheStep() { return solver_.surfaceSpeed(); }
+  BandField fieldOfTheStep() { return solver_.storedField(1); }
+  BandField fieldBeforeIt() { return solver_.storedField(2); }
+
+private:
+  BandSolver& solver_;
+};
+
+GridReading readingOf(LatticeSolver& solver, const Volume& x0) { return {solver, x0}; }
+BandReading readingOf(BandSolver& solver, const BandField& x0) { return {solver, x0}; }
 
 // --steps auto: the surface's speed after each step n, and once it has
 // levelled off the field one step back, which the lattice still holds.
@@ -109,16 +137,15 @@ SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& prog
 {
   using namespace smoothing_stop;
   InterruptibleSteps stepper(solver);
-  SurfaceSpeed speed(x0.values());
+  auto reading = readingOf(solver, x0);
   x0 = Field();
-  const int lag = readingLag(solver);
+  const int lag = reading.lag;
   double previous = 0.0;
   for (int n = 1;; ++n) {
     stepper.advanceTo(n + lag, stepsDone(solver), &progress);
-    Field x = measuredField(solver);
-    const double now = speed.advance(x.values());
-    if (levelledOff(n, previous, now)) return {fieldBeforeIt(solver), n - 1, n + lag};
-    if (n == mostSteps) return {std::move(x), n, n + lag};
+    const double now = reading.speedOfTheStep();
+    if (levelledOff(n, previous, now)) return {reading.fieldBeforeIt(), n - 1, n + lag};
+    if (n == mostSteps) return {reading.fieldOfTheStep(), n, n + lag};
     previous = now;
   }
 }

@@ -261,6 +261,38 @@ TEST_P(BandSolverTest, PreviousFieldIsTheFieldOneStepBack)
   EXPECT_THROW(band->storedField(3), std::logic_error);
 }
 
+// --steps auto reads how far the surface moved in a step without reading
+// the band back (BandSolver::surfaceSpeed): the same as comparing the two
+// stored fields on the host, to the rounding of the device's float sums.
+TEST_P(BandSolverTest, SurfaceSpeedIsTheMeanChangeOfTheStoredFields)
+{
+  const Extent3 extent{37, 29, 45};
+  Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
+  const Volume noise = testing::randomField(extent, -0.4f, 0.4f, 3);
+  for (size_t i = 0; i < field.size(); ++i) field.values()[i] += noise.values()[i];
+  auto bricks = testing::bricksNear(field, 7.0);
+  auto band = solver(bricks);
+  band->setUniformGamma(0.2);
+  band->initialize(testing::bandOf(field, bricks), 6.0);
+  band->step(1);
+  EXPECT_THROW(band->surfaceSpeed(), std::logic_error) << "two stored fields need two steps";
+  double previous = 1e30;
+  for (int step = 2; step <= 5; ++step) {
+    band->step(1);
+    const double onTheHost = meanSurfaceChange(band->storedField(1).values(), band->storedField(2).values());
+    const double speed = band->surfaceSpeed();
+    EXPECT_NEAR(speed, onTheHost, 1e-5 * onTheHost) << "after step " << step;
+    EXPECT_GT(speed, 0.0);
+    EXPECT_LT(speed, previous) << "the noise goes: the surface slows down";
+    previous = speed;
+  }
+  BandField target = testing::bandOf(field, bricks);
+  band->setSource(BandSource{std::move(target), 0.1f});
+  band->initialize(testing::bandOf(field, bricks), 6.0);
+  band->step(3);
+  EXPECT_THROW(band->surfaceSpeed(), std::logic_error) << "with a source rho* is not the field";
+}
+
 LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
 
 // The Vulkan solver against the CPU reference: near the grid's faces, with
@@ -319,10 +351,12 @@ TEST_F(BandVulkanStaging, ChunkedCopiesGiveTheSameField)
     solver.setGammaPerCell(gamma);
     solver.initialize(testing::bandOf(field, bricks), 6.0);
     solver.step(5);
-    return solver.field();
+    return std::pair{solver.field(), solver.surfaceSpeed()};
   };
-  const BandField chunked = run(3 * 4 * brickCells * 4 + 1000), whole = run(BandVulkanSolver::defaultStagingBytes);
+  const auto [chunked, chunkedSpeed] = run(3 * 4 * brickCells * 4 + 1000);
+  const auto [whole, wholeSpeed] = run(BandVulkanSolver::defaultStagingBytes);
   EXPECT_EQ(chunked.values(), whole.values());
+  EXPECT_EQ(chunkedSpeed, wholeSpeed) << "the per-brick sums, read back in chunks";
   EXPECT_NE(whole.values(), testing::bandOf(field, bricks).values());  // the steps changed something
 }
 

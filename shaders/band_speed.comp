@@ -1,0 +1,40 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The surface's speed between the narrow band's last two steps, measured
+// where the lattice is: --steps auto reads two floats a brick after each
+// step instead of the whole band (pipeline/smoothing_stop.hpp has the rule,
+// lbm/surface_change.hpp the same sum on the CPU). A workgroup is one brick,
+// an invocation one of its rows of eight cells; each brick's sum and count
+// go to its own pair of the partials, which the host adds up in double.
+#include "band_interface.h"
+
+layout(local_size_x = BAND_WORKGROUP_SIZE) in;
+layout(push_constant) uniform Parameters { BAND_SPEED_PARAMETERS(BAND_DECLARE_FIELD) } p;
+
+layout(set = 0, binding = BAND_SPEED_BINDING_NEWER) uniform samplerBuffer newer;
+layout(set = 0, binding = BAND_SPEED_BINDING_OLDER) uniform samplerBuffer older;
+layout(set = 0, binding = BAND_SPEED_BINDING_PARTIALS, std430) writeonly buffer Partials { vec2 partials[]; };
+
+shared vec2 rowSums[BAND_WORKGROUP_SIZE];
+
+void main()
+{
+  const int slot = int(gl_WorkGroupID.x + gl_WorkGroupID.y * BAND_MAX_WORKGROUPS_X);
+  if (slot >= p.slots) return;  // the whole workgroup: barrier() below stays uniform
+  const int row = int(gl_LocalInvocationID.x);
+  vec2 sum = vec2(0.0);
+  for (int part = 0; part < 2; ++part) {  // cells 0-3, then 4-7
+    const int index = BAND_MOMENT_INDEX(slot, 0, row, part);
+    const vec4 before = texelFetch(older, index);
+    const vec4 after = texelFetch(newer, index);
+    const vec4 onSurface = vec4(lessThan(abs(before), vec4(1.0)));
+    sum += vec2(dot(onSurface, abs(after - before)), dot(onSurface, vec4(1.0)));
+  }
+  rowSums[row] = sum;
+  barrier();
+  for (int stride = BAND_WORKGROUP_SIZE / 2; stride > 0; stride /= 2) {
+    if (row < stride) rowSums[row] += rowSums[row + stride];
+    barrier();
+  }
+  if (row == 0) partials[slot] = rowSums[0];
+}

@@ -231,9 +231,9 @@ void addBenchCommand(CLI::App& app, const CommonOptions& common)
                      "Time the narrow-band lattice, on the band a denoise would make around a sphere in the grid")
           ->excludes(paper);
   bench
-      ->add_option(
-          "--half-width", options->halfWidth,
-          "With --band: voxels each side of the surface that stream (default: a denoise's, 6 at the default gamma)")
+      ->add_option("--half-width", options->halfWidth,
+                   "With --band: voxels each side of the surface that stream (default: an isotropic denoise's, 6 at "
+                   "the default gamma; 7 by default, for the edge-finding copy)")
       ->needs(band);
   bench->callback([&common, options] { runBench(common, *options); });
 }

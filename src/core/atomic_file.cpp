@@ -72,6 +72,13 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   throw OutputError(failure(target_, "no free temporary file name in " + folder.string()));
 }
 
+std::ofstream AtomicFile::open() const
+{
+  // in | out is fopen's "r+": the file must exist. It is empty until written
+  // (the constructor made it so), so nothing needs truncating.
+  return std::ofstream(temporary_, std::ios::binary | std::ios::in | std::ios::out);
+}
+
 AtomicFile::~AtomicFile()
 {
   if (committed_ || temporary_.empty()) return;

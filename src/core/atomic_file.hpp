@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 
 namespace lbmshape {
 
@@ -26,6 +27,11 @@ public:
   // Hidden, in the target's folder, and ending with the target's extension,
   // so that writers which choose the format by file name write the right one.
   const std::filesystem::path& temporaryPath() const { return temporary_; }
+  // The temporary file opened for writing from its start, never made again:
+  // once the last-resort handler has removed it (temporary_files.hpp), the
+  // stream fails instead of leaving a new file behind. Writers use this
+  // rather than opening temporaryPath() with a mode that creates files.
+  std::ofstream open() const;
 
   // Flushes the temporary file to disk and renames it to the target
   // (replacing any file there). Throws OutputError naming the target.

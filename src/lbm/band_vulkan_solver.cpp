@@ -109,7 +109,6 @@ struct BandVulkanSolver::Resources {
     std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
     sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
     writeDescriptors();
-    writeSpeedDescriptors();
   }
 
   gpu::GpuContext& context;
@@ -200,8 +199,11 @@ struct BandVulkanSolver::Resources {
     context.device().updateDescriptorSets(writes, {});
   }
 
+  // Made on the first surfaceSpeed(): a morph never asks for it, and
+  // lavapipe compiles every pipeline it creates.
   void writeSpeedDescriptors()
   {
+    if (!speedSets.empty()) return;
     using T = vk::DescriptorType;
     const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 2 * 2),
                                                          vk::DescriptorPoolSize(T::eStorageBuffer, 2)};
@@ -585,6 +587,7 @@ BandField BandVulkanSolver::storedField(int back)
 double BandVulkanSolver::surfaceSpeed()
 {
   band_state::checkStoredField(2, r_->steps, r_->sourceHost.has_value());
+  r_->writeSpeedDescriptors();
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
   std::vector<glm::vec2> partials(slots);
   auto& program = r_->context.program(speedProgram());

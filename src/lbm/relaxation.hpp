@@ -27,7 +27,8 @@ inline float singlePrecisionOmega(float gamma) { return 1.0f / (3.0f * gamma + 0
 // What checkGamma accepts, without a message: for loops over every cell.
 inline bool acceptableGamma(double gamma)
 {
-  return std::isfinite(gamma) && gamma > 0.0 && gamma <= parameter_bounds::maxGamma;
+  return std::isfinite(gamma) && gamma > 0.0 && gamma <= parameter_bounds::maxGamma &&
+         float(omegaFromGamma(gamma)) < 2.0f;  // omega in fp32 (checkGamma says why)
 }
 
 // Throws UsageError unless 0 < gamma <= parameter_bounds::maxGamma: tau inside BGK's

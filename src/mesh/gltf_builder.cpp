@@ -319,7 +319,7 @@ void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile&
   // A compressed file of no surface is the plain file of no surface: nothing
   // to encode, so neither extension.
   const bool compressed = model.buffers.size() == 2 && !model.buffers[0].data.empty();
-  std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
+  std::ofstream out = file.open();
   tinygltf::TinyGLTF writer;
   const tinygltf::Model* toWrite = &model;
   tinygltf::Model withoutBuffer;  // a file of no surface has no data

@@ -34,7 +34,7 @@ void writeObj(const TriangleMesh& mesh, const AtomicFile& file)
   const bool withNormals = mesh.normals.size() == mesh.positions.size();
   // Vertex colours as MeshLab writes them: "v x y z r g b".
   const bool withColours = mesh.colours.size() == mesh.positions.size();
-  std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
+  std::ofstream out = file.open();
   out << "# lbmshape " << LBMSHAPE_VERSION << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
       << " triangles\n";
   std::string line;

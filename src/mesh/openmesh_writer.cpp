@@ -32,7 +32,7 @@ void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const Atomic
 
   // Into our own stream rather than by file name: OpenMesh's writers do not
   // check that their output reached the disk, this stream does.
-  std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
+  std::ofstream out = file.open();
   SoupExporter exporter(mesh, std::move(normals));
   bool ok = false;
   std::string diagnostic;

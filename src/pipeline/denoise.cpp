@@ -81,8 +81,9 @@ void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, 
 void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
 void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
 
-// A smoothed field, the steps that made it, and the steps the lattice ran
-// (with --steps auto, one or two more, to see the speed level off).
+// A smoothed field, the steps that made it, and every step the lattice ran
+// (with --steps auto one or two more, to see the speed level off, and with
+// --preserve-features the edge-finding copy's): what MLUPS count.
 template <class Field>
 struct SmoothedField {
   Field field;
@@ -187,6 +188,11 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
     start(solver, field, halfWidth);
     return runSteps(solver, std::move(field), o, progress);
   case Smoothing::PreserveFeatures: {
+    if (o.steps == 0) {  // conversion alone: no edges to find
+      solver.setUniformGamma(o.gamma);
+      start(solver, field, halfWidth);
+      return runSteps(solver, std::move(field), o, progress);
+    }
     const FeatureProbe probe = featureProbe();
     const int steps = o.steps.value_or(smoothing_stop::mostSteps);
     const double probeShare = double(probe.steps) / (probe.steps + steps);
@@ -195,7 +201,9 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
     stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
     solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
     start(solver, field, halfWidth);
-    return runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
+    SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
+    smoothed.stepsRun += probe.steps;
+    return smoothed;
   }
   }
   throw std::logic_error("unknown smoothing");
@@ -206,7 +214,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
 double bandHalfWidth(const DenoiseOptions& o)
 {
   const double smoothing = streamingHalfWidth(o.gamma, o.steps.value_or(smoothing_stop::mostSteps));
-  if (o.smoothing != Smoothing::PreserveFeatures) return smoothing;
+  if (o.smoothing != Smoothing::PreserveFeatures || o.steps == 0) return smoothing;
   const FeatureProbe probe = featureProbe();
   return std::max(smoothing, streamingHalfWidth(probe.gamma, probe.steps));
 }

@@ -11,8 +11,16 @@ namespace lbmshape::render {
 
 void writePng(const Image& image, AtomicFile& file)
 {
-  if (!stbi_write_png(file.temporaryPath().c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
+  // Through the file's own stream: stb's by-name writer would make the file
+  // again if the last-resort handler had removed it (AtomicFile::open).
+  std::ofstream out = file.open();
+  const auto append = [](void* stream, void* data, int size) {
+    static_cast<std::ofstream*>(stream)->write(static_cast<const char*>(data), size);
+  };
+  if (!out || !stbi_write_png_to_func(append, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4) ||
+      !out.flush())
     throw OutputError("cannot write " + file.target().string() + " (is the disk full?)");
+  out.close();
   file.commit();
 }
 

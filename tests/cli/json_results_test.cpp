@@ -98,7 +98,7 @@ TEST(JsonResults, BenchBandReportsTheBandAndItsSpeed)
       testing::runLbmshape({"bench", "--band", "--json", "--size", "48,40,40", "--steps", "2", "--runs", "1"}));
   EXPECT_EQ(j["device"], selectedDeviceName());
   const auto& band = j["band"];
-  EXPECT_EQ(band["half_width"], 6.0) << "a denoise's at the defaults (lbm/band_width.hpp)";
+  EXPECT_EQ(band["half_width"], 6.0) << "an isotropic denoise's at the default gamma (lbm/band_width.hpp)";
   const size_t stored = band["stored_cells"], stepped = band["stepped_cells"], streaming = band["streaming_cells"];
   EXPECT_EQ(stored, band["bricks"].get<size_t>() * 512);
   EXPECT_LE(streaming, stepped);

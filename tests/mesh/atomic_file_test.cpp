@@ -3,6 +3,7 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <thread>
@@ -14,6 +15,9 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/temporary_files.hpp"
+#include "mesh/gltf_writer.hpp"
+#include "mesh/obj_writer.hpp"
+#include "mesh/openmesh_writer.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 
@@ -107,6 +111,24 @@ TEST(AtomicFileDeathTest, ASecondCtrlCEndsTheProcessAndLeavesNoTemporaryFile)
       },
       ::testing::KilledBySignal(SIGINT), "");
   EXPECT_TRUE(folder.entries().empty()) << ::testing::PrintToString(folder.entries());
+}
+
+// A writer opens the temporary file the constructor made; if it has gone
+// (the last-resort handler removed it while the content was being built),
+// the write fails instead of making it again.
+TEST(AtomicFile, AWriterNeverMakesTheTemporaryFileAgain)
+{
+  testing::ScratchFolder folder;
+  const TriangleMesh mesh = testing::icosphere(1);
+  for (const auto& [name, write] : std::vector<std::pair<std::string, std::function<void(const AtomicFile&)>>>{
+           {"a.obj", [&](const AtomicFile& f) { writeObj(mesh, f); }},
+           {"a.glb", [&](const AtomicFile& f) { writeGltf(mesh, MeshFormat::Glb, f); }},
+           {"a.ply", [&](const AtomicFile& f) { writeWithOpenMesh(mesh, MeshFormat::Ply, f); }}}) {
+    AtomicFile file(folder / name);
+    std::filesystem::remove(file.temporaryPath());
+    EXPECT_THROW(write(file), OutputError) << name;
+    EXPECT_FALSE(std::filesystem::exists(file.temporaryPath())) << name;
+  }
 }
 
 // The handler runs on one thread while the others go on writing: once it has

@@ -18,11 +18,17 @@ std::vector<glm::vec4> collidedEquilibrium(const BandField& field, const std::op
 
 std::vector<uint8_t> onlyCellsInTheGrid(std::vector<uint8_t> streams, const BrickSet& bricks)
 {
-  for (size_t s = 0; s < bricks.activeCount(); ++s)
+  const Extent3& e = bricks.cells();
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < bricks.activeCount(); ++s) {
+    // Only the bricks at the grid's far faces reach beyond it.
+    const glm::ivec3 end = brickEdge * (bricks.brick(int32_t(s)) + 1);
+    if (end.x <= e.nx && end.y <= e.ny && end.z <= e.nz) continue;
     for (int local = 0; local < brickCells; ++local) {
       const glm::ivec3 c = bricks.cell(int32_t(s), local);
-      if (!bricks.cells().contains(c.x, c.y, c.z)) streams[s * brickCells + size_t(local)] = 0;
+      if (!e.contains(c.x, c.y, c.z)) streams[s * brickCells + size_t(local)] = 0;
     }
+  }
   return streams;
 }
 

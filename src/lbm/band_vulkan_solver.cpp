@@ -516,6 +516,7 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));
   r_->upload(work.data(), work.size() * 4, r_->work);
   std::vector<uint32_t> rows(64 * r_->bricks->activeCount(), 0);
+#pragma omp parallel for schedule(static)
   for (size_t row = 0; row < rows.size(); ++row)
     for (int x = 0; x < brickEdge; ++x) rows[row] |= uint32_t(streams[row * brickEdge + size_t(x)]) << x;
   r_->upload(rows.data(), rows.size() * 4, r_->streams);

@@ -106,6 +106,14 @@ BandField BandReferenceSolver::storedField(int back)
   return out;
 }
 
+double BandReferenceSolver::surfaceSpeed()
+{
+  // storedField(1) against storedField(2), read where they are.
+  band_state::checkStoredField(2, steps_, source_.has_value());
+  return meanSurfaceChangeOf(
+      current_.size(), [&](size_t i) { return current_[i].x; }, [&](size_t i) { return next_[i].x; });
+}
+
 BandField BandReferenceSolver::field()
 {
   // Beyond the band nothing moves: the far sides are the initial field's.

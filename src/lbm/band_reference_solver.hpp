@@ -28,6 +28,7 @@ public:
   BandField field() override;
   BandField previousField() override;
   BandField storedField(int back) override;
+  double surfaceSpeed() override;
 
 private:
   template <bool Collide>

@@ -4,11 +4,31 @@
 // band_speed.comp sums the same on the device.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace lbmshape {
 
-// 0 when no cell of `before` is within a voxel of the surface.
+// Over cells 0..count-1, read through after(i) and before(i); 0 when no cell
+// of `before` is within a voxel of the surface.
+template <class After, class Before>
+double meanSurfaceChangeOf(size_t count, After after, Before before)
+{
+  double sum = 0.0;
+  long long near = 0;
+#pragma omp parallel for schedule(static) reduction(+ : sum, near)
+  for (size_t i = 0; i < count; ++i) {
+    const float b = before(i);
+    if (std::abs(b) < 1.0f) {
+      sum += std::abs(double(after(i)) - double(b));
+      ++near;
+    }
+  }
+  return near > 0 ? sum / double(near) : 0.0;
+}
+
+// The same over two fields of equal size.
 double meanSurfaceChange(const std::vector<float>& after, const std::vector<float>& before);
 
 }  // namespace lbmshape

@@ -32,10 +32,11 @@ struct BenchSettings {
 };
 
 // The settings the CPU reference is timed with: the user's, with runs of at
-// most about 0.4 s and no warm-up beyond the first step. Where the device is a real GPU, the grid it steps in a
-// few milliseconds takes the reference seconds a step; `bench --size
-// 256,256,256` on an H100 spent over 30 s timing the reference alone. A
-// rate needs no more steps than it takes to measure it.
+// most about 0.4 s and no warm-up beyond the first step. Where the device
+// is a real GPU, the grid it steps in a few milliseconds takes the
+// reference seconds a step; `bench --size 256,256,256` on an H100 spent
+// over 30 s timing the reference alone. A rate needs no more steps than it
+// takes to measure it.
 BenchSettings referenceSettings(BenchSettings settings);
 
 // Runs `settings.runs` times `settings.steps` steps on a random field after

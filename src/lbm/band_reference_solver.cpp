@@ -5,6 +5,7 @@
 #include "lbm/d3q19.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/solver_state.hpp"
+#include "lbm/surface_change.hpp"
 
 namespace lbmshape {
 

@@ -27,7 +27,6 @@
 
 #include "band/band_field.hpp"
 #include "lbm/stepping_solver.hpp"
-#include "lbm/surface_change.hpp"
 
 namespace lbmshape {
 
@@ -75,10 +74,10 @@ public:
   // a source or before `back` steps.
   virtual BandField storedField(int back) = 0;
   // How far the surface moved from storedField(2) to storedField(1)
-  // (meanSurfaceChange), under the same conditions. The CPU reference
-  // compares the two fields; the Vulkan solver sums on the device and reads
-  // back two floats a brick instead of two fields.
-  virtual double surfaceSpeed() { return meanSurfaceChange(storedField(1).values(), storedField(2).values()); }
+  // (lbm/surface_change.hpp), under the same conditions, without reading
+  // either back: the CPU reference reads its moments in place, the Vulkan
+  // solver sums on the device and reads back two floats a brick.
+  virtual double surfaceSpeed() = 0;
 };
 
 }  // namespace lbmshape

@@ -16,9 +16,10 @@
 //     W = min(n + 2, 1 + ceil(2 sqrt(4 gamma n))), at least 3:
 // 6 voxels for 7 steps of 0.2 (instead of 9), 7 for denoise's default,
 // whose edge-finding copy takes 5 steps of 0.57 (pipeline/feature_probe.hpp),
-// 8 for a 48-frame morph at 0.05 (instead of 49). Measured (docs/lattice-theory.md): the armadillo denoised at 128
-// and 256 cells with W from 4 to 9 lies equally close to the dense grid's
-// result (0.0026 voxel mean at 128, the same Hausdorff distance).
+// 8 for a 48-frame morph at 0.05 (instead of 49). Measured
+// (docs/lattice-theory.md): the armadillo denoised at 128 and 256 cells
+// with W from 4 to 9 lies equally close to the dense grid's result (0.0026
+// voxel mean at 128, the same Hausdorff distance).
 #pragma once
 
 #include <algorithm>

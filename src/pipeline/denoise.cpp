@@ -169,6 +169,10 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
   return smoothed;
 }
 
+// Whether the smoothing first finds the edges on a copy (feature_probe.hpp):
+// --preserve-features, unless there are no steps (conversion alone).
+bool findsEdges(const DenoiseOptions& o) { return o.smoothing == Smoothing::PreserveFeatures && o.steps != 0; }
+
 // Runs the smoothing on `solver`, starting from `field`; a band solver
 // streams the cells within `halfWidth` of the surface. `field` is let go
 // once the solver has taken it, so that its memory is free while the
@@ -176,9 +180,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
 template <class Solver, class Field>
 SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWidth, Progress& progress)
 {
-  switch (o.smoothing) {
-  case Smoothing::Isotropic:
-  case Smoothing::Anisotropic:
+  if (!findsEdges(o)) {
     // The paper's rule (Eq. 20) runs inside the solver, on the device:
     // nothing leaves it between steps.
     if (o.smoothing == Smoothing::Anisotropic)
@@ -187,26 +189,18 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
       solver.setUniformGamma(o.gamma);
     start(solver, field, halfWidth);
     return runSteps(solver, std::move(field), o, progress);
-  case Smoothing::PreserveFeatures: {
-    if (o.steps == 0) {  // conversion alone: no edges to find
-      solver.setUniformGamma(o.gamma);
-      start(solver, field, halfWidth);
-      return runSteps(solver, std::move(field), o, progress);
-    }
-    const FeatureProbe probe = featureProbe();
-    const int steps = o.steps.value_or(smoothing_stop::mostSteps);
-    const double probeShare = double(probe.steps) / (probe.steps + steps);
-    solver.setUniformGamma(probe.gamma);
-    start(solver, field, halfWidth);
-    stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
-    solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
-    start(solver, field, halfWidth);
-    SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
-    smoothed.stepsRun += probe.steps;
-    return smoothed;
   }
-  }
-  throw std::logic_error("unknown smoothing");
+  const FeatureProbe probe = featureProbe();
+  const int steps = o.steps.value_or(smoothing_stop::mostSteps);
+  const double probeShare = double(probe.steps) / (probe.steps + steps);
+  solver.setUniformGamma(probe.gamma);
+  start(solver, field, halfWidth);
+  stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
+  solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
+  start(solver, field, halfWidth);
+  SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
+  smoothed.stepsRun += probe.steps;
+  return smoothed;
 }
 
 // How far from the surface the band streams: as far as the smoothing's
@@ -214,7 +208,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
 double bandHalfWidth(const DenoiseOptions& o)
 {
   const double smoothing = streamingHalfWidth(o.gamma, o.steps.value_or(smoothing_stop::mostSteps));
-  if (o.smoothing != Smoothing::PreserveFeatures || o.steps == 0) return smoothing;
+  if (!findsEdges(o)) return smoothing;
   const FeatureProbe probe = featureProbe();
   return std::max(smoothing, streamingHalfWidth(probe.gamma, probe.steps));
 }

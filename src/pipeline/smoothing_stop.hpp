@@ -20,10 +20,11 @@ inline constexpr int fewestSteps = 2;
 inline constexpr int mostSteps = 7;
 inline constexpr double levelRatio = 0.85;
 
-// The surface's speed from one field to the next: the mean |X - X before|
-// over the cells where |X before| < 1 voxel. Only those cells of the field
-// before are kept (a sixth of the narrow band), with one bit a cell saying
-// which they are: at --res 512, 9 MB instead of a 44 MB field.
+// The surface's speed from one field to the next, for the grid (--dense),
+// which reads its fields back: the measure of lbm/surface_change.hpp (the
+// band computes it in place, BandSolver::surfaceSpeed), with only the cells
+// of the field before where |X before| < 1 voxel kept, one bit a cell
+// saying which they are: about a sixth of the memory of a whole field.
 class SurfaceSpeed {
 public:
   explicit SurfaceSpeed(const std::vector<float>& start) { remember(start); }

@@ -10,6 +10,7 @@
 #include "lbm/band_vulkan_solver.hpp"
 #include "lbm/band_width.hpp"
 #include "lbm/relaxation.hpp"
+#include "lbm/surface_change.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 

@@ -37,6 +37,16 @@
 #define BAND_BINDING_WORK 8        // isamplerBuffer
 #define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule
 
+// What a dispatch of band_step.comp does (the push constant `pass`): one
+// pipeline for all of it, since lavapipe spends some 100 ms on each.
+#define BAND_PASS_FIELD 0           // X of every stored cell to the field buffer
+#define BAND_PASS_STEP 1            // a lattice step
+#define BAND_PASS_FIELD_TO_OMEGA 2  // X to the omega buffer, for the next pass
+// lbmshape's feature-preserving rule (src/lbm/adaptive_gamma.hpp) on the X
+// in the omega buffer: omega per stored cell to the field buffer, which the
+// host then copies into the omega buffer. Nothing goes back to the host.
+#define BAND_PASS_FEATURE_RULE 3
+
 // Specialization constants.
 #define BAND_SPEC_W_REST 0
 #define BAND_SPEC_W_AXIAL 1
@@ -55,10 +65,12 @@
   FIELD(float, decay)               \
   FIELD(float, baseScale)           \
   FIELD(float, gamma0)              \
-  FIELD(int, collide) /* 1: a step; 0: the field pass, X to the field buffer */ \
+  FIELD(int, pass) /* BAND_PASS_*: what the dispatch does */               \
   FIELD(int, perCellOmega) /* 1: omega from the omega buffer */                  \
   FIELD(int, hasSource)    /* 1: the morph's source term */                       \
-  FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */
+  FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */                \
+  FIELD(float, kappaEdge)  /* the feature rule's, BAND_PASS_FEATURE_RULE */       \
+  FIELD(float, lowestGamma) /* its lowest gamma, min(ADAPTIVE_GAMMA_LOWEST, gamma0) */
 
 // vec4 index of moment m (0..3) of row `row` (y + 8 z), half `half` (cells
 // 0-3 or 4-7) of brick slot s, in a copy of the moments.
@@ -80,7 +92,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 15 * 4, "push constants: 15 words");
+static_assert(sizeof(StepParameters) == 17 * 4, "push constants: 17 words");
 struct SpeedParameters {
   BAND_SPEED_PARAMETERS(BAND_DECLARE_FIELD)
 };

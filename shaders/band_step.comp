@@ -4,7 +4,9 @@
 // has the scheme; band_reference_solver.cpp is the same arithmetic on the
 // CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
 // J, apply the source, collide and store (rho*, j*). With the push constant
-// `collide` 0 it stores X instead: the field of the current state.
+// `pass` BAND_PASS_FIELD or BAND_PASS_FIELD_TO_OMEGA it stores X instead:
+// the field of the current state; with BAND_PASS_FEATURE_RULE it turns that
+// field, from the omega buffer, into omega per cell (featureRule()).
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
@@ -132,9 +134,13 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   }
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
-  if (p.collide == 0) {
+  if (p.pass == BAND_PASS_FIELD) {
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
+    return;
+  }
+  if (p.pass == BAND_PASS_FIELD_TO_OMEGA) {
+    imageStore(gammaPerCell, cells, X);
     return;
   }
   vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
@@ -153,6 +159,64 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   nextPools[pool].v[momentAt(first, 3, y, z, part)] = (1.0 - omega) * Jz;
 }
 
+// Row (y + dy, z + dz) of X from the omega buffer (where
+// BAND_PASS_FIELD_TO_OMEGA put it), as cells 0-3 and 4-7, from this brick
+// or the one beside it; the own row where it is beyond the grid's faces
+// (zero flux: a neighbour there reads as the cell itself, as on the CPU) or
+// in a brick outside the band. The CPU reads the far value there instead:
+// only cells at the band's edge have such a neighbour, and they never
+// stream (a streaming cell has its 18 lattice neighbours in the band), so
+// their flux j* starts at 0 and stays 0 whatever omega they get: the steps
+// come out the same.
+void fieldRow(int dy, int dz, out vec4 a, out vec4 b)
+{
+  const int yy = y + dy, zz = z + dz;
+  const int by = yy < 0 ? -1 : (yy > 7 ? 1 : 0), bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);
+  const int rowSlot = neighbourSlot(0, by, bz);
+  const bool valid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 && origin.z + zz < p.nz &&
+                     rowSlot >= 0;
+  const int s = valid ? rowSlot : slot, ly = valid ? yy & 7 : y, lz = valid ? zz & 7 : z;
+  a = texelFetch(omegaPerCell, (s * 64 + lz * 8 + ly) * 2);
+  b = texelFetch(omegaPerCell, (s * 64 + lz * 8 + ly) * 2 + 1);
+}
+
+// lbmshape's feature-preserving rule for the row's eight cells (the CPU
+// form, which the reference solver applies, is in src/lbm/adaptive_gamma.hpp):
+//     kappa = the 7-point Laplacian of X,
+//     gamma = clamp(gamma0 / (1 + (kappa / kappaEdge)^2), lowest, gamma0),
+// and omega = 1 / (3 gamma + 1/2) into the field buffer. Cells beyond the
+// grid (in bricks at its far faces) have kappa 0.
+void featureRule()
+{
+  vec4 ownA, ownB, downA, downB, upA, upB, backA, backB, frontA, frontB;
+  fieldRow(0, 0, ownA, ownB);
+  fieldRow(-1, 0, downA, downB);
+  fieldRow(1, 0, upA, upB);
+  fieldRow(0, -1, backA, backB);
+  fieldRow(0, 1, frontA, frontB);
+  // Along x: the cells beside the row's ends from the bricks beside it.
+  const int leftSlot = neighbourSlot(-1, 0, 0), rightSlot = neighbourSlot(1, 0, 0);
+  const float left = origin.x > 0 && leftSlot >= 0 ? texelFetch(omegaPerCell, (leftSlot * 64 + z * 8 + y) * 2 + 1).w
+                                                   : ownA.x;
+  const float right = rightSlot >= 0 ? texelFetch(omegaPerCell, (rightSlot * 64 + z * 8 + y) * 2).x : ownB.w;
+  const vec4 leftA = vec4(left, ownA.xyz), leftB = vec4(ownA.w, ownB.xyz);
+  vec4 rightA = vec4(ownA.yzw, ownB.x), rightB = vec4(ownB.yzw, right);
+  // A cell at the grid's last x reads itself as its right neighbour.
+  rightA = mix(rightA, ownA, greaterThanEqual(origin.x + ivec4(1, 2, 3, 4), ivec4(p.nx)));
+  rightB = mix(rightB, ownB, greaterThanEqual(origin.x + ivec4(5, 6, 7, 8), ivec4(p.nx)));
+  const vec4 kappaA = leftA + rightA + downA + upA + backA + frontA - 6.0 * ownA;
+  const vec4 kappaB = leftB + rightB + downB + upB + backB + frontB - 6.0 * ownB;
+  const vec4 rA = kappaA / p.kappaEdge, rB = kappaB / p.kappaEdge;
+  vec4 gammaA = clamp(p.gamma0 / (1.0 + rA * rA), p.lowestGamma, p.gamma0);
+  vec4 gammaB = clamp(p.gamma0 / (1.0 + rB * rB), p.lowestGamma, p.gamma0);
+  const bool rowInGrid = origin.y + y < p.ny && origin.z + z < p.nz;
+  gammaA = mix(vec4(p.gamma0), gammaA, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx))));
+  gammaB = mix(vec4(p.gamma0), gammaB, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx))));
+  const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
+  fieldPools[pool].v[(first * 64 + z * 8 + y) * 2] = 1.0 / (3.0 * gammaA + 0.5);
+  fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + 1] = 1.0 / (3.0 * gammaB + 0.5);
+}
+
 void main()
 {
   const int item = int(gl_WorkGroupID.x + gl_WorkGroupID.y * BAND_MAX_WORKGROUPS_X);
@@ -162,6 +226,10 @@ void main()
   y = lane & 7;
   z = lane >> 3;
   origin = texelFetch(origins, slot).xyz;
+  if (p.pass == BAND_PASS_FEATURE_RULE) {
+    featureRule();
+    return;
+  }
   const uint rowBits = texelFetch(streamBits, slot * 64 + z * 8 + y).x;
   const vec4 streamsA = vec4(notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0)));
   const vec4 streamsB = vec4(notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0)));

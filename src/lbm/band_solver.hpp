@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "band/band_field.hpp"
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/stepping_solver.hpp"
 
 namespace lbmshape {
@@ -48,6 +49,14 @@ public:
   virtual void setGammaPerCell(const BandField& gamma) = 0;
   // The paper's anisotropic rule, as LatticeSolver::setPaperRule describes.
   virtual void setPaperRule(double gamma0) = 0;
+  // lbmshape's feature-preserving rule (adaptive_gamma::featurePreservingRule)
+  // on the field now, as gamma per cell. Here the field is read back and
+  // the rule runs on the host (the CPU reference); BandVulkanSolver runs it
+  // on the device, reading nothing back.
+  virtual void setFeaturePreservingGamma(double gamma0, double kappaEdge)
+  {
+    setGammaPerCell(adaptive_gamma::featurePreservingRule(field(), gamma0, kappaEdge));
+  }
   virtual void setSource(std::optional<BandSource> source) = 0;
   // The source's decay and scale, its base kept (LatticeSolver's).
   virtual void setSourceStrength(float decay, float scale) = 0;

@@ -11,6 +11,7 @@
 #include "core/memory_sizes.hpp"
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/relaxation.hpp"
@@ -140,7 +141,7 @@ struct BandVulkanSolver::Resources {
   int current = 0;
   int steps = 0;
   float uniformOmega = 1.0f;
-  std::vector<float> omegaPerCell;        // host copy: initialize() needs it
+  bool perCellOmega = false;              // the omega buffer holds omega per cell
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
   bool paperRuleReady = false;            // initialize() has seeded its gamma
   std::optional<BandSource> sourceHost;
@@ -345,8 +346,8 @@ struct BandVulkanSolver::Resources {
     p.decay = sourceHost ? sourceHost->decay : 0.0f;
     p.baseScale = sourceHost ? sourceHost->scale : 1.0f;
     p.gamma0 = float(paperRuleGamma0.value_or(0.0));
-    p.collide = everySlot ? 0 : 1;
-    p.perCellOmega = omegaPerCell.empty() ? 0 : 1;
+    p.pass = everySlot ? BAND_PASS_FIELD : BAND_PASS_STEP;
+    p.perCellOmega = perCellOmega ? 1 : 0;
     p.hasSource = sourceHost ? 1 : 0;
     p.paperRule = paperRuleGamma0 ? 1 : 0;
     return p;
@@ -433,7 +434,7 @@ void BandVulkanSolver::setUniformGamma(double gamma)
 {
   relaxation::checkGamma(gamma);
   r_->uniformOmega = float(relaxation::omegaFromGamma(gamma));
-  r_->omegaPerCell.clear();
+  r_->perCellOmega = false;
   r_->paperRuleGamma0.reset();
 }
 
@@ -448,10 +449,51 @@ void BandVulkanSolver::setPaperRule(double gamma0)
 void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
 {
   band_state::checkSameBricks(*r_->bricks, gamma, "gamma");
-  r_->omegaPerCell = band_state::omegaFromGamma(gamma);
+  const std::vector<float> omega = band_state::omegaFromGamma(gamma);
+  r_->perCellOmega = true;
   r_->paperRuleGamma0.reset();
   r_->perCellBuffer();
-  r_->upload(r_->omegaPerCell.data(), 4 * r_->cells, r_->omega);
+  r_->upload(omega.data(), 4 * r_->cells, r_->omega);
+}
+
+void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge)
+{
+  // Before the first step the field is the host's, which initialize() got.
+  if (r_->steps == 0) return BandSolver::setFeaturePreservingGamma(gamma0, kappaEdge);
+  relaxation::checkGamma(gamma0);
+  if (!(kappaEdge > 0.0)) throw std::invalid_argument("the feature rule's edge curvature must be positive");
+  r_->perCellBuffer();
+  // In one submission: the field into the omega buffer, the rule from there
+  // into the field buffer, which is then copied over the omega buffer (the
+  // rule reads its cells' neighbours, so it cannot write where it reads).
+  auto& program = r_->context.program(r_->program());
+  band_shader::StepParameters push = r_->parameters(true);
+  auto shaderWritten = [](vk::CommandBuffer cmd, vk::PipelineStageFlags next, vk::AccessFlags access) {
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, next, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, access), {}, {});
+  };
+  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    push.pass = BAND_PASS_FIELD_TO_OMEGA;
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    r_->dispatch(cmd, program, r_->current, true);
+    shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader, vk::AccessFlagBits::eShaderRead);
+    push.pass = BAND_PASS_FEATURE_RULE;
+    push.gamma0 = float(gamma0);
+    push.kappaEdge = float(kappaEdge);
+    push.lowestGamma = float(std::min(adaptive_gamma::lowest, gamma0));
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    r_->dispatch(cmd, program, r_->current, true);
+    // The copy reads the field buffer and overwrites the omega buffer, which
+    // the first pass wrote.
+    shaderWritten(cmd, vk::PipelineStageFlagBits::eTransfer,
+                  vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eTransferWrite);
+    cmd.copyBuffer(r_->field.handle(), r_->omega.handle(), vk::BufferCopy(0, 0, 4 * r_->cells));
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eShaderRead), {}, {});
+  });
+  r_->perCellOmega = true;
+  r_->paperRuleGamma0.reset();
 }
 
 void BandVulkanSolver::setSource(std::optional<BandSource> source)

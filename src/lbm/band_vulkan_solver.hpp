@@ -32,6 +32,7 @@ public:
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const BandField& gamma) override;
   void setPaperRule(double gamma0) override;
+  void setFeaturePreservingGamma(double gamma0, double kappaEdge) override;
   void setSource(std::optional<BandSource> source) override;
   void setSourceStrength(float decay, float scale) override;
   using BandSolver::initialize;

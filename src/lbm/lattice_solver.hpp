@@ -17,6 +17,7 @@
 
 #include "core/extent.hpp"
 #include "core/volume.hpp"
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/stepping_solver.hpp"
 
 namespace lbmshape {
@@ -46,6 +47,14 @@ public:
   // the first step, gamma0). Call before initialize(); a
   // source cannot be set with it. Undone by the two setters above.
   virtual void setPaperRule(double gamma0) = 0;
+  // lbmshape's feature-preserving rule (adaptive_gamma::featurePreservingRule)
+  // on the field now, as gamma per cell: the field read back, the rule on
+  // the host (both grid solvers; the band's Vulkan solver keeps it on the
+  // device).
+  virtual void setFeaturePreservingGamma(double gamma0, double kappaEdge)
+  {
+    setGammaPerCell(adaptive_gamma::featurePreservingRule(field(), gamma0, kappaEdge));
+  }
 
   // Source term; std::nullopt removes it.
   virtual void setSource(std::optional<LinearSource> source) = 0;

@@ -196,7 +196,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   solver.setUniformGamma(probe.gamma);
   start(solver, field, halfWidth);
   stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
-  solver.setGammaPerCell(adaptive_gamma::featurePreservingRule(solver.field(), o.gamma, featureEdgeCurvature));
+  solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for the band's Vulkan solver
   start(solver, field, halfWidth);
   SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
   smoothed.stepsRun += probe.steps;

@@ -54,7 +54,7 @@ void BandReferenceSolver::setSource(std::optional<BandSource> source)
 
 void BandReferenceSolver::setSourceStrength(float decay, float scale) { setStrength(source_, decay, scale); }
 
-void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
+void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*bricks_, field, "field");
   solver_state::checkPaperRuleWithoutSource(paperRuleGamma0_.has_value(), source_.has_value());
@@ -69,7 +69,7 @@ void BandReferenceSolver::initialize(const BandField& field, std::vector<uint8_t
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
   streams_ = band_state::onlyCellsInTheGrid(std::move(streams), *bricks_);
   work_ = band_state::slotsToStep(*bricks_, streams_, source_.has_value());
-  initial_ = field;
+  initial_ = std::move(field);
   steps_ = 0;
 }
 

@@ -63,12 +63,15 @@ public:
 
   // Restart from field X, every cell at equilibrium (after setSource); the
   // cells flagged in `streams` (one byte a stored cell) stream, the others
-  // are held.
-  virtual void initialize(const BandField& field, std::vector<uint8_t> streams) = 0;
+  // are held. The solver keeps `field` until its first step (field() is
+  // it until then): a caller done with it moves it in, and the band is not
+  // held twice.
+  virtual void initialize(BandField field, std::vector<uint8_t> streams) = 0;
   // The same with the cells within `streamingHalfWidth` of the surface streaming.
-  void initialize(const BandField& field, double streamingHalfWidth)
+  void initialize(BandField field, double streamingHalfWidth)
   {
-    initialize(field, streamingCells(field, streamingHalfWidth));
+    std::vector<uint8_t> streams = streamingCells(field, streamingHalfWidth);
+    initialize(std::move(field), std::move(streams));
   }
 
   // The field X after the steps taken so far, on the same bricks; beyond

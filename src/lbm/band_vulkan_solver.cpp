@@ -511,7 +511,7 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
 
 void BandVulkanSolver::setSourceStrength(float decay, float scale) { setStrength(r_->sourceHost, decay, scale); }
 
-void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> streams)
+void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*r_->bricks, field, "field");
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
@@ -564,7 +564,7 @@ void BandVulkanSolver::initialize(const BandField& field, std::vector<uint8_t> s
   r_->upload(rows.data(), rows.size() * 4, r_->streams);
   r_->current = 0;
   r_->steps = 0;
-  r_->initial = field;
+  r_->initial = std::move(field);
 }
 
 void BandVulkanSolver::step(int count)

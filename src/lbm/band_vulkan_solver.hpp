@@ -36,7 +36,7 @@ public:
   void setSource(std::optional<BandSource> source) override;
   void setSourceStrength(float decay, float scale) override;
   using BandSolver::initialize;
-  void initialize(const BandField& field, std::vector<uint8_t> streams) override;
+  void initialize(BandField field, std::vector<uint8_t> streams) override;
   void step(int count) override;
   int stepsTaken() const override;
   BandField field() override;

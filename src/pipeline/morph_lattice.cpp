@@ -133,10 +133,10 @@ public:
       auto s = device.makeBandSolver(source_.sharedBricks());
       s->setUniformGamma(o.gamma);
       s->setSource(morphForce(o.cs));
-      s->initialize(source_, streams());
+      std::vector<uint8_t> flags = streams();
+      s->initialize(std::move(source_), std::move(flags));  // the solver keeps it until its first step
       return s;
     });
-    source_ = BandField();  // no longer needed
   }
 
   SteppingSolver& solver() override { return *solver_; }

@@ -89,8 +89,7 @@ struct BandVulkanSolver::Resources {
       : context(c), bricks(std::move(b)), cells(bricks->storedCells()),
         pools(c.description(), bricks->activeCount()), moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device),
                                                                GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
-        field(c, 4 * cells, storage, MemoryUse::Device),
-        streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
+        field(c, 16, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
         neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
@@ -117,7 +116,11 @@ struct BandVulkanSolver::Resources {
   size_t cells;
   BandPools pools;
   GpuBuffer moments[2];
-  GpuBuffer field, streams, neighbours, origins;
+  // The field buffer: 16 bytes until field() or the feature rule needs it
+  // (fieldBuffer()), so that a smoothing whose result comes from the
+  // moments (storedField) never holds it while it runs.
+  GpuBuffer field;
+  GpuBuffer streams, neighbours, origins;
   GpuBuffer work;  // the slots a step updates, then every slot (for the field)
   int stepWorks = 0;
   // 16 bytes until set: a valid view for the shader variants that ignore
@@ -313,6 +316,16 @@ struct BandVulkanSolver::Resources {
     downloadUnits(source, bytes, 1, 1, data, before);
   }
 
+  // The field buffer at its full size, one float a stored cell; with
+  // `full` false, back to 16 bytes.
+  void fieldBuffer(bool full)
+  {
+    const uint64_t bytes = full ? 4 * cells : 16;
+    if (field.bytes() == bytes) return;
+    field = GpuBuffer(context, bytes, storage, MemoryUse::Device);
+    writeDescriptors();
+  }
+
   // The omega buffer at its full size, one float a stored cell.
   void perCellBuffer()
   {
@@ -463,6 +476,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   relaxation::checkGamma(gamma0);
   if (!(kappaEdge > 0.0)) throw std::invalid_argument("the feature rule's edge curvature must be positive");
   r_->perCellBuffer();
+  r_->fieldBuffer(true);
   // In one submission: the field into the omega buffer, the rule from there
   // into the field buffer, which is then copied over the omega buffer (the
   // rule reads its cells' neighbours, so it cannot write where it reads).
@@ -494,6 +508,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   });
   r_->perCellOmega = true;
   r_->paperRuleGamma0.reset();
+  r_->fieldBuffer(false);  // its band-sized float a cell goes until field() needs it
 }
 
 void BandVulkanSolver::setSource(std::optional<BandSource> source)
@@ -658,6 +673,7 @@ BandField BandVulkanSolver::field()
   // (its values, kept until the first real step, are not copied).
   if (r_->steps == 0) return r_->initial;
   BandField out = r_->initial.sameShape();
+  r_->fieldBuffer(true);
   auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);

@@ -15,11 +15,46 @@ namespace lbmshape {
 ComputeDevice::ComputeDevice(const std::string& request, bool validation) : request_(request), validation_(validation)
 {}
 
-ComputeDevice::~ComputeDevice() = default;
-ComputeDevice::ComputeDevice(ComputeDevice&&) noexcept = default;
+ComputeDevice::~ComputeDevice() { finishWarmUp(); }
+
+ComputeDevice::ComputeDevice(ComputeDevice&& other) noexcept
+{
+  other.finishWarmUp();  // its thread works on `other`
+  request_ = std::move(other.request_);
+  validation_ = other.validation_;
+  instance_ = std::move(other.instance_);
+  chosen_ = other.chosen_;
+  gpu_ = std::move(other.gpu_);
+}
+
+void ComputeDevice::finishWarmUp() const
+{
+  if (!warmUp_.valid()) return;
+  try {
+    warmUp_.get();
+  } catch (...) {
+    // The first real use meets the same failure (warmUpForTheBand()).
+  }
+}
+
+void ComputeDevice::warmUpForTheBand() const
+{
+  if (isReference() || gpu_ || warmUp_.valid()) return;
+  warmUp_ = std::async(std::launch::async, [this] {
+    description();
+    gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
+    // A band of one brick: its solver compiles the band's pipeline and runs
+    // it once (lavapipe turns it into machine code then), for the GpuContext
+    // to keep.
+    auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
+    brick->activate(0, 0, 0);
+    BandVulkanSolver warm(*gpu_, std::move(brick));
+  });
+}
 
 const gpu::DeviceDescription& ComputeDevice::description() const
 {
+  const std::lock_guard lock(instanceMutex_);
   if (!instance_) {
     auto instance = std::make_shared<gpu::VulkanInstance>(validation_);
     chosen_ = gpu::chooseDevice(instance->devices(), request_);
@@ -28,11 +63,16 @@ const gpu::DeviceDescription& ComputeDevice::description() const
   return instance_->devices()[chosen_];
 }
 
-double ComputeDevice::deviceBusyMs() const { return gpu_ ? gpu_->deviceBusyMs() : 0.0; }
+double ComputeDevice::deviceBusyMs() const
+{
+  finishWarmUp();
+  return gpu_ ? gpu_->deviceBusyMs() : 0.0;
+}
 
 gpu::GpuContext* ComputeDevice::gpu() const
 {
   if (isReference()) return nullptr;
+  finishWarmUp();
   if (!gpu_) {
     description();
     gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
@@ -43,6 +83,7 @@ gpu::GpuContext* ComputeDevice::gpu() const
 gpu::GpuContext& ComputeDevice::drawingContext() const
 {
   if (!isReference()) return *gpu();
+  finishWarmUp();
   if (!gpu_) {
     if (!instance_) instance_ = std::make_shared<gpu::VulkanInstance>(validation_);
     chosen_ = gpu::chooseDevice(instance_->devices(), "");
@@ -102,6 +143,7 @@ void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, boo
 
 void ComputeDevice::requireCleanValidation() const
 {
+  finishWarmUp();
   const int messages = instance_ ? instance_->validationMessages() : 0;
   if (messages > 0)
     throw DeviceError("the Vulkan validation layer reported " + std::to_string(messages) +
@@ -110,6 +152,7 @@ void ComputeDevice::requireCleanValidation() const
 
 void ComputeDevice::close()
 {
+  finishWarmUp();
   gpu_.reset();
   requireCleanValidation();
 }

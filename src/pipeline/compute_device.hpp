@@ -6,7 +6,9 @@
 // bad input and impossible grids cost no device start-up.
 #pragma once
 
+#include <future>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "core/extent.hpp"
@@ -57,6 +59,17 @@ public:
   // are computed or anything is allocated for them.
   void checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const;
 
+  // Opens the Vulkan device and prepares the narrow band's pipeline on a
+  // thread of its own, so that a job's set-up overlaps its signed distance
+  // (lavapipe compiles the pipeline in some 150 ms; a real GPU's driver
+  // takes long to start: `lbmshape info` alone took 0.59 s on the H100).
+  // Does nothing for the reference or once the device is open. A failure
+  // there is left for the first real use to meet, where it would have come
+  // without the warm-up, so errors stay what and where they were. Every
+  // use of the device but description() (which a band's size check needs
+  // while the distances are computed) waits for it to end.
+  void warmUpForTheBand() const;
+
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;
   // Destroys the Vulkan device (the instance stays, so that what the layer
@@ -65,12 +78,15 @@ public:
 
 private:
   const gpu::DeviceDescription& description() const;  // creates the instance, chooses the device
+  void finishWarmUp() const;                          // waits for warmUpForTheBand()'s thread, if any
 
   std::string request_;
   bool validation_ = false;
+  mutable std::mutex instanceMutex_;  // instance_ and chosen_, which the warm-up's thread sets too
   mutable std::shared_ptr<gpu::VulkanInstance> instance_;
   mutable size_t chosen_ = 0;
   mutable std::unique_ptr<gpu::GpuContext> gpu_;
+  mutable std::future<void> warmUp_;  // the last member: the thread ends before the others go
 };
 
 }  // namespace lbmshape

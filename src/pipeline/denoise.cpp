@@ -275,6 +275,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
 {
   const double halfWidth = bandHalfWidth(o);
   BandField field = clock.time("sdf", [&](Progress& progress) {
+    device.warmUpForTheBand();  // the device opens while the distances are computed
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
     return signedDistanceBand(mesh, frame,
                               {.halfWidth = halfWidth, .progress = &progress, .checkBricks = [&](const BrickSet& b) {

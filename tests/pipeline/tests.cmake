@@ -3,6 +3,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/band_denoise_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_morph_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/denoise_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/device_warm_up_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/feature_probe_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/in_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_arrival_test.cpp

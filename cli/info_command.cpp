@@ -1,5 +1,6 @@
 #include "info_command.hpp"
 
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 
@@ -33,10 +34,14 @@ void runInfo(const CommonOptions& common)
   if (common.json) {
     nlohmann::json list = nlohmann::json::array();
     for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
-    common.report({{"version", LBMSHAPE_VERSION},
-                   {"devices", list},
-                   {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
-                   {"validation", instance.validationEnabled()}});
+    common.report(
+        {{"version", LBMSHAPE_VERSION},
+         {"devices", list},
+         {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
+         {"validation", instance.validationEnabled()},
+         // How OpenMP's idle threads wait (core/passive_waiting.hpp).
+         {"openmp_wait_policy",
+          std::getenv("OMP_WAIT_POLICY") ? nlohmann::json(std::getenv("OMP_WAIT_POLICY")) : nlohmann::json(nullptr)}});
     return;
   }
   std::cout << "lbmshape " << LBMSHAPE_VERSION << "\n";

@@ -18,6 +18,7 @@
 #include "core/interrupt.hpp"
 #include "core/last_resort.hpp"
 #include "core/parameter_names.hpp"
+#include "core/passive_waiting.hpp"
 #include "core/worker_threads.hpp"
 
 namespace {
@@ -65,6 +66,7 @@ int fail(lbmshape::ExitCode code, const std::string& message)
 int main(int argc, char** argv)
 {
   using namespace lbmshape;
+  restartWithPassiveOpenMpWaiting(argv);            // before anything else (core/passive_waiting.hpp)
   useParameterNames(ParameterNaming::CommandLine);  // messages name the flags
   CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan");
   app.set_version_flag("--version", LBMSHAPE_VERSION);

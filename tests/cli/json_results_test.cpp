@@ -33,6 +33,23 @@ TEST(JsonResults, InfoListsDevicesAndTheSelectedOne)
   EXPECT_TRUE(j["validation"].get<bool>()) << "tests run with the validation layer";
 }
 
+// lbmshape starts itself again with OpenMP's idle threads waiting
+// passively, unless the user chose how they wait.
+TEST(JsonResults, InfoShowsOpenMpThreadsWaitPassivelyUnlessTheUserChose)
+{
+  const std::string inherited = std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "";
+  unsetenv("OMP_WAIT_POLICY");
+  const auto chosenByLbmshape = parseStdout(testing::runLbmshape({"info", "--json"}));
+  setenv("OMP_WAIT_POLICY", "active", 1);
+  const auto chosenByTheUser = parseStdout(testing::runLbmshape({"info", "--json"}));
+  if (inherited.empty())
+    unsetenv("OMP_WAIT_POLICY");
+  else
+    setenv("OMP_WAIT_POLICY", inherited.c_str(), 1);
+  EXPECT_EQ(chosenByLbmshape["openmp_wait_policy"], "passive");
+  EXPECT_EQ(chosenByTheUser["openmp_wait_policy"], "active");
+}
+
 std::string selectedDeviceName()
 {
   auto info = parseStdout(testing::runLbmshape({"info", "--json"}));

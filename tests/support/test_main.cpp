@@ -4,22 +4,16 @@
 #include <cstdlib>
 #include <string>
 
-#include <unistd.h>
+#include "core/passive_waiting.hpp"
 
 #include <gtest/gtest.h>
 
 int main(int argc, char** argv)
 {
-  // OpenMP's idle threads wait by spinning (libgomp's default), and ctest -j2
-  // runs two tests on two cores, so each test's spinning takes the core the
-  // other needs: with passive waiting the release suite takes 168 s instead
-  // of 240 s. libgomp reads the variable as it loads, before main, so the
-  // program starts itself again with it set (where that fails, it goes on,
-  // only slower). It changes no result, only how threads wait.
-  if (!std::getenv("OMP_WAIT_POLICY")) {
-    setenv("OMP_WAIT_POLICY", "passive", 1);
-    execv("/proc/self/exe", argv);
-  }
+  // OpenMP's idle threads wait passively, as in lbmshape itself: ctest -j2
+  // runs two tests on two cores, and each one's spinning took the core the
+  // other needed (core/passive_waiting.hpp). It changes no result.
+  lbmshape::restartWithPassiveOpenMpWaiting(argv);
   // The Khronos validation layer on for every GPU test, and for every
   // lbmshape process a CLI test starts; any message fails the test.
   setenv("LBMSHAPE_VALIDATION", "1", 1);

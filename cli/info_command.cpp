@@ -34,14 +34,13 @@ void runInfo(const CommonOptions& common)
   if (common.json) {
     nlohmann::json list = nlohmann::json::array();
     for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
-    common.report(
-        {{"version", LBMSHAPE_VERSION},
-         {"devices", list},
-         {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
-         {"validation", instance.validationEnabled()},
-         // How OpenMP's idle threads wait (core/passive_waiting.hpp).
-         {"openmp_wait_policy",
-          std::getenv("OMP_WAIT_POLICY") ? nlohmann::json(std::getenv("OMP_WAIT_POLICY")) : nlohmann::json(nullptr)}});
+    const char* waitPolicy =
+        std::getenv("OMP_WAIT_POLICY");  // how OpenMP's idle threads wait (core/passive_waiting.hpp)
+    common.report({{"version", LBMSHAPE_VERSION},
+                   {"devices", list},
+                   {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
+                   {"validation", instance.validationEnabled()},
+                   {"openmp_wait_policy", waitPolicy ? nlohmann::json(waitPolicy) : nlohmann::json(nullptr)}});
     return;
   }
   std::cout << "lbmshape " << LBMSHAPE_VERSION << "\n";

@@ -41,14 +41,12 @@ void ComputeDevice::warmUpForTheBand() const
 {
   if (isReference() || gpu_ || warmUp_.valid()) return;
   warmUp_ = std::async(std::launch::async, [this] {
-    description();
-    gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
     // A band of one brick: its solver compiles the band's pipeline and runs
     // it once (lavapipe turns it into machine code then), for the GpuContext
     // to keep.
     auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
     brick->activate(0, 0, 0);
-    BandVulkanSolver warm(*gpu_, std::move(brick));
+    BandVulkanSolver warm(openContext(), std::move(brick));
   });
 }
 
@@ -73,18 +71,22 @@ gpu::GpuContext* ComputeDevice::gpu() const
 {
   if (isReference()) return nullptr;
   finishWarmUp();
+  return &openContext();
+}
+
+gpu::GpuContext& ComputeDevice::openContext() const
+{
   if (!gpu_) {
     description();
     gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
   }
-  return gpu_.get();
+  return *gpu_;
 }
 
 gpu::GpuContext& ComputeDevice::drawingContext() const
 {
   if (!isReference()) return *gpu();
-  finishWarmUp();
-  if (!gpu_) {
+  if (!gpu_) {  // the reference never warms up
     if (!instance_) instance_ = std::make_shared<gpu::VulkanInstance>(validation_);
     chosen_ = gpu::chooseDevice(instance_->devices(), "");
     gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);

@@ -78,7 +78,10 @@ public:
 
 private:
   const gpu::DeviceDescription& description() const;  // creates the instance, chooses the device
-  void finishWarmUp() const;                          // waits for warmUpForTheBand()'s thread, if any
+  // The chosen Vulkan device's context, opened if it is not yet: gpu()'s,
+  // without waiting for the warm-up, whose thread calls it.
+  gpu::GpuContext& openContext() const;
+  void finishWarmUp() const;  // waits for warmUpForTheBand()'s thread, if any
 
   std::string request_;
   bool validation_ = false;

@@ -9,7 +9,6 @@
 #include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/log.hpp"
-#include "lbm/adaptive_gamma.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_validation.hpp"

@@ -65,6 +65,28 @@ bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
   (((EX) == 0 ? vec4(0.0) : float(EX) * (JX)) + ((EY) == 0 ? vec4(0.0) : float(EY) * (JY)) + \
    ((EZ) == 0 ? vec4(0.0) : float(EZ) * (JZ)))
 
+// Where row (yy, zz) of this brick's coordinates (-1 .. 8) lies: the slot
+// and the row within it, and the brick beside this one that holds it (by,
+// bz); `valid` false where it is beyond the grid's faces or in a brick
+// outside the band, and then the invocation's own row stands in for it.
+struct RowPlace {
+  int slot, ly, lz, by, bz;
+  bool valid;
+};
+
+RowPlace rowPlace(int yy, int zz)
+{
+  RowPlace r;
+  r.by = yy < 0 ? -1 : (yy > 7 ? 1 : 0);
+  r.bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);
+  const int rowSlot = neighbourSlot(0, r.by, r.bz);
+  r.valid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 && origin.z + zz < p.nz && rowSlot >= 0;
+  r.slot = r.valid ? rowSlot : slot;
+  r.ly = r.valid ? yy & 7 : y;
+  r.lz = r.valid ? zz & 7 : z;
+  return r;
+}
+
 // fa[I], fb[I]: the row's eight cells pull from the cells at -e_I: the row
 // (y - EY, z - EZ), possibly in a neighbouring brick, shifted by one cell
 // along x for EX != 0 (the cell beyond the row's end from the neighbouring
@@ -73,12 +95,9 @@ bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 // held cell pulls from itself.
 #define PULL(I, EX, EY, EZ)                                                                                    \
   {                                                                                                            \
-    const int yy = y - (EY), zz = z - (EZ);                                                                    \
-    const int by = yy < 0 ? -1 : (yy > 7 ? 1 : 0), bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);                       \
-    const int rowSlot = neighbourSlot(0, by, bz);                                                              \
-    const bool rowValid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 &&                   \
-                          origin.z + zz < p.nz && rowSlot >= 0;                                                \
-    const int rs = rowValid ? rowSlot : slot, ly = rowValid ? yy & 7 : y, lz = rowValid ? zz & 7 : z;          \
+    const RowPlace row = rowPlace(y - (EY), z - (EZ));                                                         \
+    const bool rowValid = row.valid;                                                                           \
+    const int rs = row.slot, ly = row.ly, lz = row.lz, by = row.by, bz = row.bz;                               \
     vec4 a[4], b[4];                                                                                           \
     for (int k = 0; k < 4; ++k) {                                                                              \
       a[k] = moment(momentAt(rs, k, ly, lz, 0));                                                               \
@@ -160,24 +179,19 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
 }
 
 // Row (y + dy, z + dz) of X from the omega buffer (where
-// BAND_PASS_FIELD_TO_OMEGA put it), as cells 0-3 and 4-7, from this brick
-// or the one beside it; the own row where it is beyond the grid's faces
-// (zero flux: a neighbour there reads as the cell itself, as on the CPU) or
-// in a brick outside the band. The CPU reads the far value there instead:
+// BAND_PASS_FIELD_TO_OMEGA put it), as cells 0-3 and 4-7, placed by
+// rowPlace(): the own row beyond the grid's faces (zero flux: a neighbour
+// there reads as the cell itself, as on the CPU) and in a brick outside the
+// band. The CPU reads the far value there instead:
 // only cells at the band's edge have such a neighbour, and they never
 // stream (a streaming cell has its 18 lattice neighbours in the band), so
 // their flux j* starts at 0 and stays 0 whatever omega they get: the steps
 // come out the same.
 void fieldRow(int dy, int dz, out vec4 a, out vec4 b)
 {
-  const int yy = y + dy, zz = z + dz;
-  const int by = yy < 0 ? -1 : (yy > 7 ? 1 : 0), bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);
-  const int rowSlot = neighbourSlot(0, by, bz);
-  const bool valid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 && origin.z + zz < p.nz &&
-                     rowSlot >= 0;
-  const int s = valid ? rowSlot : slot, ly = valid ? yy & 7 : y, lz = valid ? zz & 7 : z;
-  a = texelFetch(omegaPerCell, (s * 64 + lz * 8 + ly) * 2);
-  b = texelFetch(omegaPerCell, (s * 64 + lz * 8 + ly) * 2 + 1);
+  const RowPlace row = rowPlace(y + dy, z + dz);
+  a = texelFetch(omegaPerCell, (row.slot * 64 + row.lz * 8 + row.ly) * 2);
+  b = texelFetch(omegaPerCell, (row.slot * 64 + row.lz * 8 + row.ly) * 2 + 1);
 }
 
 // lbmshape's feature-preserving rule for the row's eight cells (the CPU

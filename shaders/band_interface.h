@@ -35,16 +35,19 @@
 #define BAND_BINDING_NEXT 6        // storage buffers [BAND_MAX_POOLS]: the next copy
 #define BAND_BINDING_FIELD 7       // storage buffers [BAND_MAX_POOLS]: the field
 #define BAND_BINDING_WORK 8        // isamplerBuffer
-#define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule
+#define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule, the feature rule's omega
 
 // What a dispatch of band_step.comp does (the push constant `pass`): one
 // pipeline for all of it, since lavapipe spends some 100 ms on each.
 #define BAND_PASS_FIELD 0           // X of every stored cell to the field buffer
 #define BAND_PASS_STEP 1            // a lattice step
-#define BAND_PASS_FIELD_TO_OMEGA 2  // X to the omega buffer, for the next pass
+// X into the copy of the moments that the next step would write, where its
+// rho* goes: the older copy is spent (the solver counts it so).
+#define BAND_PASS_FIELD_TO_OLDER 2
 // lbmshape's feature-preserving rule (src/lbm/adaptive_gamma.hpp) on the X
-// in the omega buffer: omega per stored cell to the field buffer, which the
-// host then copies into the omega buffer. Nothing goes back to the host.
+// that BAND_PASS_FIELD_TO_OLDER stored, dispatched with the descriptor set
+// that reads that copy: omega per stored cell into the omega buffer. No
+// scratch buffer, and nothing goes back to the host.
 #define BAND_PASS_FEATURE_RULE 3
 
 // Specialization constants.

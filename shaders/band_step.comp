@@ -4,9 +4,10 @@
 // has the scheme; band_reference_solver.cpp is the same arithmetic on the
 // CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
 // J, apply the source, collide and store (rho*, j*). With the push constant
-// `pass` BAND_PASS_FIELD or BAND_PASS_FIELD_TO_OMEGA it stores X instead:
+// `pass` BAND_PASS_FIELD or BAND_PASS_FIELD_TO_OLDER it stores X instead:
 // the field of the current state; with BAND_PASS_FEATURE_RULE it turns that
-// field, from the omega buffer, into omega per cell (featureRule()).
+// field, from the copy of the moments where the latter put it, into omega
+// per cell (featureRule()).
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
@@ -42,7 +43,8 @@ layout(set = 0, binding = BAND_BINDING_SOURCE) uniform samplerBuffer sourceBase;
 layout(set = 0, binding = BAND_BINDING_WORK) uniform isamplerBuffer work;
 layout(set = 0, binding = BAND_BINDING_NEXT, std430) writeonly buffer NextPool { vec4 v[]; } nextPools[BAND_MAX_POOLS];
 layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_POOLS];
-// Used only with PAPER_RULE: each invocation reads and writes its own cells.
+// Used only with PAPER_RULE (each invocation reads and writes its own cells)
+// and by BAND_PASS_FEATURE_RULE, which writes omega there.
 layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform imageBuffer gammaPerCell;
 
 int slot, y, z;  // this invocation's brick and row
@@ -158,8 +160,9 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
     return;
   }
-  if (p.pass == BAND_PASS_FIELD_TO_OMEGA) {
-    imageStore(gammaPerCell, cells, X);
+  const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
+  if (p.pass == BAND_PASS_FIELD_TO_OLDER) {
+    nextPools[pool].v[momentAt(first, 0, y, z, part)] = X;
     return;
   }
   vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
@@ -171,15 +174,14 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
     precise vec4 tau = 3.0 * gamma + 0.5;
     omega = 1.0 / tau;
   }
-  const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
   nextPools[pool].v[momentAt(first, 0, y, z, part)] = X + 0.5 * S;
   nextPools[pool].v[momentAt(first, 1, y, z, part)] = (1.0 - omega) * Jx;
   nextPools[pool].v[momentAt(first, 2, y, z, part)] = (1.0 - omega) * Jy;
   nextPools[pool].v[momentAt(first, 3, y, z, part)] = (1.0 - omega) * Jz;
 }
 
-// Row (y + dy, z + dz) of X from the omega buffer (where
-// BAND_PASS_FIELD_TO_OMEGA put it), as cells 0-3 and 4-7, placed by
+// Row (y + dy, z + dz) of X from moment 0 of the copy this dispatch reads
+// (where BAND_PASS_FIELD_TO_OLDER put it), as cells 0-3 and 4-7, placed by
 // rowPlace(): the own row beyond the grid's faces (zero flux: a neighbour
 // there reads as the cell itself, as on the CPU) and in a brick outside the
 // band. The CPU reads the far value there instead:
@@ -190,15 +192,15 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
 void fieldRow(int dy, int dz, out vec4 a, out vec4 b)
 {
   const RowPlace row = rowPlace(y + dy, z + dz);
-  a = texelFetch(omegaPerCell, (row.slot * 64 + row.lz * 8 + row.ly) * 2);
-  b = texelFetch(omegaPerCell, (row.slot * 64 + row.lz * 8 + row.ly) * 2 + 1);
+  a = moment(momentAt(row.slot, 0, row.ly, row.lz, 0));
+  b = moment(momentAt(row.slot, 0, row.ly, row.lz, 1));
 }
 
 // lbmshape's feature-preserving rule for the row's eight cells (the CPU
 // form, which the reference solver applies, is in src/lbm/adaptive_gamma.hpp):
 //     kappa = the 7-point Laplacian of X,
 //     gamma = clamp(gamma0 / (1 + (kappa / kappaEdge)^2), lowest, gamma0),
-// and omega = 1 / (3 gamma + 1/2) into the field buffer. Cells beyond the
+// and omega = 1 / (3 gamma + 1/2) into the omega buffer. Cells beyond the
 // grid (in bricks at its far faces) have kappa 0.
 void featureRule()
 {
@@ -210,9 +212,8 @@ void featureRule()
   fieldRow(0, 1, frontA, frontB);
   // Along x: the cells beside the row's ends from the bricks beside it.
   const int leftSlot = neighbourSlot(-1, 0, 0), rightSlot = neighbourSlot(1, 0, 0);
-  const float left = origin.x > 0 && leftSlot >= 0 ? texelFetch(omegaPerCell, (leftSlot * 64 + z * 8 + y) * 2 + 1).w
-                                                   : ownA.x;
-  const float right = rightSlot >= 0 ? texelFetch(omegaPerCell, (rightSlot * 64 + z * 8 + y) * 2).x : ownB.w;
+  const float left = origin.x > 0 && leftSlot >= 0 ? moment(momentAt(leftSlot, 0, y, z, 1)).w : ownA.x;
+  const float right = rightSlot >= 0 ? moment(momentAt(rightSlot, 0, y, z, 0)).x : ownB.w;
   const vec4 leftA = vec4(left, ownA.xyz), leftB = vec4(ownA.w, ownB.xyz);
   vec4 rightA = vec4(ownA.yzw, ownB.x), rightB = vec4(ownB.yzw, right);
   // A cell at the grid's last x reads itself as its right neighbour.
@@ -226,9 +227,9 @@ void featureRule()
   const bool rowInGrid = origin.y + y < p.ny && origin.z + z < p.nz;
   gammaA = mix(vec4(p.gamma0), gammaA, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx))));
   gammaB = mix(vec4(p.gamma0), gammaB, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx))));
-  const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
-  fieldPools[pool].v[(first * 64 + z * 8 + y) * 2] = 1.0 / (3.0 * gammaA + 0.5);
-  fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + 1] = 1.0 / (3.0 * gammaB + 0.5);
+  const int cells = (slot * 64 + z * 8 + y) * 2;  // vec4 index in the per-cell arrays
+  imageStore(gammaPerCell, cells, 1.0 / (3.0 * gammaA + 0.5));
+  imageStore(gammaPerCell, cells + 1, 1.0 / (3.0 * gammaB + 0.5));
 }
 
 void main()

@@ -52,7 +52,9 @@ public:
   // lbmshape's feature-preserving rule (adaptive_gamma::featurePreservingRule)
   // on the field now, as gamma per cell. Here the field is read back and
   // the rule runs on the host (the CPU reference); BandVulkanSolver runs it
-  // on the device, reading nothing back.
+  // on the device, reading nothing back, with the older stored copy as its
+  // scratch: there storedField(2), surfaceSpeed() and previousField() need
+  // one more step after it.
   virtual void setFeaturePreservingGamma(double gamma0, double kappaEdge)
   {
     setGammaPerCell(adaptive_gamma::featurePreservingRule(field(), gamma0, kappaEdge));

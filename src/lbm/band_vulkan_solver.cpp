@@ -116,9 +116,9 @@ struct BandVulkanSolver::Resources {
   size_t cells;
   BandPools pools;
   GpuBuffer moments[2];
-  // The field buffer: 16 bytes until field() or the feature rule needs it
-  // (fieldBuffer()), so that a smoothing whose result comes from the
-  // moments (storedField) never holds it while it runs.
+  // The field buffer: 16 bytes until field() needs it (fieldBuffer()), so
+  // that a smoothing whose result comes from the moments (storedField)
+  // never holds it while it runs.
   GpuBuffer field;
   GpuBuffer streams, neighbours, origins;
   GpuBuffer work;  // the slots a step updates, then every slot (for the field)
@@ -143,6 +143,12 @@ struct BandVulkanSolver::Resources {
 
   int current = 0;
   int steps = 0;
+  // The feature rule's scratch is the older copy of the moments: from the
+  // step at which it ran until the next, only the current copy holds a state.
+  int olderCopySpentAt = -1;
+  // The steps whose states the two copies hold, as storedField() and
+  // previousField() may go back.
+  int stepsStored() const { return olderCopySpentAt < 0 ? steps : std::min(steps, 1 + steps - olderCopySpentAt); }
   float uniformOmega = 1.0f;
   bool perCellOmega = false;              // the omega buffer holds omega per cell
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
@@ -476,10 +482,12 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   relaxation::checkGamma(gamma0);
   if (!(kappaEdge > 0.0)) throw std::invalid_argument("the feature rule's edge curvature must be positive");
   r_->perCellBuffer();
-  r_->fieldBuffer(true);
-  // In one submission: the field into the omega buffer, the rule from there
-  // into the field buffer, which is then copied over the omega buffer (the
-  // rule reads its cells' neighbours, so it cannot write where it reads).
+  // In one submission: the field into the older copy of the moments, then
+  // the rule, which reads it there (through the other descriptor set) and
+  // writes omega per cell. The rule reads its cells' neighbours, so it
+  // cannot write where it reads; the older copy is its scratch, where a
+  // buffer of its own would add a float a cell to the peak (47 MB at
+  // --res 512).
   auto& program = r_->context.program(r_->program());
   band_shader::StepParameters push = r_->parameters(true);
   auto shaderWritten = [](vk::CommandBuffer cmd, vk::PipelineStageFlags next, vk::AccessFlags access) {
@@ -488,7 +496,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   };
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    push.pass = BAND_PASS_FIELD_TO_OMEGA;
+    push.pass = BAND_PASS_FIELD_TO_OLDER;
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
     r_->dispatch(cmd, program, r_->current, true);
     shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader, vk::AccessFlagBits::eShaderRead);
@@ -497,18 +505,14 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
     push.kappaEdge = float(kappaEdge);
     push.lowestGamma = float(std::min(adaptive_gamma::lowest, gamma0));
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    r_->dispatch(cmd, program, r_->current, true);
-    // The copy reads the field buffer and overwrites the omega buffer, which
-    // the first pass wrote.
-    shaderWritten(cmd, vk::PipelineStageFlagBits::eTransfer,
-                  vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eTransferWrite);
-    cmd.copyBuffer(r_->field.handle(), r_->omega.handle(), vk::BufferCopy(0, 0, 4 * r_->cells));
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {},
-                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eShaderRead), {}, {});
+    r_->dispatch(cmd, program, 1 - r_->current, true);
+    // The next step reads omega, and writes the older copy the rule read.
+    shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader,
+                  vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
   });
   r_->perCellOmega = true;
   r_->paperRuleGamma0.reset();
-  r_->fieldBuffer(false);  // its band-sized float a cell goes until field() needs it
+  r_->olderCopySpentAt = r_->steps;
 }
 
 void BandVulkanSolver::setSource(std::optional<BandSource> source)
@@ -579,6 +583,7 @@ void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
   r_->upload(rows.data(), rows.size() * 4, r_->streams);
   r_->current = 0;
   r_->steps = 0;
+  r_->olderCopySpentAt = -1;
   r_->initial = std::move(field);
 }
 
@@ -620,6 +625,7 @@ void BandVulkanSolver::step(int count)
 BandField BandVulkanSolver::previousField()
 {
   requireTwoSteps();
+  if (r_->stepsStored() < 2) throw std::logic_error("the field before the feature rule is no longer stored");
   r_->current = 1 - r_->current;
   BandField out = field();
   r_->current = 1 - r_->current;
@@ -628,7 +634,7 @@ BandField BandVulkanSolver::previousField()
 
 BandField BandVulkanSolver::storedField(int back)
 {
-  band_state::checkStoredField(back, r_->steps, r_->sourceHost.has_value());
+  band_state::checkStoredField(back, r_->stepsStored(), r_->sourceHost.has_value());
   // Moment 0 of every brick of the copy: the first quarter of each slot.
   const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
   BandField out = r_->initial.sameShape();
@@ -644,7 +650,7 @@ BandField BandVulkanSolver::storedField(int back)
 
 double BandVulkanSolver::surfaceSpeed()
 {
-  band_state::checkStoredField(2, r_->steps, r_->sourceHost.has_value());
+  band_state::checkStoredField(2, r_->stepsStored(), r_->sourceHost.has_value());
   r_->writeSpeedDescriptors();
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
   std::vector<glm::vec2> partials(slots);

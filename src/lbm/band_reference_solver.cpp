@@ -69,8 +69,21 @@ void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> strea
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
   streams_ = band_state::onlyCellsInTheGrid(std::move(streams), *bricks_);
   work_ = band_state::slotsToStep(*bricks_, streams_, source_.has_value());
+  workHasSource_ = source_.has_value();
   initial_ = std::move(field);
   steps_ = 0;
+}
+
+// The reference keeps its initial field whole anyway (field() reads its far
+// sides from it).
+void BandReferenceSolver::holdFieldForRestart() {}
+
+void BandReferenceSolver::restart()
+{
+  band_state::checkRestart(!initial_.values().empty(), workHasSource_, source_.has_value());
+  BandField field = initial_;
+  std::vector<uint8_t> streams = streams_;
+  initialize(std::move(field), std::move(streams));
 }
 
 void BandReferenceSolver::step(int count)

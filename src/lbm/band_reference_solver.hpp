@@ -23,6 +23,8 @@ public:
   void setSourceStrength(float decay, float scale) override;
   using BandSolver::initialize;
   void initialize(BandField field, std::vector<uint8_t> streams) override;
+  void holdFieldForRestart() override;
+  void restart() override;
   void step(int count) override;
   int stepsTaken() const override { return steps_; }
   BandField field() override;
@@ -50,6 +52,7 @@ private:
   BandField xBefore_, gammaBefore_;  // the paper's rule: what each cell's last step pulled and used
   std::optional<BandSource> source_;
   int steps_ = 0;
+  bool workHasSource_ = false;  // whether work_ was made for a source
 };
 
 }  // namespace lbmshape

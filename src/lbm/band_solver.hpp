@@ -75,6 +75,17 @@ public:
     std::vector<uint8_t> streams = streamingCells(field, streamingHalfWidth);
     initialize(std::move(field), std::move(streams));
   }
+  // Keeps the field that the next initialize() gets past its first step,
+  // for one restart(): a smoothing that first runs a copy of itself (the
+  // feature rule's edge finding) then holds the band once, not twice.
+  virtual void holdFieldForRestart() = 0;
+  // Starts again from the field the last initialize() got, with the same
+  // streaming cells, under the gamma set now: what initialize() with that
+  // field and those streams would do. Throws std::logic_error unless the
+  // field was held (holdFieldForRestart()) or no step has let it go, and
+  // when a source was set or cleared since (the cells a step updates
+  // depend on it).
+  virtual void restart() = 0;
 
   // The field X after the steps taken so far, on the same bricks; beyond
   // them (far value and sides) as the field initialize() was given.

@@ -68,6 +68,13 @@ void checkStoredField(int back, int stepsTaken, bool source)
   if (source) throw std::logic_error("with a source, rho* is not the field");
 }
 
+void checkRestart(bool fieldHeld, bool workHasSource, bool source)
+{
+  if (!fieldHeld) throw std::logic_error("a restart needs the initial field held (holdFieldForRestart())");
+  if (workHasSource != source)
+    throw std::logic_error("a restart keeps the cells a step updates: set or clear the source before initialize()");
+}
+
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)
 {
   if (&field.bricks() != &bricks &&

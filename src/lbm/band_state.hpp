@@ -41,6 +41,10 @@ std::vector<float> omegaFromGamma(const BandField& gamma);
 // Throws std::logic_error unless storedField(back) can be read: 1 or 2
 // steps back, at least that many steps taken, no source.
 void checkStoredField(int back, int stepsTaken, bool source);
+// Throws std::logic_error when BandSolver::restart() cannot start again:
+// the initial field is gone, or the source was set or cleared since the
+// cells a step updates were chosen.
+void checkRestart(bool fieldHeld, bool workHasSource, bool source);
 
 // Throws std::invalid_argument unless `field` lies on `bricks`.
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what);

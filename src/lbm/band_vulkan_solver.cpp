@@ -154,7 +154,9 @@ struct BandVulkanSolver::Resources {
   std::optional<double> paperRuleGamma0;  // set: the steps apply the paper's rule
   bool paperRuleReady = false;            // initialize() has seeded its gamma
   std::optional<BandSource> sourceHost;
-  BandField initial;  // X at initialisation (its values until the first step), with its far sides
+  BandField initial;            // X at initialisation (its values until the first step), with its far sides
+  bool holdForRestart = false;  // initial keeps its values after the first step, for restart()
+  bool workHasSource = false;   // whether the cells a step updates were chosen for a source
 
   vk::BufferView view(const GpuBuffer& buffer, vk::Format format)
   {
@@ -534,6 +536,35 @@ void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
   band_state::checkSameBricks(*r_->bricks, field, "field");
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
+  if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
+  streams = band_state::onlyCellsInTheGrid(std::move(streams), *r_->bricks);
+  std::vector<int32_t> work = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
+  r_->stepWorks = int(work.size());
+  r_->workHasSource = r_->sourceHost.has_value();
+  for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));
+  r_->upload(work.data(), work.size() * 4, r_->work);
+  std::vector<uint32_t> rows(64 * r_->bricks->activeCount(), 0);
+#pragma omp parallel for schedule(static)
+  for (size_t row = 0; row < rows.size(); ++row)
+    for (int x = 0; x < brickEdge; ++x) rows[row] |= uint32_t(streams[row * brickEdge + size_t(x)]) << x;
+  r_->upload(rows.data(), rows.size() * 4, r_->streams);
+  startFrom(std::move(field));
+}
+
+void BandVulkanSolver::holdFieldForRestart() { r_->holdForRestart = true; }
+
+void BandVulkanSolver::restart()
+{
+  band_state::checkRestart(!r_->initial.values().empty(), r_->workHasSource, r_->sourceHost.has_value());
+  solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
+  r_->holdForRestart = false;  // for one restart: the steps after it let the field go
+  startFrom(std::move(r_->initial));
+}
+
+// The moments of `field` at equilibrium in both copies, and the paper's
+// rule seeded: initialize() after the streaming cells are on the device.
+void BandVulkanSolver::startFrom(BandField field)
+{
   if (r_->paperRuleGamma0) {
     const std::vector<float> gamma(r_->cells, float(*r_->paperRuleGamma0));
     r_->upload(gamma.data(), 4 * r_->cells, r_->omega);
@@ -570,17 +601,6 @@ void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
     cmd.copyBuffer(r_->moments[0].handle(), r_->moments[1].handle(), vk::BufferCopy(0, 0, r_->moments[0].bytes()));
   });
 
-  if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
-  streams = band_state::onlyCellsInTheGrid(std::move(streams), *r_->bricks);
-  std::vector<int32_t> work = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
-  r_->stepWorks = int(work.size());
-  for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));
-  r_->upload(work.data(), work.size() * 4, r_->work);
-  std::vector<uint32_t> rows(64 * r_->bricks->activeCount(), 0);
-#pragma omp parallel for schedule(static)
-  for (size_t row = 0; row < rows.size(); ++row)
-    for (int x = 0; x < brickEdge; ++x) rows[row] |= uint32_t(streams[row * brickEdge + size_t(x)]) << x;
-  r_->upload(rows.data(), rows.size() * 4, r_->streams);
   r_->current = 0;
   r_->steps = 0;
   r_->olderCopySpentAt = -1;
@@ -594,8 +614,9 @@ void BandVulkanSolver::step(int count)
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && r_->steps == 0) --count, ++r_->steps;
   // Once a step is taken, field() makes every stored value on the device:
-  // only the far sides of the initial field are still needed.
-  if (r_->steps > 0) std::vector<float>().swap(r_->initial.values());
+  // only the far sides of the initial field are still needed, unless it is
+  // held for a restart.
+  if (r_->steps > 0 && !r_->holdForRestart) std::vector<float>().swap(r_->initial.values());
   if (count <= 0) return;
   auto& program = r_->context.program(r_->program());
   const auto bind = vk::PipelineBindPoint::eCompute;

@@ -37,6 +37,8 @@ public:
   void setSourceStrength(float decay, float scale) override;
   using BandSolver::initialize;
   void initialize(BandField field, std::vector<uint8_t> streams) override;
+  void holdFieldForRestart() override;
+  void restart() override;
   void step(int count) override;
   int stepsTaken() const override;
   BandField field() override;
@@ -59,6 +61,8 @@ public:
   static void checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega, bool source);
 
 private:
+  void startFrom(BandField field);
+
   struct Resources;
   std::unique_ptr<Resources> r_;
 };

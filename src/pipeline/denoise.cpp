@@ -76,13 +76,21 @@ void stepShowingProgress(SteppingSolver& solver, int count, Progress& progress, 
 }
 
 // The two kinds of lattice differ in how they start; the smoothing is
-// written once for both.
-void start(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
-void start(BandSolver& solver, const BandField& field, double halfWidth) { solver.initialize(field, halfWidth); }
-// The last start of a smoothing, after which the caller no longer needs
-// `field` but for --steps auto on the grid (GridReading): the band's solver
-// takes it over, so that the band is not held twice while it runs (at
-// --res 512, 47 MB).
+// written once for both. The band's solver takes `field` over, so that the
+// band is not held twice while it runs (at --res 512, 47 MB); the grid's
+// caller keeps it, for --steps auto (GridReading) and for a restart.
+//
+// A start with a restart to come (the edge-finding copy first): the band's
+// solver holds the field for it.
+void startToRestart(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
+void startToRestart(BandSolver& solver, BandField& field, double halfWidth)
+{
+  solver.holdFieldForRestart();
+  solver.initialize(std::move(field), halfWidth);
+}
+void restart(LatticeSolver& solver, const Volume& field, double) { solver.initialize(field); }
+void restart(BandSolver& solver, const BandField&, double) { solver.restart(); }
+// The only start of a smoothing.
 void startForGood(LatticeSolver& solver, Volume& field, double) { solver.initialize(field); }
 void startForGood(BandSolver& solver, BandField& field, double halfWidth)
 {
@@ -202,10 +210,10 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   const int steps = o.steps.value_or(smoothing_stop::mostSteps);
   const double probeShare = double(probe.steps) / (probe.steps + steps);
   solver.setUniformGamma(probe.gamma);
-  start(solver, field, halfWidth);
+  startToRestart(solver, field, halfWidth);
   stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
   solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for the band's Vulkan solver
-  startForGood(solver, field, halfWidth);
+  restart(solver, field, halfWidth);
   SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
   smoothed.stepsRun += probe.steps;
   return smoothed;

@@ -2,6 +2,9 @@
 
 #include <sys/resource.h>
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <fstream>
@@ -50,6 +53,13 @@ void checkHostMemory(double neededBytes, const std::string& what, const Extent3&
   if (neededBytes <= allowed) return;
   throw DeviceError(what + " needs about " + mebibytes(uint64_t(neededBytes)) + " but this machine allows " +
                     mebibytes(uint64_t(allowed)) + "; " + gridThatWouldFit(extent, neededBytes, allowed, power));
+}
+
+void returnFreedHeapMemory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 }  // namespace lbmshape

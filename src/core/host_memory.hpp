@@ -20,4 +20,13 @@ uint64_t hostMemoryBytes();
 // its side to the power `power`).
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power);
 
+// Gives the pages that the heap holds free back to the system. glibc keeps
+// what a stage freed in its arenas for later allocations (arrays of a few
+// MiB too, once a larger block was freed: its mmap threshold grows up to
+// 32 MiB); where the next stage allocates in other sizes, such as the
+// lattice after the distances, that only raises its peak (armadillo at
+// --res 512: 600 -> 570 MB; each call takes a few ms). A no-op elsewhere
+// than glibc.
+void returnFreedHeapMemory();
+
 }  // namespace lbmshape

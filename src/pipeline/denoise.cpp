@@ -6,6 +6,7 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
+#include "core/host_memory.hpp"
 #include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/log.hpp"
@@ -211,6 +212,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   const double probeShare = double(probe.steps) / (probe.steps + steps);
   solver.setUniformGamma(probe.gamma);
   startToRestart(solver, field, halfWidth);
+  returnFreedHeapMemory();  // the start's streaming flags and rows, before the rule's peak
   stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
   solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for the band's Vulkan solver
   restart(solver, field, halfWidth);
@@ -262,6 +264,7 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
   Volume field =
       clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing
+  returnFreedHeapMemory();              // the distances' work arrays, before the lattice's peak
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;  // the mesh's, before any --noise
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
@@ -290,6 +293,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
                                }});
   });
   requireEnclosedVolume(field, input);
+  returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak
   const std::shared_ptr<const BrickSet> shared = field.sharedBricks();
   const BrickSet& bricks = *shared;
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;

@@ -133,6 +133,11 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
             local.push_back(i);
           }
         }
+        // In index order, a thread's cells and the neighbours they offer to
+        // lie together in memory: the settling below took half the time
+        // (armadillo --res 512: 1.64 -> 0.95 s), where the bucket's order
+        // (that of the offers) scattered its reads.
+        std::sort(local.begin(), local.end());
         gather(batch, local);
       }
       buckets[b].clear();

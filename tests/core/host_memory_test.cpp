@@ -32,7 +32,9 @@ TEST(HostMemory, FreedHeapMemoryGoesBackToTheSystem)
   // A freed block of 30 MiB raises glibc's mmap threshold to its size, so
   // that blocks of 2 MiB then come from the heap, as a stage's arrays do
   // after an earlier stage freed its big ones.
-  { std::vector<char>(30 << 20, 1); }
+  {
+    std::vector<char>(30 << 20, 1);
+  }
   constexpr size_t blockBytes = 2 << 20, blocks = 40;
   std::vector<std::vector<char>> arrays;
   for (size_t k = 0; k < blocks; ++k) arrays.emplace_back(blockBytes, char(k + 1));

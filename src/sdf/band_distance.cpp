@@ -7,6 +7,7 @@
 
 #include "core/interrupt.hpp"
 #include "sdf/cell_space.hpp"
+#include "sdf/point_triangle.hpp"
 
 namespace lbmshape {
 
@@ -127,7 +128,7 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
   // bits (which order as the distances do) and the triangle, packed so that
   // one atomic minimum keeps the nearest, ties going to the lower triangle.
   std::vector<uint64_t> best(cells.count(), ~uint64_t(0));
-  const double band = bandVoxels * frame.voxel;
+  const double band = bandVoxels * frame.voxel, band2 = band * band;
   const double halfDiagonal = 0.5 * (brickEdge - 1) * std::sqrt(3.0) * frame.voxel;
 #pragma omp parallel for schedule(dynamic, 256)
   for (size_t t = 0; t < count; ++t) {
@@ -135,6 +136,9 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
     if (progress && t % 256 == 0) progress->advance(256);
     const uint32_t triangle = uint32_t(t);
     const TriangleReach reach(bvh, frame, triangle, bandVoxels);
+    glm::dvec3 a, b, c;
+    bvh.triangleCorners(triangle, a, b, c);
+    const PreparedTriangle prepared(a, b, c);
     const glm::ivec3 first = glm::max(glm::ivec3(glm::ceil(reach.lo)), glm::ivec3(0));
     const glm::ivec3 last = glm::min(glm::ivec3(glm::floor(reach.hi)), glm::ivec3(e.nx - 1, e.ny - 1, e.nz - 1));
     if (glm::any(glm::lessThan(last, first))) continue;
@@ -146,7 +150,7 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
           if (slot == noBrick) continue;
           const glm::ivec3 origin = brickEdge * glm::ivec3(bx, by, bz);
           const glm::dvec3 centre = frame.toWorld(glm::dvec3(origin) + 0.5 * (brickEdge - 1));
-          if (bvh.closestOnTriangle(centre, triangle).distance > band + halfDiagonal) continue;
+          if (prepared.distance2(centre) > (band + halfDiagonal) * (band + halfDiagonal)) continue;
           const glm::ivec3 from = glm::max(first, origin), to = glm::min(last, origin + brickEdge - 1);
           for (int z = from.z; z <= to.z; ++z)
             for (int y = from.y; y <= to.y; ++y) {
@@ -154,10 +158,10 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
               reach.row(y, z, x0, x1);
               for (int x = std::max(x0, from.x); x <= std::min(x1, to.x); ++x) {
                 if (!reach.nearPlane(x, y, z)) continue;
-                const double d = bvh.closestOnTriangle(frame.cellCentre(x, y, z), triangle).distance;
-                if (d > band) continue;
+                const double d2 = prepared.distance2(frame.cellCentre(x, y, z));
+                if (d2 > band2) continue;
                 const size_t i = size_t(slot) * brickCells + size_t(cellInBrick(x & 7, y & 7, z & 7));
-                const float v = float(d / frame.voxel);
+                const float v = float(std::sqrt(d2) / frame.voxel);
                 const uint64_t packed = uint64_t(std::bit_cast<uint32_t>(v)) << 32 | triangle;
                 std::atomic_ref<uint64_t> slotBest(best[i]);
                 uint64_t old = slotBest.load(std::memory_order_relaxed);

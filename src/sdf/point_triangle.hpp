@@ -80,6 +80,56 @@ inline glm::dvec3 closestPointOnTriangle(const glm::dvec3& p, const glm::dvec3& 
   return a + v * ab + w * ac;
 }
 
+// A triangle prepared for many closest-point queries (the exact band asks
+// each triangle about every cell around it): closestPointOnTriangle's
+// regions and projections, with what does not depend on the point computed
+// once. Of the six dot products only d1 and d2 are left per point; d3 to d6
+// follow from them (bp = ap - ab, cp = ap - ac), which rounds differently
+// from computing them anew, in the last bits of the triangle's size.
+class PreparedTriangle {
+public:
+  PreparedTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+      : a_(a), b_(b), c_(c), ab_(b - a), ac_(c - a), bc_(c - b)
+  {
+    const glm::dvec3 normal = glm::cross(ab_, ac_);
+    abab_ = glm::dot(ab_, ab_), acac_ = glm::dot(ac_, ac_), abac_ = glm::dot(ab_, ac_);
+    sliver_ = !(glm::dot(normal, normal) > 1e-12 * abab_ * acac_);
+  }
+
+  glm::dvec3 closestPoint(const glm::dvec3& p) const
+  {
+    if (sliver_) return detail::closestPointOnEdges(p, a_, b_, c_);
+    const glm::dvec3 ap = p - a_;
+    const double d1 = glm::dot(ab_, ap), d2 = glm::dot(ac_, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a_;
+    const double d3 = d1 - abab_, d4 = d2 - abac_;
+    if (d3 >= 0.0 && d4 <= d3) return b_;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a_ + (d1 / (d1 - d3)) * ab_;
+    const double d5 = d1 - abac_, d6 = d2 - acac_;
+    if (d6 >= 0.0 && d5 <= d6) return c_;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a_ + (d2 / (d2 - d6)) * ac_;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b_ + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * bc_;
+    const double denominator = 1.0 / (va + vb + vc);
+    const double v = std::clamp(vb * denominator, 0.0, 1.0), w = std::clamp(vc * denominator, 0.0, 1.0 - v);
+    return a_ + v * ab_ + w * ac_;
+  }
+
+  // The squared distance from p to the triangle.
+  double distance2(const glm::dvec3& p) const
+  {
+    const glm::dvec3 gap = closestPoint(p) - p;
+    return glm::dot(gap, gap);
+  }
+
+private:
+  glm::dvec3 a_, b_, c_, ab_, ac_, bc_;
+  double abab_, acac_, abac_;
+  bool sliver_;
+};
+
 // Signed solid angle of triangle (a, b, c) seen from p (van Oosterom and
 // Strackee 1983), in (-2 pi, 2 pi); positive when the triangle's
 // counter-clockwise normal points away from p, so that the solid angles of a

@@ -23,18 +23,24 @@ TriangleMesh single(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& 
 }
 
 // Slivers are answered by their edges, which moves the point by at most the
-// sliver's width (1e-9 here): hence the looser tolerance for them.
+// sliver's width (1e-9 here): hence the looser tolerance for them. The
+// prepared form (PreparedTriangle, for many queries of one triangle) is held
+// to the same oracle, and to the plain form's point.
 void expectMatchesOracle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::mt19937& rng,
                          double tolerance = 1e-12)
 {
   const TriangleMesh mesh = single(a, b, c);
+  const PreparedTriangle prepared(a, b, c);
   for (int k = 0; k < 200; ++k) {
     const glm::dvec3 p = testing::sdf::randomPoint(rng, 2.0);
     const glm::dvec3 q = closestPointOnTriangle(p, a, b, c);
-    ASSERT_NEAR(glm::length(q - p), testing::sdf::bruteForceDistance(mesh, p), tolerance)
+    const double oracle = testing::sdf::bruteForceDistance(mesh, p);
+    ASSERT_NEAR(glm::length(q - p), oracle, tolerance)
         << "triangle (" << a.x << " " << a.y << " " << a.z << ") ... point " << p.x << " " << p.y << " " << p.z;
     // The point returned is on the triangle: it is its own closest point.
     EXPECT_LT(testing::sdf::bruteForceDistance(mesh, q), tolerance);
+    ASSERT_NEAR(std::sqrt(prepared.distance2(p)), oracle, tolerance) << "prepared, point " << p.x << " " << p.y;
+    EXPECT_LT(glm::length(prepared.closestPoint(p) - q), tolerance);
   }
 }
 

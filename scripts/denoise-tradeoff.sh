@@ -19,7 +19,8 @@
 #   OpenVDB rows are left out)
 # Environment: LBMSHAPE (build/lbmshape), RES (128), SIGMAS ("0.25 0.5 1"), STEPS ("1 2 ... 10"),
 #   ITERS ("1 2 3 4 5 6"), METHODS ("isotropic preserve-features anisotropic"),
-#   OUT (build/tradeoff), PLOT (docs/images/denoise-tradeoff.png; "" for none)
+#   OUT (build/tradeoff), PLOT (docs/images/denoise-tradeoff.png; "" for none),
+#   REPLOT (1: draw PLOT again from OUT/tradeoff.csv, measuring nothing)
 set -euo pipefail
 [[ $# -gt 0 ]] || { echo "usage: [VDB_PEER=...] denoise-tradeoff.sh MESH.obj..." >&2; exit 2; }
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -35,7 +36,9 @@ plot=${PLOT-$here/docs/images/denoise-tradeoff.png}
 margin=4  # denoise's default; OpenVDB's --res counts the box alone
 mkdir -p "$out"
 csv=$out/tradeoff.csv
-echo "mesh,sigma_voxels,method,amount,normal_error_deg,distance_voxels,volume_change_percent" >"$csv"
+[[ -z ${REPLOT:-} || -f $csv ]] || { echo "denoise-tradeoff: REPLOT needs $csv" >&2; exit 2; }
+[[ -n ${REPLOT:-} ]] ||
+  echo "mesh,sigma_voxels,method,amount,normal_error_deg,distance_voxels,volume_change_percent" >"$csv"
 
 # compare CLEAN RESULT VOXEL: "normal_error,distance_voxels,volume_change_percent"
 measure() {
@@ -45,6 +48,7 @@ measure() {
 }
 
 for mesh in "$@"; do
+  [[ -z ${REPLOT:-} ]] || break
   name=$(basename "${mesh%.*}")
   for sigma in "${sigmas[@]}"; do
     noisy=$out/${name}_sigma$sigma.obj
@@ -98,8 +102,8 @@ for sigma in "${sigmas[@]}"; do
     f=$out/curve_${sigma}_$method.dat
     [[ -f $f ]] || continue
     case $method in
-      isotropic) style="lc rgb '#1f77b4' pt 7" title="lbmshape" ;;
-      preserve-features) style="lc rgb '#2ca02c' pt 5" title="lbmshape --preserve-features" ;;
+      isotropic) style="lc rgb '#1f77b4' pt 7" title="lbmshape --isotropic" ;;
+      preserve-features) style="lc rgb '#2ca02c' pt 5" title="lbmshape --preserve-features (the default)" ;;
       anisotropic) style="lc rgb '#9467bd' pt 9" title="lbmshape --anisotropic (paper)" ;;
       openvdb) style="lc rgb '#d62728' pt 13" title="OpenVDB meanCurvature" ;;
       lbmshape-default) style="lc rgb 'black' pt 3 ps 2.5 lw 2" title="lbmshape, no options" ;;

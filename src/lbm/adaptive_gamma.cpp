@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
+#include "lbm/relaxation.hpp"
 #include "lbm/solver_state.hpp"
 
 namespace lbmshape::adaptive_gamma {
@@ -20,6 +22,7 @@ void paperRuleValues(const std::vector<float>& before, const std::vector<float>&
 void featurePreservingValues(const std::vector<float>& kappa, double gamma0, double kappaEdge,
                              std::vector<float>& gamma)
 {
+  checkFeatureRule(gamma0, kappaEdge);
   const double lo = std::min(lowest, gamma0);
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < gamma.size(); ++i) {
@@ -29,6 +32,12 @@ void featurePreservingValues(const std::vector<float>& kappa, double gamma0, dou
 }
 
 }  // namespace
+
+void checkFeatureRule(double gamma0, double kappaEdge)
+{
+  relaxation::checkGamma(gamma0);
+  if (!(kappaEdge > 0.0)) throw std::invalid_argument("the feature rule's edge curvature must be positive");
+}
 
 Volume paperRule(const Volume& before, const Volume& after, const Volume& gammaUsed, double gamma0)
 {

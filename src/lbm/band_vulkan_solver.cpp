@@ -116,7 +116,7 @@ struct BandVulkanSolver::Resources {
   size_t cells;
   BandPools pools;
   GpuBuffer moments[2];
-  // The field buffer: 16 bytes until field() needs it (fieldBuffer()), so
+  // The field buffer: 16 bytes until field() needs it (fullFieldBuffer()), so
   // that a smoothing whose result comes from the moments (storedField)
   // never holds it while it runs.
   GpuBuffer field;
@@ -324,13 +324,11 @@ struct BandVulkanSolver::Resources {
     downloadUnits(source, bytes, 1, 1, data, before);
   }
 
-  // The field buffer at its full size, one float a stored cell; with
-  // `full` false, back to 16 bytes.
-  void fieldBuffer(bool full)
+  // The field buffer at its full size, one float a stored cell.
+  void fullFieldBuffer()
   {
-    const uint64_t bytes = full ? 4 * cells : 16;
-    if (field.bytes() == bytes) return;
-    field = GpuBuffer(context, bytes, storage, MemoryUse::Device);
+    if (field.bytes() == 4 * cells) return;
+    field = GpuBuffer(context, 4 * cells, storage, MemoryUse::Device);
     writeDescriptors();
   }
 
@@ -481,8 +479,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
 {
   // Before the first step the field is the host's, which initialize() got.
   if (r_->steps == 0) return BandSolver::setFeaturePreservingGamma(gamma0, kappaEdge);
-  relaxation::checkGamma(gamma0);
-  if (!(kappaEdge > 0.0)) throw std::invalid_argument("the feature rule's edge curvature must be positive");
+  adaptive_gamma::checkFeatureRule(gamma0, kappaEdge);
   r_->perCellBuffer();
   // In one submission: the field into the older copy of the moments, then
   // the rule, which reads it there (through the other descriptor set) and
@@ -700,7 +697,7 @@ BandField BandVulkanSolver::field()
   // (its values, kept until the first real step, are not copied).
   if (r_->steps == 0) return r_->initial;
   BandField out = r_->initial.sameShape();
-  r_->fieldBuffer(true);
+  r_->fullFieldBuffer();
   auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);

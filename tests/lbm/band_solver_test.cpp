@@ -307,6 +307,28 @@ TEST_P(BandSolverTest, TheFeatureRuleKeepsTheCurrentState)
   EXPECT_NE(band->field().values(), before.values());
 }
 
+// Both back ends check the feature rule's constants in one place
+// (adaptive_gamma::checkFeatureRule), with the same words, whether the rule
+// runs on the host or on the device.
+TEST_P(BandSolverTest, TheFeatureRuleRefusesBadConstantsAlike)
+{
+  auto started = startedOnANoisySphere(0.2);
+  started.band->step(2);
+  auto message = [&](double gamma0, double kappaEdge) {
+    try {
+      started.band->setFeaturePreservingGamma(gamma0, kappaEdge);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message(0.2, 0.0).find("edge curvature must be positive"), std::string::npos);
+  EXPECT_NE(message(0.2, std::nan("")).find("edge curvature must be positive"), std::string::npos);
+  EXPECT_NE(message(-0.1, 0.2).find("must be a positive number"), std::string::npos);
+  EXPECT_NE(message(5.0, 0.2).find("is above"), std::string::npos);
+  EXPECT_EQ(message(0.2, 0.2), "accepted");
+}
+
 // restart() is initialize() with the field and streams the solver holds:
 // the same steps after it as from a new start, to the bit. Without the
 // field held, the Vulkan solver has let it go at the first step; the cells

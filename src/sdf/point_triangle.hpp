@@ -37,55 +37,17 @@ inline glm::dvec3 closestPointOnEdges(const glm::dvec3& p, const glm::dvec3& a, 
 
 }  // namespace detail
 
-// The point of triangle (a, b, c) nearest to p. Triangles with (almost) no
-// area, from repeated or collinear vertices, are treated as the segments
-// they are: a sliver thinner than 1e-6 of its edges is its edges to within
-// that width. Every other triangle has edges of positive length, so no
-// division below can be by zero.
+// A triangle and what its closest-point queries share, computed once (the
+// exact band asks each triangle about every cell around it). Triangles with
+// (almost) no area, from repeated or collinear vertices, are treated as the
+// segments they are: a sliver thinner than 1e-6 of its edges is its edges to
+// within that width. Every other triangle has edges of positive length, so
+// no division below can be by zero.
 // Ericson, Real-Time Collision Detection (2005), 5.1.5: find the Voronoi
 // region of p (three vertices, three edges, the face) with a few dot
-// products, then project onto that feature.
-inline glm::dvec3 closestPointOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
-                                         const glm::dvec3& c)
-{
-  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-  const glm::dvec3 normal = glm::cross(ab, ac);
-  const double area2 = glm::dot(normal, normal);
-  if (!(area2 > 1e-12 * glm::dot(ab, ab) * glm::dot(ac, ac))) return detail::closestPointOnEdges(p, a, b, c);
-
-  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return a;
-
-  const glm::dvec3 bp = p - b;
-  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3) return b;
-
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
-
-  const glm::dvec3 cp = p - c;
-  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6) return c;
-
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
-
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-
-  // Face region: va + vb + vc is |ab x ac|^2, but computed from differences
-  // of products; clamping keeps rounding from leaving the triangle.
-  const double denominator = 1.0 / (va + vb + vc);
-  const double v = std::clamp(vb * denominator, 0.0, 1.0), w = std::clamp(vc * denominator, 0.0, 1.0 - v);
-  return a + v * ab + w * ac;
-}
-
-// A triangle prepared for many closest-point queries (the exact band asks
-// each triangle about every cell around it): closestPointOnTriangle's
-// regions and projections, with what does not depend on the point computed
-// once. Of the six dot products only d1 and d2 are left per point; d3 to d6
-// follow from them (bp = ap - ab, cp = ap - ac), which rounds differently
-// from computing them anew, in the last bits of the triangle's size.
+// products, then project onto that feature. Of the six dot products only d1
+// and d2 depend on the point; d3 to d6 follow from them (bp = ap - ab,
+// cp = ap - ac).
 class PreparedTriangle {
 public:
   PreparedTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
@@ -112,6 +74,8 @@ public:
     if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a_ + (d2 / (d2 - d6)) * ac_;
     const double va = d3 * d6 - d5 * d4;
     if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b_ + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * bc_;
+    // Face region: va + vb + vc is |ab x ac|^2, but computed from differences
+    // of products; clamping keeps rounding from leaving the triangle.
     const double denominator = 1.0 / (va + vb + vc);
     const double v = std::clamp(vb * denominator, 0.0, 1.0), w = std::clamp(vc * denominator, 0.0, 1.0 - v);
     return a_ + v * ab_ + w * ac_;
@@ -129,6 +93,13 @@ private:
   double abab_, acac_, abac_;
   bool sliver_;
 };
+
+// The point of triangle (a, b, c) nearest to p (PreparedTriangle, for one query).
+inline glm::dvec3 closestPointOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                         const glm::dvec3& c)
+{
+  return PreparedTriangle(a, b, c).closestPoint(p);
+}
 
 // Signed solid angle of triangle (a, b, c) seen from p (van Oosterom and
 // Strackee 1983), in (-2 pi, 2 pi); positive when the triangle's

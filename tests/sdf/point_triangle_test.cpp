@@ -25,7 +25,7 @@ TriangleMesh single(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& 
 // Slivers are answered by their edges, which moves the point by at most the
 // sliver's width (1e-9 here): hence the looser tolerance for them. The
 // prepared form (PreparedTriangle, for many queries of one triangle) is held
-// to the same oracle, and to the plain form's point.
+// to the same oracle, and to the one-query form's point.
 void expectMatchesOracle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::mt19937& rng,
                          double tolerance = 1e-12)
 {

@@ -1,12 +1,16 @@
 #include "sdf/winding_sign.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <unordered_map>
+#include <utility>
 
 #include "core/interrupt.hpp"
 #include "sdf/cell_space.hpp"
+#include "sdf/clear_regions.hpp"
 
 namespace lbmshape {
 namespace {
@@ -20,6 +24,58 @@ constexpr float kEvaluationError = 2e-3f;
 constexpr double kUsefulGrowth = 0.25;
 // One voxel, with room for the float rounding of the stored distances.
 constexpr float kOneVoxel = 1.0f + 1e-4f;
+
+// The flood's first part for a closed surface, where w does not change
+// along a certified segment (no growth anywhere): every cell of a region
+// takes the value of the region's first cell more than a voxel from the
+// surface, as the flood started from that cell would hand it on. Returns
+// false, having changed no cell, if one of those values is too near 1/2 to
+// hand on; the flood then decides.
+template <class Cells>
+bool signRegionsAtOnce(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame, const float* distance,
+                       std::vector<float>& value, std::vector<float>& radius, size_t& evaluations)
+{
+  const size_t count = cells.count();
+  const std::vector<uint32_t> region = clearRegions(cells, distance, kOneVoxel);
+
+  // Each region's seed: its lowest cell that the flood would seed from.
+  std::unordered_map<uint32_t, uint32_t> seedOf;
+#pragma omp parallel
+  {
+    std::unordered_map<uint32_t, uint32_t> local;
+    uint32_t last = UINT32_MAX;  // consecutive cells mostly share a region
+#pragma omp for schedule(static) nowait
+    for (size_t i = 0; i < count; ++i) {
+      if (region[i] == last || !(distance[i] > kOneVoxel) || !cells.real(i)) continue;
+      last = region[i];
+      local.try_emplace(last, uint32_t(i));  // a thread's cells come in rising order
+    }
+#pragma omp critical(lbmshape_sign_regions)
+    for (const auto& [r, seed] : local) {
+      const auto [it, added] = seedOf.try_emplace(r, seed);
+      if (!added) it->second = std::min(it->second, seed);
+    }
+  }
+  std::vector<std::pair<uint32_t, uint32_t>> seeds(seedOf.begin(), seedOf.end());
+  std::vector<float> seedValue(seeds.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t k = 0; k < seeds.size(); ++k)
+    seedValue[k] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(seeds[k].second)))));
+  evaluations += seeds.size();
+  for (float v : seedValue)
+    if (!(std::abs(v - 0.5f) > kEvaluationError)) return false;
+
+  // The root (the region's lowest cell) holds the region's value; then every
+  // other cell of a seeded region copies it.
+  for (size_t k = 0; k < seeds.size(); ++k)
+    value[seeds[k].first] = seedValue[k], radius[seeds[k].first] = kEvaluationError;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < count; ++i) {
+    const uint32_t r = region[i];
+    if (r != i && radius[r] >= 0.0f) value[i] = value[r], radius[i] = radius[r];
+  }
+  return true;
+}
 
 template <class Cells>
 std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, const WindingGradientBound& gradient,
@@ -89,12 +145,16 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
     }
   };
   // Cells clear of the surface first: they flood the big regions (one
-  // evaluation each), sequentially, since a region may span the grid.
-  for (size_t seed = 0; seed < count; ++seed)
-    if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
-      evaluate(seed);
-      flood(seed);
-    }
+  // evaluation each). A closed surface's regions are labelled on all
+  // threads at once, with the same result; otherwise (or where a region's
+  // evaluation falls too near 1/2 to hand on) the flood goes sequentially,
+  // since a region may span the grid.
+  if (gradient.openEdgeCount() > 0 || !signRegionsAtOnce(cells, bvh, frame, distance, value, radius, evaluations))
+    for (size_t seed = 0; seed < count; ++seed)
+      if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
+        evaluate(seed);
+        flood(seed);
+      }
 
   // The cells left hug the surface. Each takes the value of a decided
   // neighbour across its 26-neighbourhood where the same test allows it (a

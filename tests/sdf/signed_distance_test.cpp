@@ -140,6 +140,9 @@ TEST(SignedDistance, SignIsTheBruteForceWindingNumberSign)
   const TriangleMesh sphere = testing::icosphere(3, 1.0);
   const TriangleMesh second = testing::icosphere(2, 0.6, {0.9, 0.3, -0.2});
   expectSignMatchesWindingNumber(sphere, 28);
+  // Closed, with regions of winding number 0, 1 and 2: a sphere inside a
+  // sphere, each region signed by one evaluation.
+  expectSignMatchesWindingNumber(testing::merged(sphere, testing::icosphere(2, 0.5, {0.1, 0.0, 0.1})), 28);
   expectSignMatchesWindingNumber(testing::sdf::withHoles(sphere, 40, 2), 28);
   expectSignMatchesWindingNumber(testing::merged(testing::sdf::withHoles(sphere, 8, 3), second), 28);
   // Inconsistent orientation: a band of flipped triangles makes w swing
@@ -230,17 +233,22 @@ TEST(SignedDistance, FarFieldIsCloseToExactAndNeverBelowIt)
 
 TEST(SignedDistance, ResultDoesNotDependOnThreadCount)
 {
-  const TriangleMesh mesh = testing::merged(testing::sdf::withHoles(testing::icosphere(3, 1.0), 20, 5),
-                                            testing::icosphere(2, 0.5, {0.8, 0, 0}));
-  const GridFrame frame = frameWithResolution(bounds(mesh), 40, 3);
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const Volume one = signedDistance(mesh, frame);
-  omp_set_num_threads(std::max(threads, 2));
-  const Volume many = signedDistance(mesh, frame);
-  omp_set_num_threads(threads);
-  ASSERT_EQ(one.size(), many.size());
-  for (size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], many[i]) << "cell " << i;
+  // Open (the sign's sequential flood) and closed (its regions, labelled
+  // on all threads at once).
+  for (const TriangleMesh& mesh :
+       {testing::merged(testing::sdf::withHoles(testing::icosphere(3, 1.0), 20, 5),
+                        testing::icosphere(2, 0.5, {0.8, 0, 0})),
+        testing::merged(testing::icosphere(3, 1.0), testing::icosphere(2, 0.5, {0.8, 0, 0}))}) {
+    const GridFrame frame = frameWithResolution(bounds(mesh), 40, 3);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const Volume one = signedDistance(mesh, frame);
+    omp_set_num_threads(std::max(threads, 4));
+    const Volume many = signedDistance(mesh, frame);
+    omp_set_num_threads(threads);
+    ASSERT_EQ(one.size(), many.size());
+    for (size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], many[i]) << "cell " << i;
+  }
 }
 
 TEST(SignedDistance, FrameBesideTheMeshStillMeasuresAndSigns)

@@ -1,6 +1,7 @@
 lbmshape_test(sdf_tests
   ${CMAKE_CURRENT_LIST_DIR}/band_sdf_checks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_signed_distance_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/clear_regions_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp

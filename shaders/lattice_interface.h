@@ -26,6 +26,13 @@
   FIELD(float, baseScale) /* k of the source: S = k base - c X */      \
   FIELD(float, gamma0) /* the paper's rule: gamma = gamma0 + kappa */
 
+// The push constants of the feature-preserving rule's pass
+// (lbm_feature_rule.comp).
+#define LATTICE_FEATURE_RULE_PARAMETERS(FIELD)                          \
+  FIELD(float, gamma0) /* gamma where the field is flat */              \
+  FIELD(float, kappaEdge) /* the curvature at which gamma is halved */  \
+  FIELD(float, lowestGamma) /* gamma's floor: min(lowest, gamma0) */
+
 #define LATTICE_DECLARE_FIELD(type, name) type name;
 
 #ifdef __cplusplus
@@ -34,6 +41,10 @@ struct StepParameters {
   LATTICE_STEP_PARAMETERS(LATTICE_DECLARE_FIELD)
 };
 static_assert(sizeof(StepParameters) == 4 * 4, "push constants: 4 words");
+struct FeatureRuleParameters {
+  LATTICE_FEATURE_RULE_PARAMETERS(LATTICE_DECLARE_FIELD)
+};
+static_assert(sizeof(FeatureRuleParameters) == 3 * 4, "push constants: 3 words");
 }  // namespace lbmshape::lattice_shader
 #endif
 

@@ -48,9 +48,8 @@ public:
   // source cannot be set with it. Undone by the two setters above.
   virtual void setPaperRule(double gamma0) = 0;
   // lbmshape's feature-preserving rule (adaptive_gamma::featurePreservingRule)
-  // on the field now, as gamma per cell: the field read back, the rule on
-  // the host (both grid solvers; the band's Vulkan solver keeps it on the
-  // device).
+  // on the field now, as gamma per cell: here on the host, from the field;
+  // the Vulkan solver runs it on the device.
   virtual void setFeaturePreservingGamma(double gamma0, double kappaEdge)
   {
     setGammaPerCell(adaptive_gamma::featurePreservingRule(field(), gamma0, kappaEdge));

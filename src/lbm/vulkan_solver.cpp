@@ -1,5 +1,6 @@
 #include "lbm/vulkan_solver.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -7,6 +8,7 @@
 #include "lattice_interface.h"
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
+#include "lbm/adaptive_gamma.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/lattice_memory.hpp"
 #include "lbm/relaxation.hpp"
@@ -33,6 +35,7 @@ constexpr uint32_t latticeWorkgroupSize = 128;
 // Binding numbers of lbm_init.comp.
 enum InitBinding : uint32_t { InitDensity = 0, InitOut = 1 };
 
+using lattice_shader::FeatureRuleParameters;
 using lattice_shader::StepParameters;
 
 uint32_t groups(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
@@ -123,6 +126,11 @@ struct VulkanSolver::Resources {
     constants.push_back(gpu::specBool(source.has_value()));
     constants.push_back(gpu::specBool(paperRuleGamma0.has_value()));
     return {shader, latticeBindings(), constants, sizeof(StepParameters)};
+  }
+  gpu::ProgramSpec featureRuleProgram() const
+  {
+    return {"lbm_feature_rule", latticeBindings(), gridConstants(layout, latticeWorkgroupSize),
+            sizeof(FeatureRuleParameters)};
   }
   gpu::ProgramSpec initProgram() const
   {
@@ -279,6 +287,36 @@ void VulkanSolver::setGammaPerCell(const Volume& gamma)
   r_->upload(solver_state::omegaFromGammaVolume(gamma), r_->omega);
   r_->perCellOmega = true;
   r_->paperRuleGamma0.reset();
+}
+
+void VulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge)
+{
+  adaptive_gamma::checkFeatureRule(gamma0, kappaEdge);
+  // The rule replaces the paper's (whose X before the field pass would
+  // overwrite) and any gamma per cell.
+  r_->paperRuleGamma0.reset();
+  auto& fieldProgram = r_->context.program(r_->latticeProgram("lbm_field"));
+  auto& rule = r_->context.program(r_->featureRuleProgram());
+  const StepParameters push = r_->parameters();
+  const FeatureRuleParameters rulePush{float(gamma0), float(kappaEdge),
+                                       float(std::min(adaptive_gamma::lowest, gamma0))};
+  const auto bind = vk::PipelineBindPoint::eCompute;
+  // In one submission and on the device: the field pass into the field
+  // buffer, then the rule from there into the omega buffer.
+  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(bind, *fieldProgram.pipeline);
+    cmd.pushConstants<StepParameters>(*fieldProgram.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cmd.bindDescriptorSets(bind, *fieldProgram.layout, 0, *r_->latticeSets[r_->current], {});
+    r_->dispatchLattice(cmd);
+    barrier(cmd, shaderWrite, computeStage, shaderRead, computeStage);
+    cmd.bindPipeline(bind, *rule.pipeline);
+    cmd.pushConstants<FeatureRuleParameters>(*rule.layout, vk::ShaderStageFlagBits::eCompute, 0, rulePush);
+    cmd.bindDescriptorSets(bind, *rule.layout, 0, *r_->latticeSets[r_->current], {});
+    r_->dispatchLattice(cmd);
+    // The next step reads omega.
+    barrier(cmd, shaderWrite, computeStage, shaderRead | shaderWrite, computeStage);
+  });
+  r_->perCellOmega = true;
 }
 
 void VulkanSolver::setPaperRule(double gamma0)

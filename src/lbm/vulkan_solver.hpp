@@ -21,6 +21,9 @@ public:
   Extent3 extent() const override;
   void setUniformGamma(double gamma) override;
   void setGammaPerCell(const Volume& gamma) override;
+  // On the device, in one submission: no field read back, no gamma sent
+  // (shaders/lbm_feature_rule.comp).
+  void setFeaturePreservingGamma(double gamma0, double kappaEdge) override;
   void setPaperRule(double gamma0) override;
   void setSource(std::optional<LinearSource> source) override;
   void setSourceStrength(float decay, float scale) override;

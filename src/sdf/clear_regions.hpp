@@ -81,9 +81,9 @@ std::vector<uint32_t> clearRegions(const Cells& cells, const float* distance, fl
   }
   if (interrupted) interrupt::check("nothing was written");
 
-    // Every cell straight to its root: the regions' names.
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < count; ++i) {
+    // Every cell straight to its root: the regions' names.
     const uint32_t root = findRoot(parent, uint32_t(i));
     std::atomic_ref<uint32_t>(parent[i]).store(root, std::memory_order_relaxed);
   }

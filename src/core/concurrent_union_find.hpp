@@ -44,8 +44,7 @@ public:
       if (a == b) return;
       if (a < b) std::swap(a, b);
       uint32_t expected = a;
-      if (std::atomic_ref<uint32_t>(parent_[a]).compare_exchange_strong(expected, b, std::memory_order_relaxed))
-        return;
+      if (std::atomic_ref<uint32_t>(parent_[a]).compare_exchange_strong(expected, b, std::memory_order_relaxed)) return;
     }
   }
 

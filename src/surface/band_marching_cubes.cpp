@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <parallel/algorithm>
+
 #include "core/error.hpp"
 #include "surface/case_triangulation.hpp"
 #include "surface/cube_cases.hpp"
@@ -128,23 +130,33 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), sides, perBrick[s]);
 
+  // Where each brick's triangles start in the mesh.
+  std::vector<size_t> firstTriangle(slots + 1, 0);
+  for (size_t s = 0; s < slots; ++s) firstTriangle[s + 1] = firstTriangle[s] + perBrick[s].triangles.size();
+  const size_t triangleCount = firstTriangle[slots];
+
   // One vertex per cut edge: the edges' keys, sorted, number the vertices.
-  std::vector<EdgeKey> keys;
-  size_t triangleCount = 0;
-  for (const BrickTriangles& b : perBrick) triangleCount += b.triangles.size();
-  keys.reserve(3 * triangleCount);
-  for (const BrickTriangles& b : perBrick)
-    for (const auto& t : b.triangles) keys.insert(keys.end(), t.begin(), t.end());
-  std::sort(keys.begin(), keys.end());
+  // (All on the threads: at --res 512 the sort and the look-ups took 320
+  // of the 575 ms when they ran on one.)
+  std::vector<EdgeKey> keys(3 * triangleCount);
+#pragma omp parallel for schedule(dynamic, 16)
+  for (size_t s = 0; s < slots; ++s)
+    for (size_t k = 0; k < perBrick[s].triangles.size(); ++k)
+      std::copy_n(perBrick[s].triangles[k].begin(), 3, keys.begin() + ptrdiff_t(3 * (firstTriangle[s] + k)));
+  __gnu_parallel::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   if (keys.size() >= std::numeric_limits<uint32_t>::max())
     throw UsageError("the surface has more than 4 billion vertices; use a coarser grid");
 
   TriangleMesh mesh;
-  mesh.triangles.reserve(triangleCount);
+  mesh.triangles.resize(triangleCount);
   auto vertexOf = [&](EdgeKey key) { return uint32_t(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin()); };
-  for (const BrickTriangles& b : perBrick)
-    for (const auto& t : b.triangles) mesh.triangles.emplace_back(vertexOf(t[0]), vertexOf(t[1]), vertexOf(t[2]));
+#pragma omp parallel for schedule(dynamic, 16)
+  for (size_t s = 0; s < slots; ++s)
+    for (size_t k = 0; k < perBrick[s].triangles.size(); ++k) {
+      const auto& t = perBrick[s].triangles[k];
+      mesh.triangles[firstTriangle[s] + k] = glm::uvec3(vertexOf(t[0]), vertexOf(t[1]), vertexOf(t[2]));
+    }
 
   const Extent3 e = field.extent();
   const auto at = [&field](int x, int y, int z) { return field.at(x, y, z); };

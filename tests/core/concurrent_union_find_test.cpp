@@ -46,7 +46,7 @@ TEST(ConcurrentUnionFind, JoinsFromManyThreadsMakeTheSetsOfOneThread)
   const std::vector<uint32_t> expected = lowestMembers(count, joins);
   size_t sets = 0;
   for (size_t i = 0; i < count; ++i) sets += expected[i] == i;
-  ASSERT_GT(sets, 100u);          // many sets
+  ASSERT_GT(sets, 100u);           // many sets
   ASSERT_LT(sets, count * 3 / 4);  // and many joined
 
   const int threads = omp_get_max_threads();

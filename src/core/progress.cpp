@@ -48,6 +48,13 @@ Progress::~Progress()
   if (shown_) log::endProgress();
 }
 
+bool Progress::lineShown() const
+{
+  // The reporter holds the lock from setting shown_ until the line is out.
+  std::lock_guard lock(mutex_);
+  return shown_;
+}
+
 void Progress::beginPart(const std::string& part, double units, double weight)
 {
   std::lock_guard lock(mutex_);

@@ -35,6 +35,9 @@ public:
 
   // The fraction of the stage done, in [0, 1].
   double fraction() const;
+  // Whether a line has been written (the reporter has finished writing it
+  // when this says so): what a caller, or a test, can wait on.
+  bool lineShown() const;
 
 private:
   std::string line() const;

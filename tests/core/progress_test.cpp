@@ -10,6 +10,7 @@
 
 #include "core/log.hpp"
 #include "core/progress.hpp"
+#include "core/stopwatch.hpp"
 
 namespace lbmshape {
 namespace {
@@ -84,7 +85,9 @@ TEST_F(ProgressLine, LongStageSaysHowFarItIs)
     Progress p("lbm");
     p.beginPart("steps", 4);
     p.advance(1);
-    sleepMs(200);
+    // The reporter writes after 20 ms; however busy the machine, wait for it.
+    for (Stopwatch waited; !p.lineShown() && waited.ms() < 10000.0;) sleepMs(5);
+    ASSERT_TRUE(p.lineShown());
   }
   const std::string text = err.text();
   EXPECT_NE(text.find("lbmshape: lbm  25% (steps)"), std::string::npos) << text;

@@ -1,4 +1,4 @@
-// What the narrow-band shader (band_step.comp) and its host side
+// What the narrow-band shaders (band_step.comp, band_feature_rule.comp) and their host side
 // (src/lbm/band_vulkan_solver.cpp) agree on, written once for both: GLSL
 // includes this file, and so does C++.
 //
@@ -42,13 +42,9 @@
 #define BAND_PASS_FIELD 0           // X of every stored cell to the field buffer
 #define BAND_PASS_STEP 1            // a lattice step
 // X into the copy of the moments that the next step would write, where its
-// rho* goes: the older copy is spent (the solver counts it so).
+// rho* goes: the older copy is spent (the solver counts it so). The
+// feature rule (band_feature_rule.comp) reads it there.
 #define BAND_PASS_FIELD_TO_OLDER 2
-// lbmshape's feature-preserving rule (src/lbm/adaptive_gamma.hpp) on the X
-// that BAND_PASS_FIELD_TO_OLDER stored, dispatched with the descriptor set
-// that reads that copy: omega per stored cell into the omega buffer. No
-// scratch buffer, and nothing goes back to the host.
-#define BAND_PASS_FEATURE_RULE 3
 
 // Specialization constants.
 #define BAND_SPEC_W_REST 0
@@ -72,7 +68,7 @@
   FIELD(int, perCellOmega) /* 1: omega from the omega buffer */                  \
   FIELD(int, hasSource)    /* 1: the morph's source term */                       \
   FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */                \
-  FIELD(float, kappaEdge)  /* the feature rule's, BAND_PASS_FEATURE_RULE */       \
+  FIELD(float, kappaEdge)  /* the feature rule's (band_feature_rule.comp) */      \
   FIELD(float, lowestGamma) /* its lowest gamma, min(ADAPTIVE_GAMMA_LOWEST, gamma0) */
 
 // vec4 index of moment m (0..3) of row `row` (y + 8 z), half `half` (cells

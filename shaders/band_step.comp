@@ -5,28 +5,26 @@
 // CPU): pull f_i = w_i (rho* + 3 e_i . j*) from the upstream cell, sum X and
 // J, apply the source, collide and store (rho*, j*). With the push constant
 // `pass` BAND_PASS_FIELD or BAND_PASS_FIELD_TO_OLDER it stores X instead:
-// the field of the current state; with BAND_PASS_FEATURE_RULE it turns that
-// field, from the copy of the moments where the latter put it, into omega
-// per cell (featureRule()).
+// the field of the current state (band_feature_rule.comp turns the latter
+// into omega per cell).
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
 // gamma = clamp(gamma0 + (X - rho*) / gamma before), rho* being the X its
 // last step pulled (no source runs with the rule), and keeps that gamma.
 //
-// A workgroup is one brick; an invocation one of its rows of eight cells, as
-// two vec4 per moment, so every fetch brings four cells (on lavapipe a vec4
-// texel fetch is plain loads, other loads one lane at a time) and only the
-// cells beyond the row's ends come from the bricks beside it.
+// A workgroup is one brick (band_rows.glsl); an invocation one of its rows
+// of eight cells, as two vec4 per moment, so every fetch brings four cells
+// (on lavapipe a vec4 texel fetch is plain loads, other loads one lane at a
+// time) and only the cells beyond the row's ends come from the bricks
+// beside it.
 #include "adaptive_gamma_bounds.h"
-#include "band_interface.h"
+#include "band_rows.glsl"
 
-layout(local_size_x = BAND_WORKGROUP_SIZE) in;
 layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
 layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
 layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
 
-layout(push_constant) uniform Parameters { BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD) } p;
 // The variants are push constants, not specialization constants: one
 // pipeline serves every kind of step and the field pass (lavapipe spends
 // about 100 ms compiling each pipeline), at the cost of uniform branches.
@@ -34,30 +32,16 @@ layout(push_constant) uniform Parameters { BAND_STEP_PARAMETERS(BAND_DECLARE_FIE
 #define HAS_SOURCE (p.hasSource != 0)
 #define PAPER_RULE (p.paperRule != 0)
 
-layout(set = 0, binding = BAND_BINDING_MOMENTS) uniform samplerBuffer moments;
 layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBits;
-layout(set = 0, binding = BAND_BINDING_NEIGHBOURS) uniform isamplerBuffer neighbours;
-layout(set = 0, binding = BAND_BINDING_ORIGINS) uniform isamplerBuffer origins;
 layout(set = 0, binding = BAND_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;
 layout(set = 0, binding = BAND_BINDING_SOURCE) uniform samplerBuffer sourceBase;
-layout(set = 0, binding = BAND_BINDING_WORK) uniform isamplerBuffer work;
 layout(set = 0, binding = BAND_BINDING_NEXT, std430) writeonly buffer NextPool { vec4 v[]; } nextPools[BAND_MAX_POOLS];
 layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_POOLS];
-// Used only with PAPER_RULE (each invocation reads and writes its own cells)
-// and by BAND_PASS_FEATURE_RULE, which writes omega there.
+// Used only with PAPER_RULE: each invocation reads and writes its own cells.
 layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform imageBuffer gammaPerCell;
 
-int slot, y, z;  // this invocation's brick and row
-ivec3 origin;    // the brick's first cell
 vec4 fa[19], fb[19];  // the row's cells 0-3 and 4-7, pulled
 vec4 ownA[4], ownB[4];  // the same cells' own moments
-
-// vec4 index of moment `m` of row (yy, zz), half hh, of brick s.
-int momentAt(int s, int m, int yy, int zz, int hh) { return BAND_MOMENT_INDEX(s, m, zz * 8 + yy, hh); }
-int neighbourSlot(int dx, int dy, int dz) { return texelFetch(neighbours, slot * 27 + (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1)).x; }
-vec4 moment(int index) { return texelFetch(moments, index); }
-
-bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 
 #define WEIGHT(EX, EY, EZ) \
   ((EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 0 ? W_REST : (EX) * (EX) + (EY) * (EY) + (EZ) * (EZ) == 1 ? W_AXIAL : W_DIAGONAL)
@@ -66,28 +50,6 @@ bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 #define E_DOT(EX, EY, EZ, JX, JY, JZ)                                                      \
   (((EX) == 0 ? vec4(0.0) : float(EX) * (JX)) + ((EY) == 0 ? vec4(0.0) : float(EY) * (JY)) + \
    ((EZ) == 0 ? vec4(0.0) : float(EZ) * (JZ)))
-
-// Where row (yy, zz) of this brick's coordinates (-1 .. 8) lies: the slot
-// and the row within it, and the brick beside this one that holds it (by,
-// bz); `valid` false where it is beyond the grid's faces or in a brick
-// outside the band, and then the invocation's own row stands in for it.
-struct RowPlace {
-  int slot, ly, lz, by, bz;
-  bool valid;
-};
-
-RowPlace rowPlace(int yy, int zz)
-{
-  RowPlace r;
-  r.by = yy < 0 ? -1 : (yy > 7 ? 1 : 0);
-  r.bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);
-  const int rowSlot = neighbourSlot(0, r.by, r.bz);
-  r.valid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 && origin.z + zz < p.nz && rowSlot >= 0;
-  r.slot = r.valid ? rowSlot : slot;
-  r.ly = r.valid ? yy & 7 : y;
-  r.lz = r.valid ? zz & 7 : z;
-  return r;
-}
 
 // fa[I], fb[I]: the row's eight cells pull from the cells at -e_I: the row
 // (y - EY, z - EZ), possibly in a neighbouring brick, shifted by one cell
@@ -180,71 +142,9 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   nextPools[pool].v[momentAt(first, 3, y, z, part)] = (1.0 - omega) * Jz;
 }
 
-// Row (y + dy, z + dz) of X from moment 0 of the copy this dispatch reads
-// (where BAND_PASS_FIELD_TO_OLDER put it), as cells 0-3 and 4-7, placed by
-// rowPlace(): the own row beyond the grid's faces (zero flux: a neighbour
-// there reads as the cell itself, as on the CPU) and in a brick outside the
-// band. The CPU reads the far value there instead:
-// only cells at the band's edge have such a neighbour, and they never
-// stream (a streaming cell has its 18 lattice neighbours in the band), so
-// their flux j* starts at 0 and stays 0 whatever omega they get: the steps
-// come out the same.
-void fieldRow(int dy, int dz, out vec4 a, out vec4 b)
-{
-  const RowPlace row = rowPlace(y + dy, z + dz);
-  a = moment(momentAt(row.slot, 0, row.ly, row.lz, 0));
-  b = moment(momentAt(row.slot, 0, row.ly, row.lz, 1));
-}
-
-// lbmshape's feature-preserving rule for the row's eight cells (the CPU
-// form, which the reference solver applies, is in src/lbm/adaptive_gamma.hpp):
-//     kappa = the 7-point Laplacian of X,
-//     gamma = clamp(gamma0 / (1 + (kappa / kappaEdge)^2), lowest, gamma0),
-// and omega = 1 / (3 gamma + 1/2) into the omega buffer. Cells beyond the
-// grid (in bricks at its far faces) have kappa 0.
-void featureRule()
-{
-  vec4 ownA, ownB, downA, downB, upA, upB, backA, backB, frontA, frontB;
-  fieldRow(0, 0, ownA, ownB);
-  fieldRow(-1, 0, downA, downB);
-  fieldRow(1, 0, upA, upB);
-  fieldRow(0, -1, backA, backB);
-  fieldRow(0, 1, frontA, frontB);
-  // Along x: the cells beside the row's ends from the bricks beside it.
-  const int leftSlot = neighbourSlot(-1, 0, 0), rightSlot = neighbourSlot(1, 0, 0);
-  const float left = origin.x > 0 && leftSlot >= 0 ? moment(momentAt(leftSlot, 0, y, z, 1)).w : ownA.x;
-  const float right = rightSlot >= 0 ? moment(momentAt(rightSlot, 0, y, z, 0)).x : ownB.w;
-  const vec4 leftA = vec4(left, ownA.xyz), leftB = vec4(ownA.w, ownB.xyz);
-  vec4 rightA = vec4(ownA.yzw, ownB.x), rightB = vec4(ownB.yzw, right);
-  // A cell at the grid's last x reads itself as its right neighbour.
-  rightA = mix(rightA, ownA, greaterThanEqual(origin.x + ivec4(1, 2, 3, 4), ivec4(p.nx)));
-  rightB = mix(rightB, ownB, greaterThanEqual(origin.x + ivec4(5, 6, 7, 8), ivec4(p.nx)));
-  const vec4 kappaA = leftA + rightA + downA + upA + backA + frontA - 6.0 * ownA;
-  const vec4 kappaB = leftB + rightB + downB + upB + backB + frontB - 6.0 * ownB;
-  const vec4 rA = kappaA / p.kappaEdge, rB = kappaB / p.kappaEdge;
-  vec4 gammaA = clamp(p.gamma0 / (1.0 + rA * rA), p.lowestGamma, p.gamma0);
-  vec4 gammaB = clamp(p.gamma0 / (1.0 + rB * rB), p.lowestGamma, p.gamma0);
-  const bool rowInGrid = origin.y + y < p.ny && origin.z + z < p.nz;
-  gammaA = mix(vec4(p.gamma0), gammaA, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx))));
-  gammaB = mix(vec4(p.gamma0), gammaB, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx))));
-  const int cells = (slot * 64 + z * 8 + y) * 2;  // vec4 index in the per-cell arrays
-  imageStore(gammaPerCell, cells, 1.0 / (3.0 * gammaA + 0.5));
-  imageStore(gammaPerCell, cells + 1, 1.0 / (3.0 * gammaB + 0.5));
-}
-
 void main()
 {
-  const int item = int(gl_WorkGroupID.x + gl_WorkGroupID.y * BAND_MAX_WORKGROUPS_X);
-  if (item >= p.works) return;
-  slot = texelFetch(work, p.workOffset + item).x;
-  const int lane = int(gl_LocalInvocationID.x);
-  y = lane & 7;
-  z = lane >> 3;
-  origin = texelFetch(origins, slot).xyz;
-  if (p.pass == BAND_PASS_FEATURE_RULE) {
-    featureRule();
-    return;
-  }
+  if (!locateRow()) return;
   const uint rowBits = texelFetch(streamBits, slot * 64 + z * 8 + y).x;
   const vec4 streamsA = vec4(notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0)));
   const vec4 streamsB = vec4(notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0)));

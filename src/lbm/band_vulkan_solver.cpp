@@ -351,6 +351,13 @@ struct BandVulkanSolver::Resources {
             sizeof(band_shader::StepParameters)};
   }
 
+  // The feature-preserving rule's pipeline: a shader of its own, where a
+  // pass of band_step.comp would run the whole step's code masked.
+  gpu::ProgramSpec featureRuleProgram() const
+  {
+    return {"band_feature_rule", bindings(), {}, sizeof(band_shader::StepParameters)};
+  }
+
   // A step's parameters, or with `everySlot` the field pass's.
   band_shader::StepParameters parameters(bool everySlot) const
   {
@@ -395,15 +402,25 @@ BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<con
   // Lavapipe turns a pipeline into machine code at its first dispatch (some
   // 250 ms on the 2-core host, where pipeline creation took 100): one
   // dispatch of no work here puts that in the set-up, where a real GPU's
-  // driver compiles, rather than in the first step.
-  auto& program = context.program(r_->program());
+  // driver compiles, rather than in the first step. The feature rule's
+  // pipeline too: small, and the default denoise needs it.
   band_shader::StepParameters idle = r_->parameters(false);
   idle.works = 0;
   context.runAndWait([&](vk::CommandBuffer cmd) {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, idle);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->sets[0], {});
-    cmd.dispatch(1, 1, 1);
+    for (const gpu::ProgramSpec& spec : {r_->program(), r_->featureRuleProgram()}) {
+      auto& program = context.program(spec);
+      cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+      cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, idle);
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->sets[0], {});
+      cmd.dispatch(1, 1, 1);
+      // No cell is touched, but the validation layer counts the bindings
+      // each shader may read and write: the rule writes the omega buffer
+      // that the step reads.
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite,
+                                            vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
+                          {}, {});
+    }
   });
 }
 
@@ -488,6 +505,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   // buffer of its own would add a float a cell to the peak (47 MB at
   // --res 512).
   auto& program = r_->context.program(r_->program());
+  auto& rule = r_->context.program(r_->featureRuleProgram());
   band_shader::StepParameters push = r_->parameters(true);
   auto shaderWritten = [](vk::CommandBuffer cmd, vk::PipelineStageFlags next, vk::AccessFlags access) {
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, next, {},
@@ -499,12 +517,12 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
     r_->dispatch(cmd, program, r_->current, true);
     shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader, vk::AccessFlagBits::eShaderRead);
-    push.pass = BAND_PASS_FEATURE_RULE;
     push.gamma0 = float(gamma0);
     push.kappaEdge = float(kappaEdge);
     push.lowestGamma = float(std::min(adaptive_gamma::lowest, gamma0));
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    r_->dispatch(cmd, program, 1 - r_->current, true);
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *rule.pipeline);
+    cmd.pushConstants<band_shader::StepParameters>(*rule.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    r_->dispatch(cmd, rule, 1 - r_->current, true);
     // The next step reads omega, and writes the older copy the rule read.
     shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader,
                   vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);

@@ -25,17 +25,12 @@ double maxDifferenceNear(const std::vector<float>& X, const std::vector<float>& 
   return worst;
 }
 
-class GridMorph final : public MorphLattice {
+// What a morph does alike on the grid and on the band: the two fields (a
+// Volume or a BandField each), their checks, the target's own level, and the
+// solver's controls.
+template <class Field, class Solver>
+class TwoFieldMorph : public MorphLattice {
 public:
-  GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock,
-            const std::function<void()>& beforeDistances)
-      : frame_(frame)
-  {
-    beforeDistances();
-    source_ = clock.time("sdf", [&](Progress& p) { return signedDistance(source, frame, {.progress = &p}); });
-    target_ = clock.time("sdf", [&](Progress& p) { return signedDistance(target, frame, {.progress = &p}); });
-  }
-
   void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const override
   {
     requireEnclosedVolume(source_, source);
@@ -47,6 +42,35 @@ public:
     return maxDifferenceNear(source_.values(), target_.values(), band);
   }
   TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
+
+  SteppingSolver& solver() override { return *solver_; }
+  void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
+  void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
+  FrameField field() override { return std::make_shared<const Field>(solver_->field()); }
+
+  double errorNearTarget(const FrameField& field, float band) const override
+  {
+    return maxDifferenceNear(std::get<std::shared_ptr<const Field>>(field)->values(), target_.values(), band);
+  }
+
+protected:
+  explicit TwoFieldMorph(const GridFrame& frame) : frame_(frame) {}
+
+  GridFrame frame_;
+  Field source_, target_;
+  std::unique_ptr<Solver> solver_;
+};
+
+class GridMorph final : public TwoFieldMorph<Volume, LatticeSolver> {
+public:
+  GridMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame, StageClock& clock,
+            const std::function<void()>& beforeDistances)
+      : TwoFieldMorph(frame)
+  {
+    beforeDistances();
+    source_ = clock.time("sdf", [&](Progress& p) { return signedDistance(source, frame, {.progress = &p}); });
+    target_ = clock.time("sdf", [&](Progress& p) { return signedDistance(target, frame, {.progress = &p}); });
+  }
 
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
   {
@@ -62,26 +86,12 @@ public:
     source_ = Volume();  // no longer needed
   }
 
-  SteppingSolver& solver() override { return *solver_; }
-  void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
-  void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
-  FrameField field() override { return std::make_shared<const Volume>(solver_->field()); }
-
-  double errorNearTarget(const FrameField& field, float band) const override
-  {
-    return maxDifferenceNear(std::get<std::shared_ptr<const Volume>>(field)->values(), target_.values(), band);
-  }
-
   size_t cells() const override { return frame_.extent.cells(); }
   nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
 
 private:
   // S = Cs X_target - Cs X: X_target uploaded once, Cs a push constant.
   LinearSource morphForce(double cs) const { return LinearSource{target_, float(cs), float(cs)}; }
-
-  GridFrame frame_;
-  Volume source_, target_;
-  std::unique_ptr<LatticeSolver> solver_;
 };
 
 // The narrow band of a morph holds the cells near the source's surface, near
@@ -91,12 +101,12 @@ private:
 // rest are far from every place the surface goes through, and there the
 // morph force alone moves X (X follows X_target + (X_source - X_target)
 // e^(-Cs t), which the held cells do).
-class BandMorph final : public MorphLattice {
+class BandMorph final : public TwoFieldMorph<BandField, BandSolver> {
 public:
   BandMorph(const TriangleMesh& source, const TriangleMesh& target, const GridFrame& frame,
             const MorphSchedule& longest, const ComputeDevice& device, StageClock& clock,
             const std::function<void()>& beforeDistances)
-      : frame_(frame)
+      : TwoFieldMorph(frame)
   {
     halfWidth_ = streamingHalfWidth(longest.totalDiffusion() / longest.totalSteps(), longest.totalSteps());
     clock.time("sdf", [&](Progress& progress) {
@@ -115,18 +125,6 @@ public:
     });
   }
 
-  void requireEnclosedVolumes(const std::filesystem::path& source, const std::filesystem::path& target) const override
-  {
-    requireEnclosedVolume(source_, source);
-    requireEnclosedVolume(target_, target);
-  }
-
-  double sourceErrorNearTarget(float band) const override
-  {
-    return maxDifferenceNear(source_.values(), target_.values(), band);
-  }
-  TriangleMesh targetLevel() const override { return extractSurface(target_, frame_); }
-
   void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
   {
     solver_ = clock.time("setup", [&] {
@@ -137,16 +135,6 @@ public:
       s->initialize(std::move(source_), std::move(flags));  // the solver keeps it until its first step
       return s;
     });
-  }
-
-  SteppingSolver& solver() override { return *solver_; }
-  void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
-  void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
-  FrameField field() override { return std::make_shared<const BandField>(solver_->field()); }
-
-  double errorNearTarget(const FrameField& field, float band) const override
-  {
-    return maxDifferenceNear(std::get<std::shared_ptr<const BandField>>(field)->values(), target_.values(), band);
   }
 
   size_t cells() const override { return target_.bricks().storedCells(); }
@@ -224,10 +212,7 @@ private:
     return flags;
   }
 
-  GridFrame frame_;
   double halfWidth_ = 0.0;
-  BandField source_, target_;
-  std::unique_ptr<BandSolver> solver_;
 };
 
 }  // namespace

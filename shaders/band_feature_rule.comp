@@ -11,6 +11,7 @@
 // cost more than a whole step (320 ms at --res 512), and every step paid for
 // the rule's code.
 #include "band_rows.glsl"
+#include "feature_rule.glsl"
 
 layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform writeonly imageBuffer omegaPerCell;
 
@@ -30,12 +31,9 @@ void fieldRow(int dy, int dz, out vec4 a, out vec4 b)
   b = moment(momentAt(row.slot, 0, row.ly, row.lz, 1));
 }
 
-// lbmshape's feature-preserving rule for the row's eight cells (the CPU
-// form, which the reference solver applies, is in src/lbm/adaptive_gamma.hpp):
-//     kappa = the 7-point Laplacian of X,
-//     gamma = clamp(gamma0 / (1 + (kappa / kappaEdge)^2), lowest, gamma0),
-// and omega = 1 / (3 gamma + 1/2) into the omega buffer. Cells beyond the
-// grid (in bricks at its far faces) have kappa 0.
+// lbmshape's feature-preserving rule (feature_rule.glsl) for the row's
+// eight cells, kappa the 7-point Laplacian of X: omega into the omega
+// buffer. Cells beyond the grid (in bricks at its far faces) get gamma0's.
 void featureRule()
 {
   vec4 ownA, ownB, downA, downB, upA, upB, backA, backB, frontA, frontB;
@@ -55,15 +53,13 @@ void featureRule()
   rightB = mix(rightB, ownB, greaterThanEqual(origin.x + ivec4(5, 6, 7, 8), ivec4(p.nx)));
   const vec4 kappaA = leftA + rightA + downA + upA + backA + frontA - 6.0 * ownA;
   const vec4 kappaB = leftB + rightB + downB + upB + backB + frontB - 6.0 * ownB;
-  const vec4 rA = kappaA / p.kappaEdge, rB = kappaB / p.kappaEdge;
-  vec4 gammaA = clamp(p.gamma0 / (1.0 + rA * rA), p.lowestGamma, p.gamma0);
-  vec4 gammaB = clamp(p.gamma0 / (1.0 + rB * rB), p.lowestGamma, p.gamma0);
   const bool rowInGrid = origin.y + y < p.ny && origin.z + z < p.nz;
-  gammaA = mix(vec4(p.gamma0), gammaA, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx))));
-  gammaB = mix(vec4(p.gamma0), gammaB, both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx))));
+  const bvec4 insideA = both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx)));
+  const bvec4 insideB = both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx)));
   const int cells = (slot * 64 + z * 8 + y) * 2;  // vec4 index in the per-cell arrays
-  imageStore(omegaPerCell, cells, 1.0 / (3.0 * gammaA + 0.5));
-  imageStore(omegaPerCell, cells + 1, 1.0 / (3.0 * gammaB + 0.5));
+  imageStore(omegaPerCell, cells, featurePreservingOmega(kappaA, not(insideA), p.gamma0, p.kappaEdge, p.lowestGamma));
+  imageStore(omegaPerCell, cells + 1,
+             featurePreservingOmega(kappaB, not(insideB), p.gamma0, p.kappaEdge, p.lowestGamma));
 }
 
 void main()

@@ -1,19 +1,17 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// lbmshape's feature-preserving rule on the dense lattice (the CPU form,
-// which the reference solver applies, is in src/lbm/adaptive_gamma.hpp; the
-// band's is featureRule() in band_step.comp): from the field that the field
-// pass left in the field buffer,
-//     kappa = the 7-point Laplacian of X (a neighbour beyond the grid's
-//             faces reads as the cell itself: zero flux),
-//     gamma = clamp(gamma0 / (1 + (kappa / kappaEdge)^2), lowest, gamma0),
-// and omega = 1 / (3 gamma + 1/2) per cell into the omega buffer, which the
-// steps read from then on. Nothing goes to the host and back.
+// lbmshape's feature-preserving rule (feature_rule.glsl) on the dense
+// lattice, from the field that the field pass left in the field buffer:
+// kappa the 7-point Laplacian of X (a neighbour beyond the grid's faces
+// reads as the cell itself: zero flux), omega per cell into the omega
+// buffer, which the steps read from then on. Nothing goes to the host and
+// back.
 //
 // An invocation is one block of four cells of a row, as in the field pass;
 // the padding beyond a row's end gets gamma0.
 #include "lattice_layout.glsl"
 #include "lattice_interface.h"
+#include "feature_rule.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant) uniform RuleParameters { LATTICE_FEATURE_RULE_PARAMETERS(LATTICE_DECLARE_FIELD) } p;
@@ -40,8 +38,6 @@ void main()
   const vec4 rightX = mix(vec4(X.yzw, right), X, lastOrPast);
   const vec4 leftX = vec4(left, X.xyz);
   const vec4 kappa = leftX + rightX + down + up + back + front - 6.0 * X;
-  const vec4 r = kappa / p.kappaEdge;
-  vec4 gamma = clamp(p.gamma0 / (1.0 + r * r), p.lowestGamma, p.gamma0);
-  gamma = mix(gamma, vec4(p.gamma0), greaterThanEqual(ivec4(x0) + ivec4(0, 1, 2, 3), ivec4(NX)));
-  omegaOut.cells[own] = 1.0 / (3.0 * gamma + 0.5);
+  const bvec4 past = greaterThanEqual(ivec4(x0) + ivec4(0, 1, 2, 3), ivec4(NX));
+  omegaOut.cells[own] = featurePreservingOmega(kappa, past, p.gamma0, p.kappaEdge, p.lowestGamma);
 }

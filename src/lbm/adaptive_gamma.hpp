@@ -29,8 +29,9 @@ Volume paperRule(const Volume& before, const Volume& after, const Volume& gammaU
 // sharp edges are still sharp bends. Clamped to [lowest, gamma0].
 Volume featurePreservingRule(const Volume& smoothed, double gamma0, double kappaEdge);
 // Throws unless the rule can run with these: gamma0 as --gamma is checked
-// (UsageError), kappaEdge positive (std::invalid_argument). Both rules above call it, and
-// so does the device's (BandVulkanSolver::setFeaturePreservingGamma).
+// (UsageError), kappaEdge positive (std::invalid_argument). Both rules above
+// call it, and so do the devices' (BandVulkanSolver and VulkanSolver::
+// setFeaturePreservingGamma; their shaders share feature_rule.glsl).
 void checkFeatureRule(double gamma0, double kappaEdge);
 
 // The mean curvature of a distance field by the 7-point Laplacian (zero-flux

@@ -214,7 +214,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   startToRestart(solver, field, halfWidth);
   returnFreedHeapMemory();  // the start's streaming flags and rows, before the rule's peak
   stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
-  solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for the band's Vulkan solver
+  solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for a Vulkan solver
   restart(solver, field, halfWidth);
   SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
   smoothed.stepsRun += probe.steps;

@@ -122,7 +122,6 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   // evaluated cell; every cell enters the queue once.
   if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("too many cells for the sign's flood");
   std::vector<uint32_t> queue;
-  queue.reserve(count);
   size_t head = 0;
   auto flood = [&](size_t seed) {
     queue.push_back(uint32_t(seed));
@@ -149,12 +148,14 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   // threads at once, with the same result; otherwise (or where a region's
   // evaluation falls too near 1/2 to hand on) the flood goes sequentially,
   // since a region may span the grid.
-  if (gradient.openEdgeCount() > 0 || !signRegionsAtOnce(cells, bvh, frame, distance, value, radius, evaluations))
+  if (gradient.openEdgeCount() > 0 || !signRegionsAtOnce(cells, bvh, frame, distance, value, radius, evaluations)) {
+    queue.reserve(count);
     for (size_t seed = 0; seed < count; ++seed)
       if (radius[seed] < 0.0f && cells.real(seed) && distance[seed] > kOneVoxel) {
         evaluate(seed);
         flood(seed);
       }
+  }
 
   // The cells left hug the surface. Each takes the value of a decided
   // neighbour across its 26-neighbourhood where the same test allows it (a

@@ -1,5 +1,6 @@
 #include "core/last_resort.hpp"
 
+#include <atomic>
 #include <cstring>
 #include <exception>
 #include <new>
@@ -26,8 +27,18 @@ void writeLine(const char* message)
   [[maybe_unused]] auto written = ::write(STDERR_FILENO, line, n);
 }
 
+// The first thread to end the process does; any other that gets here
+// meanwhile (several threads of one parallel loop can run out of memory at
+// once) waits for it, so the process still prints one line.
+[[noreturn]] void waitForTheFirstToEnd()
+{
+  for (;;) ::pause();
+}
+std::atomic_flag ending = ATOMIC_FLAG_INIT;
+
 [[noreturn]] void onTerminate()
 {
+  if (ending.test_and_set()) waitForTheFirstToEnd();
   int code = int(ExitCode::Device);
   const char* message = "internal error: an exception escaped a worker thread";
   if (const std::exception_ptr escaped = std::current_exception()) {
@@ -49,6 +60,7 @@ void writeLine(const char* message)
 
 [[maybe_unused]] void onAbort(int)  // not installed in ASan builds
 {
+  if (ending.test_and_set()) waitForTheFirstToEnd();
   temporary_files::removeAllFromSignalHandler();
   writeLine(
       "aborted by a library's fatal error (Mesa's shader compiler aborts so when memory runs out); the message before "

@@ -90,6 +90,9 @@ public:
   // The field X after the steps taken so far, on the same bricks; beyond
   // them (far value and sides) as the field initialize() was given.
   virtual BandField field() = 0;
+  // The same into `out`, whose memory is used again where it has this
+  // band's shape (a morph's frames: no new pages to fault in and clear).
+  virtual void fieldInto(BandField& out) { out = field(); }
   // X one step before that, as LatticeSolver::previousField.
   virtual BandField previousField() = 0;
   // X one or two steps before the last (`back`), read from what the two

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "band_interface.h"
+#include "core/parallel_copy.hpp"
 #include "core/error.hpp"
 #include "core/memory_sizes.hpp"
 #include "gpu/gpu_buffer.hpp"
@@ -313,7 +314,7 @@ struct BandVulkanSolver::Resources {
                             vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {},
                             {});
       });
-      std::memcpy(static_cast<std::byte*>(data) + first * unitBytes, staging.mapped(), count * unitBytes);
+      parallelCopy(static_cast<std::byte*>(data) + first * unitBytes, staging.mapped(), count * unitBytes);
     }
   }
 
@@ -715,10 +716,23 @@ double BandVulkanSolver::surfaceSpeed()
 
 BandField BandVulkanSolver::field()
 {
+  BandField out;
+  fieldInto(out);
+  return out;
+}
+
+void BandVulkanSolver::fieldInto(BandField& out)
+{
   // Beyond the band nothing moves: the far sides are the initial field's
   // (its values, kept until the first real step, are not copied).
-  if (r_->steps == 0) return r_->initial;
-  BandField out = r_->initial.sameShape();
+  if (r_->steps == 0) {
+    out = r_->initial;
+    return;
+  }
+  const BandField& initial = r_->initial;
+  const bool sameShape = out.sharedBricks() == initial.sharedBricks() && out.farValue() == initial.farValue() &&
+                         out.values().size() == r_->cells && out.farSides() == initial.farSides();
+  if (!sameShape) out = initial.sameShape();
   r_->fullFieldBuffer();
   auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
@@ -729,7 +743,6 @@ BandField BandVulkanSolver::field()
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
   });
-  return out;
 }
 
 }  // namespace lbmshape

@@ -42,6 +42,7 @@ public:
   void step(int count) override;
   int stepsTaken() const override;
   BandField field() override;
+  void fieldInto(BandField& out) override;
   BandField previousField() override;
   BandField storedField(int back) override;
   double surfaceSpeed() override;

@@ -67,6 +67,9 @@ public:
 
   // The field X after the steps taken so far.
   virtual Volume field() = 0;
+  // The same into `out`, whose memory is used again where it has the
+  // grid's extent (a morph's frames: no new pages to fault in and clear).
+  virtual void fieldInto(Volume& out) { out = field(); }
   // X one step before that: the copy the last step read stays intact until
   // the next step, so this costs what field() does. Throws std::logic_error
   // before two steps.

@@ -31,6 +31,7 @@ public:
   void step(int count) override;
   int stepsTaken() const override;
   Volume field() override;
+  void fieldInto(Volume& out) override;
   Volume previousField() override;
 
 private:

@@ -382,6 +382,11 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     }
   }
   std::vector<TriangleMesh> meshes = writer.finish();
+  const int steps = solver.stepsTaken();
+  const double updates = double(lattice->cells()) * steps;
+  const nlohmann::json latticeDescription = lattice->describe();
+  current = FrameField();
+  lattice->finish();
   const std::vector<int> emptyFrames = writer.emptyFrames();
   if (!emptyFrames.empty())
     log::warning((emptyFrames.size() == 1 ? "frame " : "frames ") + frameRanges(emptyFrames) +
@@ -420,8 +425,6 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   // far the morph is from arriving.
   const SurfaceComparison arrival = frameReport.compareWithTargetLevel(meshes.back());
   const MeshTopology last = analyzeTopology(meshes.back());
-  const int steps = solver.stepsTaken();
-  const double updates = double(lattice->cells()) * steps;
   return {
       {"command", "morph"},
       {"source", sourcePath.string()},
@@ -445,7 +448,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       {"gamma", o.gamma},
       {"cs", o.cs},
       {"noise", o.noise.amplitude},
-      {"lattice", lattice->describe()},
+      {"lattice", latticeDescription},
       {"align",
        {{"mode", alignmentName(o.align)},
         {"scale", placement.scale},

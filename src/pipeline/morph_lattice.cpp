@@ -4,6 +4,7 @@
 
 #include "lbm/band_width.hpp"
 #include "pipeline/field_noise.hpp"
+#include "pipeline/recycled_fields.hpp"
 #include "sdf/band_signed_distance.hpp"
 #include "sdf/enclosed_volume.hpp"
 #include "sdf/signed_distance.hpp"
@@ -46,7 +47,19 @@ public:
   SteppingSolver& solver() override { return *solver_; }
   void setGamma(double gamma) override { solver_->setUniformGamma(gamma); }
   void setMorphSpeed(double cs) override { solver_->setSourceStrength(float(cs), float(cs)); }
-  FrameField field() override { return std::make_shared<const Field>(solver_->field()); }
+  FrameField field() override
+  {
+    std::shared_ptr<Field> out = frameFields_.take();
+    solver_->fieldInto(*out);
+    return std::shared_ptr<const Field>(std::move(out));
+  }
+  void finish() override
+  {
+    solver_.reset();
+    source_ = Field();
+    target_ = Field();
+    frameFields_ = RecycledFields<Field>();  // frames still held return to the old shelf, which frees them
+  }
 
   double errorNearTarget(const FrameField& field, float band) const override
   {
@@ -59,6 +72,7 @@ protected:
   GridFrame frame_;
   Field source_, target_;
   std::unique_ptr<Solver> solver_;
+  RecycledFields<Field> frameFields_;
 };
 
 class GridMorph final : public TwoFieldMorph<Volume, LatticeSolver> {

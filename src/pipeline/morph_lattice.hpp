@@ -46,6 +46,10 @@ public:
   virtual FrameField field() = 0;
   // max |X - X_target| over the cells within `band` voxels of the target's surface.
   virtual double errorNearTarget(const FrameField& field, float band) const = 0;
+  // After the last frame: lets the solver, the fields and the frames'
+  // memory go before the animation is assembled. Nothing may be called
+  // after.
+  virtual void finish() = 0;
   // Cells the lattice updates per step, and a description for the report.
   virtual size_t cells() const = 0;
   virtual nlohmann::json describe() const = 0;

@@ -39,6 +39,27 @@ protected:
     band->step(steps);
     return {dense->field(), band->field()};
   }
+  // The band and the grid started on the same sphere (gamma 0.2), the
+  // band streaming within 5 voxels, and the field they started from.
+  struct BothStarted {
+    std::unique_ptr<BandSolver> band;
+    std::unique_ptr<LatticeSolver> grid;
+    Volume field;
+    std::shared_ptr<BrickSet> bricks;
+  };
+  BothStarted bothStartedOnASphere()
+  {
+    const Extent3 extent{21, 19, 23};
+    BothStarted s{nullptr, testing::makeSolver(GetParam(), extent),
+                  testing::sphereDistance(extent, 10.0, 9.5, 11.0, 6.5), nullptr};
+    s.bricks = testing::bricksNear(s.field, 6.0);
+    s.band = solver(s.bricks);
+    s.band->setUniformGamma(0.2);
+    s.grid->setUniformGamma(0.2);
+    s.band->initialize(testing::bandOf(s.field, s.bricks), 5.0);
+    s.grid->initialize(s.field);
+    return s;
+  }
   // A band solver started on a noisy sphere's field, streaming within 6
   // voxels, and that field.
   struct Started {
@@ -247,15 +268,8 @@ TEST_P(BandSolverTest, DiffusesWithGammaEqualToTauMinusHalfOverThree)
 // gave after the step before, on the band and on the grid alike.
 TEST_P(BandSolverTest, PreviousFieldIsTheFieldOneStepBack)
 {
-  const Extent3 extent{21, 19, 23};
-  const Volume field = testing::sphereDistance(extent, 10.0, 9.5, 11.0, 6.5);
-  auto bricks = testing::bricksNear(field, 6.0);
-  auto band = solver(bricks);
-  auto grid = testing::makeSolver(GetParam(), extent);
-  band->setUniformGamma(0.2);
-  grid->setUniformGamma(0.2);
-  band->initialize(testing::bandOf(field, bricks), 5.0);
-  grid->initialize(field);
+  auto [band, grid, field, bricks] = bothStartedOnASphere();
+  const Extent3 extent = field.extent();
   EXPECT_THROW(band->previousField(), std::logic_error);
   band->step(3);
   grid->step(3);
@@ -281,6 +295,36 @@ TEST_P(BandSolverTest, PreviousFieldIsTheFieldOneStepBack)
   EXPECT_EQ(inTheGrid(band->storedField(2)), inTheGrid(bandAfter3));
   EXPECT_EQ(inTheGrid(band->storedField(1)), inTheGrid(bandAfter4));
   EXPECT_THROW(band->storedField(3), std::logic_error);
+}
+
+// fieldInto() gives what field() gives, into a field of any shape: one of
+// the right shape holding other values (a morph's recycled frame, its
+// memory used again), one of another shape, an empty one.
+TEST_P(BandSolverTest, FieldIntoAnyFieldIsTheField)
+{
+  auto [band, grid, field, bricks] = bothStartedOnASphere();
+  const Extent3 extent = field.extent();
+  band->step(3);
+  grid->step(3);
+  const BandField bandNow = band->field();
+  const Volume gridNow = grid->field();
+
+  BandField stale = bandNow.sameShape();
+  std::fill(stale.values().begin(), stale.values().end(), 123.0f);
+  BandField otherShape = testing::bandOf(field, testing::bricksNear(field, 2.0)), empty;
+  for (BandField* into : {&stale, &otherShape, &empty}) {
+    band->fieldInto(*into);
+    EXPECT_EQ(into->values(), bandNow.values());
+    EXPECT_EQ(into->farSides(), bandNow.farSides());
+    EXPECT_EQ(&into->bricks(), &bandNow.bricks());
+    EXPECT_EQ(into->farValue(), bandNow.farValue());
+  }
+  Volume staleGrid(extent, 123.0f), otherGrid(Extent3{4, 5, 6}, 1.0f), emptyGrid;
+  for (Volume* into : {&staleGrid, &otherGrid, &emptyGrid}) {
+    grid->fieldInto(*into);
+    EXPECT_EQ(into->extent(), extent);
+    EXPECT_EQ(into->values(), gridNow.values());
+  }
 }
 
 // The feature rule leaves the state it read: the same field and stored

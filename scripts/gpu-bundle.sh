@@ -3,7 +3,8 @@
 # registry there) needs to measure lbmshape and run its tests: the shared
 # bundle (../shared/gpu/bundle.sh: binaries, test binaries, libraries, the
 # Vulkan loader and validation layer), the shared meshes, the OpenVDB peer
-# with its libraries when VDB_PEER names its binary, and scripts/gpu-run.sh.
+# with its libraries when VDB_PEER names its binary, a baseline build when
+# BASELINE names one, and scripts/gpu-run.sh.
 # Then one device call, with carry [".gpu"] (64 MiB at most):
 #   bash .gpu/gpu-run.sh        (results in $OUT/results.tgz: the tool returns at most 8 files)
 set -euo pipefail
@@ -23,5 +24,9 @@ if [[ -n ${VDB_PEER:-} ]]; then
   strip --strip-unneeded .gpu/peer/lib/* 2>/dev/null || true
   tar cJf .gpu/peer.tar.xz -C .gpu peer && rm -rf .gpu/peer
 fi
+# A baseline binary (BASELINE=/path/to/lbmshape, an earlier build) for the
+# run's side-by-side phase.
+rm -f .gpu/bin/lbmshape-baseline
+[[ -n ${BASELINE:-} ]] && cp "$BASELINE" .gpu/bin/lbmshape-baseline && strip --strip-unneeded .gpu/bin/lbmshape-baseline
 cp scripts/gpu-run.sh scripts/bench-scale.sh scripts/make-sphere.py .gpu/
 du -sh .gpu

@@ -2,7 +2,8 @@
 # Runs on a lent GPU machine, from the project's root, after
 # scripts/gpu-bundle.sh: finds a Vulkan driver manifest the loader accepts,
 # measures (bench, denoise of the armadillo at 128/256/512 beside OpenVDB,
-# a 48-frame morph at 256, the 12 shared meshes in one jobs file), then runs
+# a 48-frame morph at 256, the 12 shared meshes in one jobs file, a
+# baseline build beside this one where gpu-bundle.sh was given one), then runs
 # every test program with the validation layer on, in shards, for at most
 # GPU_TEST_SECONDS (default 150). Everything goes into $OUT/results.tgz,
 # written again after each phase so that a run cut short still returns
@@ -16,8 +17,9 @@ results=/tmp/gpu-results
 rm -rf "$results" && mkdir -p "$results"
 save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
 # GPU_PHASES: which phases after the figures run (default all): scale
-# (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), tests.
-wanted() { [[ " ${GPU_PHASES:-scale jobs tests} " == *" $1 "* ]]; }
+# (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline (this
+# build and the baseline alternately), tests.
+wanted() { [[ " ${GPU_PHASES:-scale jobs baseline tests} " == *" $1 "* ]]; }
 trap save EXIT
 root=$PWD
 source .gpu/prepare.sh 2>"$results/prepare.log"
@@ -81,6 +83,23 @@ PY
   fi; } >"$results/jobs.log" 2>&1
 fi
 save
+# Whole-process times of the morph as a user runs it (no --json), on the
+# grid and on the band, then this build and the baseline alternately.
+if wanted baseline; then
+  builds=(lbmshape)
+  [[ -x .gpu/bin/lbmshape-baseline ]] && builds+=(lbmshape-baseline)
+  { for run in $(seq "${GPU_BASELINE_RUNS:-2}"); do
+      for b in "${builds[@]}"; do
+        /usr/bin/time -f "$b denoise 512: %e s, %M KB" timeout 30 $b -v denoise $assets/armadillo.obj /tmp/d512.glb --res 512 2>&1 |
+          grep -E "band distances|^lbmshape: (sdf|lbm|extract) | s, "
+        /usr/bin/time -f "$b morph 256: %e s, %M KB" timeout 60 $b -q morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force
+        /usr/bin/time -f "$b morph 256 --band: %e s, %M KB" timeout 60 $b -q morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256b --res 256 --align none --force --band
+        timeout 60 $b morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force --json 2>/dev/null |
+          python3 -c "import json,sys; d=json.load(sys.stdin); print('$b morph 256 stages:', {k: round(v) for k, v in d['ms'].items()})"
+      done
+    done; } >"$results/baseline.log" 2>&1
+  save
+fi
 
 # The suite, validation on (each program's main sets it), 4 shards a program.
 wanted tests || exit 0

@@ -69,7 +69,10 @@
   FIELD(int, hasSource)    /* 1: the morph's source term */                       \
   FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */                \
   FIELD(float, kappaEdge)  /* the feature rule's (band_feature_rule.comp) */      \
-  FIELD(float, lowestGamma) /* its lowest gamma, min(ADAPTIVE_GAMMA_LOWEST, gamma0) */
+  FIELD(float, lowestGamma) /* its lowest gamma, min(ADAPTIVE_GAMMA_LOWEST, gamma0) */ \
+  FIELD(int, writeField)   /* 1: a step also stores the X it pulled, as the field pass... */ \
+  FIELD(float, fieldDecay) /* ... under a source of this decay and scale */ \
+  FIELD(float, fieldBaseScale)
 
 // vec4 index of moment m (0..3) of row `row` (y + 8 z), half `half` (cells
 // 0-3 or 4-7) of brick slot s, in a copy of the moments.
@@ -91,7 +94,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 17 * 4, "push constants: 17 words");
+static_assert(sizeof(StepParameters) == 20 * 4, "push constants: 20 words");
 struct SpeedParameters {
   BAND_SPEED_PARAMETERS(BAND_DECLARE_FIELD)
 };

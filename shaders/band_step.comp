@@ -6,7 +6,7 @@
 // J, apply the source, collide and store (rho*, j*). With the push constant
 // `pass` BAND_PASS_FIELD or BAND_PASS_FIELD_TO_OLDER it stores X instead:
 // the field of the current state (band_feature_rule.comp turns the latter
-// into omega per cell).
+// into omega per cell); with `writeField` a step stores that X as well.
 //
 // With PAPER_RULE the relaxation is the paper's anisotropic rule (section
 // 5.1, Eq. 20), as in lbm_step.comp: a cell collides with
@@ -103,8 +103,9 @@ vec4 ownA[4], ownB[4];  // the same cells' own moments
 // source, then the collision or the field, for one half of the row.
 void finish(vec4 f[19], vec4 rhoBefore, int part)
 {
-  vec4 X = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] + f[13] +
-           f[14] + f[15] + f[16] + f[17] + f[18];
+  const vec4 sum = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] +
+                   f[13] + f[14] + f[15] + f[16] + f[17] + f[18];
+  vec4 X = sum;
   const vec4 Jx = f[1] - f[2] + f[7] - f[8] + f[9] - f[10] + f[11] - f[12] + f[13] - f[14];
   const vec4 Jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
   const vec4 Jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
@@ -117,10 +118,16 @@ void finish(vec4 f[19], vec4 rhoBefore, int part)
   }
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
-  if (p.pass == BAND_PASS_FIELD) {
+  if (p.pass == BAND_PASS_FIELD || p.writeField != 0) {
+    // A step's own field, for a frame, is that of the state it starts from
+    // under the source of the steps before (a morph may raise Cs from this
+    // step on): what the field pass would store.
+    vec4 field = X;
+    if (HAS_SOURCE && p.writeField != 0)
+      field = (sum + 0.5 * (p.fieldBaseScale * texelFetch(sourceBase, cells))) / (1.0 + 0.5 * p.fieldDecay);
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
-    fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = X;
-    return;
+    fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = field;
+    if (p.pass == BAND_PASS_FIELD) return;
   }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
   if (p.pass == BAND_PASS_FIELD_TO_OLDER) {

@@ -77,15 +77,21 @@ bool locateBlock()
 // because S is linear in X. Summed in index order, as the CPU reference does.
 // Written out rather than looped: a loop over the local array may be left
 // rolled by the driver, and then f[] lives in scratch memory.
-vec4 fieldFromDistributions(out vec4 S)
+vec4 distributionSum()
 {
-  vec4 X = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] + f[13] +
-           f[14] + f[15] + f[16] + f[17] + f[18];
+  return f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] + f[13] + f[14] +
+         f[15] + f[16] + f[17] + f[18];
+}
+// X from that sum under a source of this decay c and scale k (A = k base).
+vec4 fieldFromSum(vec4 sum, float decay, float baseScale, out vec4 S)
+{
+  vec4 X = sum;
   S = vec4(0.0);
   if (HAS_SOURCE) {
-    vec4 A = params.baseScale * texelFetch(sourceBase, ownBlock);
-    X = (X + 0.5 * A) / (1.0 + 0.5 * params.decay);
-    S = A - params.decay * X;
+    vec4 A = baseScale * texelFetch(sourceBase, ownBlock);
+    X = (X + 0.5 * A) / (1.0 + 0.5 * decay);
+    S = A - decay * X;
   }
   return X;
 }
+vec4 fieldFromDistributions(out vec4 S) { return fieldFromSum(distributionSum(), params.decay, params.baseScale, S); }

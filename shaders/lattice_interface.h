@@ -24,7 +24,10 @@
   FIELD(float, omega) /* 1/tau where it is the same in every cell */ \
   FIELD(float, decay) /* c of the source */                          \
   FIELD(float, baseScale) /* k of the source: S = k base - c X */      \
-  FIELD(float, gamma0) /* the paper's rule: gamma = gamma0 + kappa */
+  FIELD(float, gamma0) /* the paper's rule: gamma = gamma0 + kappa */ \
+  FIELD(int, writeField) /* a step also stores the X it pulled (field pass's) */ \
+  FIELD(float, fieldDecay) /* ... under a source of this decay and scale */ \
+  FIELD(float, fieldBaseScale)
 
 // The push constants of the feature-preserving rule's pass
 // (lbm_feature_rule.comp).
@@ -40,7 +43,7 @@ namespace lbmshape::lattice_shader {
 struct StepParameters {
   LATTICE_STEP_PARAMETERS(LATTICE_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 4 * 4, "push constants: 4 words");
+static_assert(sizeof(StepParameters) == 7 * 4, "push constants: 7 words");
 struct FeatureRuleParameters {
   LATTICE_FEATURE_RULE_PARAMETERS(LATTICE_DECLARE_FIELD)
 };

@@ -18,7 +18,8 @@ layout(constant_id = LATTICE_SPEC_PAPER_RULE) const bool PAPER_RULE = false;
 
 // The next lattice copy, one binding per row group.
 layout(set = 0, binding = LATTICE_BINDING_NEXT, std430) writeonly buffer Distribution { vec4 cells[]; } nextGroup[GROUPS];
-// Used only with PAPER_RULE: each invocation reads and writes its own block.
+// Used with PAPER_RULE, and written with params.writeField: each invocation
+// reads and writes its own block.
 layout(set = 0, binding = LATTICE_BINDING_FIELD, std430) buffer FieldBefore { vec4 cells[]; } fieldBefore;
 layout(set = 0, binding = LATTICE_BINDING_GAMMA, std430) buffer Gamma { vec4 cells[]; } gammaPerCell;
 
@@ -30,8 +31,9 @@ void main()
 {
   if (!locateBlock()) return;
   FOR_EACH_DIRECTION(PULL)
+  const vec4 sum = distributionSum();
   vec4 S;
-  vec4 X = fieldFromDistributions(S);
+  vec4 X = fieldFromSum(sum, params.decay, params.baseScale, S);
   vec4 omega;
   if (PAPER_RULE) {
     // precise: no fused multiply-add, as the CPU reference computes it; the
@@ -44,6 +46,14 @@ void main()
     omega = 1.0 / tau;
   } else {
     omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, ownBlock) : vec4(params.omega);
+    // The field of the state this step starts from, for a frame, as the
+    // field pass would store it under the source of the steps before (a
+    // morph may raise Cs from this step on); the paper's rule keeps its
+    // own X there.
+    if (params.writeField != 0) {
+      vec4 unused;
+      fieldBefore.cells[ownBlock] = fieldFromSum(sum, params.fieldDecay, params.fieldBaseScale, unused);
+    }
   }
   vec4 sourceShare = 1.0 - 0.5 * omega;
   FOR_EACH_DIRECTION(COLLIDE)

@@ -93,6 +93,13 @@ public:
   // The same into `out`, whose memory is used again where it has this
   // band's shape (a morph's frames: no new pages to fault in and clear).
   virtual void fieldInto(BandField& out) { out = field(); }
+  // fieldInto(out), then step(1) under `next` (LatticeSolver's).
+  virtual void fieldIntoThenStep(BandField& out, std::optional<SourceStrength> next)
+  {
+    fieldInto(out);
+    if (next) setSourceStrength(next->decay, next->scale);
+    step(1);
+  }
   // X one step before that, as LatticeSolver::previousField.
   virtual BandField previousField() = 0;
   // X one or two steps before the last (`back`), read from what the two

@@ -325,6 +325,15 @@ struct BandVulkanSolver::Resources {
     downloadUnits(source, bytes, 1, 1, data, before);
   }
 
+  // `out` on this band's bricks with its far value and sides, its memory
+  // kept where it already is (a morph's recycled frame).
+  void shapeLikeTheBand(BandField& out) const
+  {
+    const bool same = out.sharedBricks() == initial.sharedBricks() && out.farValue() == initial.farValue() &&
+                      out.values().size() == cells && out.farSides() == initial.farSides();
+    if (!same) out = initial.sameShape();
+  }
+
   // The field buffer at its full size, one float a stored cell.
   void fullFieldBuffer()
   {
@@ -721,6 +730,43 @@ BandField BandVulkanSolver::field()
   return out;
 }
 
+void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStrength> next)
+{
+  // One pass where the step updates every brick (a morph's: its source
+  // moves the held cells too) and is a real one (the first is free, and
+  // its field the initial one); the paper's rule is never used with a
+  // source.
+  const bool stepsEveryBrick = size_t(r_->stepWorks) == r_->bricks->activeCount();
+  if (r_->steps == 0 || !stepsEveryBrick || r_->paperRuleGamma0) {
+    BandSolver::fieldIntoThenStep(out, next);
+    return;
+  }
+  r_->shapeLikeTheBand(out);
+  r_->fullFieldBuffer();
+  auto& program = r_->context.program(r_->program());
+  const band_shader::StepParameters before = r_->parameters(false);
+  if (next) setSourceStrength(next->decay, next->scale);
+  band_shader::StepParameters push = r_->parameters(false);
+  push.writeField = 1;
+  push.fieldDecay = before.decay;
+  push.fieldBaseScale = before.baseScale;
+  const int first = r_->current;
+  r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    r_->dispatch(cmd, program, first, false);
+    // The next step reads what this one wrote; the copy reads the field.
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                        vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eShaderRead,
+                                          vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite |
+                                              vk::AccessFlagBits::eTransferRead),
+                        {}, {});
+  });
+  r_->current = 1 - first;
+  r_->steps += 1;
+}
+
 void BandVulkanSolver::fieldInto(BandField& out)
 {
   // Beyond the band nothing moves: the far sides are the initial field's
@@ -729,10 +775,7 @@ void BandVulkanSolver::fieldInto(BandField& out)
     out = r_->initial;
     return;
   }
-  const BandField& initial = r_->initial;
-  const bool sameShape = out.sharedBricks() == initial.sharedBricks() && out.farValue() == initial.farValue() &&
-                         out.values().size() == r_->cells && out.farSides() == initial.farSides();
-  if (!sameShape) out = initial.sameShape();
+  r_->shapeLikeTheBand(out);
   r_->fullFieldBuffer();
   auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {

@@ -43,6 +43,7 @@ public:
   int stepsTaken() const override;
   BandField field() override;
   void fieldInto(BandField& out) override;
+  void fieldIntoThenStep(BandField& out, std::optional<SourceStrength> next) override;
   BandField previousField() override;
   BandField storedField(int back) override;
   double surfaceSpeed() override;

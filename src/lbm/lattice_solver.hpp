@@ -70,6 +70,16 @@ public:
   // The same into `out`, whose memory is used again where it has the
   // grid's extent (a morph's frames: no new pages to fault in and clear).
   virtual void fieldInto(Volume& out) { out = field(); }
+  // fieldInto(out), then step(1), under the source strength `next` from
+  // that step on where given (setSourceStrength): where the solver can, in
+  // one pass over the lattice, the step storing the field it starts from
+  // anyway (a morph's frames: no field pass of their own).
+  virtual void fieldIntoThenStep(Volume& out, std::optional<SourceStrength> next)
+  {
+    fieldInto(out);
+    if (next) setSourceStrength(next->decay, next->scale);
+    step(1);
+  }
   // X one step before that: the copy the last step read stays intact until
   // the next step, so this costs what field() does. Throws std::logic_error
   // before two steps.

@@ -9,6 +9,12 @@
 
 namespace lbmshape {
 
+// A linear source's decay c and scale k (setSourceStrength's arguments).
+struct SourceStrength {
+  float decay = 0.0f;
+  float scale = 1.0f;
+};
+
 class SteppingSolver {
 public:
   virtual ~SteppingSolver() = default;

@@ -146,11 +146,19 @@ struct VulkanSolver::Resources {
 
   StepParameters parameters() const
   {
-    return {uniformOmega, source ? source->decay : 0.0f, source ? source->scale : 1.0f,
-            float(paperRuleGamma0.value_or(0.0))};
+    return {uniformOmega,
+            source ? source->decay : 0.0f,
+            source ? source->scale : 1.0f,
+            float(paperRuleGamma0.value_or(0.0)),
+            0,
+            0.0f,
+            0.0f};
   }
 
   void upload(const Volume& values, GpuBuffer& target);
+  // The field in the staging buffer (lattice layout) into `out`, made the
+  // grid's size where it is not.
+  void unstageField(Volume& out) const;
   // The first half of upload: the values in the staging buffer, in the
   // lattice layout, for a copy recorded with others in one submission.
   void stage(const Volume& values);
@@ -422,6 +430,51 @@ Volume VulkanSolver::previousField()
   return out;
 }
 
+void VulkanSolver::Resources::unstageField(Volume& out) const
+{
+  const Extent3& e = layout.extent;
+  if (out.extent() != e) out = Volume(e);
+  const float* src = reinterpret_cast<const float*>(staging.mapped());
+  // Every thread copies (one took longer than the device's whole read-back
+  // at 256^3 on an H100).
+#pragma omp parallel for schedule(static)
+  for (int z = 0; z < e.nz; ++z)
+    for (int y = 0; y < e.ny; ++y)
+      std::memcpy(out.data() + e.index(0, y, z), src + layout.linearIndex(0, y, z), size_t(e.nx) * 4);
+}
+
+void VulkanSolver::fieldIntoThenStep(Volume& out, std::optional<SourceStrength> next)
+{
+  // Under the paper's rule the field buffer holds the rule's X before.
+  if (r_->paperRuleGamma0) {
+    LatticeSolver::fieldIntoThenStep(out, next);
+    return;
+  }
+  auto& program = r_->context.program(r_->latticeProgram("lbm_step"));
+  const StepParameters before = r_->parameters();
+  if (next) setSourceStrength(next->decay, next->scale);
+  StepParameters push = r_->parameters();
+  push.writeField = 1;
+  push.fieldDecay = before.decay;
+  push.fieldBaseScale = before.baseScale;
+  const int first = r_->current;
+  r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.pushConstants<StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->latticeSets[first], {});
+    r_->dispatchLattice(cmd);
+    // The next step reads what this one wrote; the copy reads the field.
+    barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite | vk::AccessFlagBits::eTransferRead,
+            computeStage | transferStage);
+    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, r_->layout.volumeBytes));
+    barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
+            vk::PipelineStageFlagBits::eHost);
+  });
+  r_->current = 1 - first;
+  r_->steps += 1;
+  r_->unstageField(out);
+}
+
 Volume VulkanSolver::field()
 {
   Volume out;
@@ -433,7 +486,6 @@ void VulkanSolver::fieldInto(Volume& out)
 {
   auto& program = r_->context.program(r_->latticeProgram("lbm_field"));
   const LatticeLayout& l = r_->layout;
-  const Extent3& e = l.extent;
   // Under the paper's rule the field buffer holds the X the last step
   // pulled, which the next step needs: it is kept aside and put back.
   std::vector<std::byte> xBefore;
@@ -458,14 +510,7 @@ void VulkanSolver::fieldInto(Volume& out)
     barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
             vk::PipelineStageFlagBits::eHost);
   });
-  if (out.extent() != e) out = Volume(e);
-  const float* src = reinterpret_cast<const float*>(r_->staging.mapped());
-  // Every thread copies (one took longer than the device's whole read-back
-  // at 256^3 on an H100).
-#pragma omp parallel for schedule(static)
-  for (int z = 0; z < e.nz; ++z)
-    for (int y = 0; y < e.ny; ++y)
-      std::memcpy(out.data() + e.index(0, y, z), src + l.linearIndex(0, y, z), size_t(e.nx) * 4);
+  r_->unstageField(out);
   if (!xBefore.empty()) {
     std::memcpy(r_->staging.mapped(), xBefore.data(), l.volumeBytes);
     r_->context.runAndWait([&](vk::CommandBuffer cmd) {

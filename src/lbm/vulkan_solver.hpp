@@ -32,6 +32,7 @@ public:
   int stepsTaken() const override;
   Volume field() override;
   void fieldInto(Volume& out) override;
+  void fieldIntoThenStep(Volume& out, std::optional<SourceStrength> next) override;
   Volume previousField() override;
 
 private:

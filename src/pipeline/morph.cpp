@@ -334,44 +334,61 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   // two push constants (setSourceStrength): set only when it changes
   // (start() set o.cs).
   double csNow = o.cs;
+  const auto followSchedule = [&] {
+    const int now = solver.stepsTaken();
+    lattice->setGamma(schedule.gammaAt(now));
+    if (schedule.csAt(now) != csNow) lattice->setMorphSpeed(csNow = schedule.csAt(now));
+    return now;
+  };
   const auto advanceTo = [&](int step) {
-    while (solver.stepsTaken() < step) {
-      const int now = solver.stepsTaken();
-      lattice->setGamma(schedule.gammaAt(now));
-      if (schedule.csAt(now) != csNow) lattice->setMorphSpeed(csNow = schedule.csAt(now));
-      stepper.advanceTo(std::min(step, schedule.sameStepsUntil(now)), whatWasDone);
-    }
+    while (solver.stepsTaken() < step)
+      stepper.advanceTo(std::min(step, schedule.sameStepsUntil(followSchedule())), whatWasDone);
   };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
   double lastError = 0.0;
   Stopwatch sinceProgress, running;
   FrameField current;
+  int currentStep = 0;  // the step of `current`: the solver may be one past it
   for (int k = 0; k < o.frames; ++k) {
     interrupt::check(whatWasDone);
     if (!convergedAt) {
       Stopwatch lbm;
       double deviceBefore = clock.deviceMsNow();
       advanceTo(frameSteps[size_t(k)]);
-      lbmMs += lbm.ms();
-      clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
-      Stopwatch download;
-      deviceBefore = clock.deviceMsNow();
-      current = lattice->field();
-      downloadMs += download.ms();
-      clock.recordDevice("download", clock.deviceMsNow() - deviceBefore);
+      currentStep = solver.stepsTaken();
+      // Where the next frame is further on, its first step stores the field
+      // it starts from: this frame's, with no field pass of its own (the
+      // time is the lattice's; X counts half the source at the Cs of the
+      // steps that made it, the step collides under its own). The last
+      // frame's field is read alone.
+      if (k + 1 < o.frames && frameSteps[size_t(k) + 1] > currentStep) {
+        lattice->setGamma(schedule.gammaAt(currentStep));
+        csNow = schedule.csAt(currentStep);
+        current = lattice->fieldThenStep(csNow);
+        lbmMs += lbm.ms();
+        clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
+      } else {
+        lbmMs += lbm.ms();
+        clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
+        Stopwatch download;
+        deviceBefore = clock.deviceMsNow();
+        current = lattice->field();
+        downloadMs += download.ms();
+        clock.recordDevice("download", clock.deviceMsNow() - deviceBefore);
+      }
       lastError = lattice->errorNearTarget(current, convergenceBand);
       // Only the paper's scheme stops early: a morph that arrives spreads
       // its frames over the whole way, wherever the tolerance is reached.
       if (stepsGiven(o) && k > 0 && lastError < o.tolerance) {
-        convergedAt = solver.stepsTaken();
+        convergedAt = currentStep;
         if (k + 1 < o.frames)
           log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
                     std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) + " to " +
                     std::to_string(o.frames - 1) + " repeat it");
       }
     }
-    const int step = solver.stepsTaken();
+    const int step = currentStep;
     frameReport.lattice(k, step, schedule.gammaAt(std::max(step - 1, 0)), schedule.csAt(std::max(step - 1, 0)),
                         lastError, lastError < o.tolerance);
     waitedMs += writer.push(k, current);
@@ -382,8 +399,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     }
   }
   std::vector<TriangleMesh> meshes = writer.finish();
-  const int steps = solver.stepsTaken();
-  const double updates = double(lattice->cells()) * steps;
+  const int steps = currentStep;  // the last frame's (a converged morph may have run one more)
+  const double updates = double(lattice->cells()) * solver.stepsTaken();
   const nlohmann::json latticeDescription = lattice->describe();
   current = FrameField();
   lattice->finish();

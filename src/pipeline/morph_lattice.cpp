@@ -53,6 +53,12 @@ public:
     solver_->fieldInto(*out);
     return std::shared_ptr<const Field>(std::move(out));
   }
+  FrameField fieldThenStep(double nextCs) override
+  {
+    std::shared_ptr<Field> out = frameFields_.take();
+    solver_->fieldIntoThenStep(*out, SourceStrength{float(nextCs), float(nextCs)});
+    return std::shared_ptr<const Field>(std::move(out));
+  }
   void finish() override
   {
     solver_.reset();

@@ -44,6 +44,9 @@ public:
   virtual void setMorphSpeed(double cs) = 0;
   // The field now, for a frame.
   virtual FrameField field() = 0;
+  // The same, then one step (gamma set for it) under Cs `nextCs`: one pass
+  // over the lattice where the solver can.
+  virtual FrameField fieldThenStep(double nextCs) = 0;
   // max |X - X_target| over the cells within `band` voxels of the target's surface.
   virtual double errorNearTarget(const FrameField& field, float band) const = 0;
   // After the last frame: lets the solver, the fields and the frames'

@@ -209,6 +209,56 @@ TEST_P(BandSolverTest, ChangingTheStrengthActsAsANewScaledSource)
       << "the source moved the field";
 }
 
+// fieldIntoThenStep() is field() then a step under the new strength, on the
+// band and on the grid: the field under the strength of the steps that made
+// it (a morph's closing raises Cs between frames), the step under the new.
+// From the band's first (free) step on, and without a new strength too.
+TEST_P(BandSolverTest, FieldIntoThenStepIsTheFieldThenAStepUnderTheNewStrength)
+{
+  const Extent3 extent{30, 26, 28};
+  const Volume from = testing::sphereDistance(extent, 14.5, 13.0, 13.5, 8.0);
+  const Volume to = testing::sphereDistance(extent, 15.5, 12.5, 14.0, 10.0);
+  auto bricks = testing::bricksNear(from, 40.0);
+  auto fusedBand = solver(bricks), twinBand = solver(bricks);
+  auto fusedGrid = testing::makeSolver(GetParam(), extent), twinGrid = testing::makeSolver(GetParam(), extent);
+  for (BandSolver* s : {fusedBand.get(), twinBand.get()}) {
+    s->setUniformGamma(0.05);
+    s->setSource(BandSource{testing::bandOf(to, bricks), 0.1f, 0.1f});
+    s->initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  }
+  for (LatticeSolver* s : {fusedGrid.get(), twinGrid.get()}) {
+    s->setUniformGamma(0.05);
+    s->setSource(LinearSource{to, 0.1f, 0.1f});
+    s->initialize(from);
+  }
+  BandField bandOut;
+  Volume gridOut;
+  const std::optional<SourceStrength> strengths[] = {SourceStrength{0.3f, 0.3f}, std::nullopt,
+                                                     SourceStrength{0.6f, 0.6f}};
+  for (const std::optional<SourceStrength>& next : strengths) {
+    const BandField bandExpected = twinBand->field();
+    const Volume gridExpected = twinGrid->field();
+    fusedBand->fieldIntoThenStep(bandOut, next);
+    fusedGrid->fieldIntoThenStep(gridOut, next);
+    if (next) {
+      twinBand->setSourceStrength(next->decay, next->scale);
+      twinGrid->setSourceStrength(next->decay, next->scale);
+    }
+    twinBand->step(1);
+    twinGrid->step(1);
+    const testing::BandDifference d = testing::differenceInside(bandOut, bandExpected, extent);
+    EXPECT_LE(d.worst, testing::deviceTolerance * d.scale) << "band, max |X| " << d.scale;
+    EXPECT_LE(testing::maxDifferenceForItsScale(gridOut, gridExpected), testing::deviceTolerance) << "grid";
+    EXPECT_EQ(fusedBand->stepsTaken(), twinBand->stepsTaken());
+    EXPECT_EQ(fusedGrid->stepsTaken(), twinGrid->stepsTaken());
+    fusedBand->step(2), twinBand->step(2), fusedGrid->step(2), twinGrid->step(2);
+  }
+  const testing::BandDifference d = testing::differenceInside(fusedBand->field(), twinBand->field(), extent);
+  EXPECT_LE(d.worst, testing::deviceTolerance * d.scale) << "band after the steps, max |X| " << d.scale;
+  EXPECT_LE(testing::maxDifferenceForItsScale(fusedGrid->field(), twinGrid->field()), testing::deviceTolerance)
+      << "grid after the steps";
+}
+
 TEST_P(BandSolverTest, HeldCellsKeepTheirValueWithoutASource)
 {
   const Extent3 extent{32, 32, 32};

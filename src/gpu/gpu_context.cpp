@@ -1,5 +1,10 @@
 #include "gpu/gpu_context.hpp"
 
+#include <cstdlib>
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+
 #include "core/error.hpp"
 #include "core/parameter_names.hpp"
 #include "core/log.hpp"
@@ -44,6 +49,7 @@ std::unique_ptr<GpuContext> GpuContext::open(const GpuOptions& options)
 
 GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIndex) : instance_(std::move(instance))
 {
+  if (const char* trace = std::getenv("LBMSHAPE_DEVICE_TRACE")) trace_ = std::strcmp(trace, "0") != 0;
   description_ = instance_->devices().at(deviceIndex);
   physical_ = &instance_->physicalDevice(deviceIndex);
   properties_ = physical_->getProperties();
@@ -135,12 +141,24 @@ RecordedCommands GpuContext::record(const std::function<void(vk::CommandBuffer)>
 
 void GpuContext::replayAndWait(const RecordedCommands& commands)
 {
+  const double submittedAt = sinceCreated_.ms();
   submitAndWait(queue_, commands.handle());
-  if (!*timestamps_) return;
-  const auto [result, ticks] = timestamps_.getResults<uint64_t>(
-      0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t), vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-  if (result == vk::Result::eSuccess && ticks[1] >= ticks[0])
-    deviceBusyMs_ += double(ticks[1] - ticks[0]) * double(properties_.limits.timestampPeriod) * 1e-6;
+  double deviceMs = 0.0;
+  if (*timestamps_) {
+    const auto [result, ticks] = timestamps_.getResults<uint64_t>(
+        0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t), vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+    if (result == vk::Result::eSuccess && ticks[1] >= ticks[0])
+      deviceMs = double(ticks[1] - ticks[0]) * double(properties_.limits.timestampPeriod) * 1e-6;
+  }
+  deviceBusyMs_ += deviceMs;
+  if (!trace_) return;
+  const double doneAt = sinceCreated_.ms();
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(3) << "device trace: submission " << ++submissions_ << " at " << submittedAt
+       << " ms, the host " << submittedAt - lastDoneMs_ << " ms since the last; the device " << deviceMs << " ms of "
+       << doneAt - submittedAt << " ms waited";
+  log::info(line.str());
+  lastDoneMs_ = doneAt;
 }
 
 void GpuContext::requireDrawing(const std::string& otherwise) const

@@ -13,6 +13,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
+#include "core/stopwatch.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/device_description.hpp"
 #include "gpu/pipeline_cache_file.hpp"
@@ -111,6 +112,12 @@ private:
   double pipelineCreationMs_ = 0.0;
   vk::raii::QueryPool timestamps_{nullptr};  // two, around each compute submission
   double deviceBusyMs_ = 0.0;
+  // LBMSHAPE_DEVICE_TRACE=1: a line on stderr for each compute submission,
+  // its device time, its wait and the host's time since the last one.
+  bool trace_ = false;
+  Stopwatch sinceCreated_;
+  double lastDoneMs_ = 0.0;
+  size_t submissions_ = 0;
 };
 
 }  // namespace lbmshape::gpu

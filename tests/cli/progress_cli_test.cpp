@@ -39,10 +39,34 @@ protected:
     input = (folder / "sphere.obj").string();
     writeMesh(testing::icosphere(3), input);
   }
-  void TearDown() override { unsetenv("LBMSHAPE_PROGRESS_MS"); }
+  void TearDown() override
+  {
+    unsetenv("LBMSHAPE_PROGRESS_MS");
+    unsetenv("LBMSHAPE_DEVICE_TRACE");
+  }
   testing::ScratchFolder folder;
   std::string input;
 };
+
+// LBMSHAPE_DEVICE_TRACE=1 lists every compute submission on stderr, in
+// order, with its device time; without it there is no such line.
+TEST_F(DenoiseProgress, TheDeviceTraceListsEachSubmission)
+{
+  const fs::path output = folder / "out.glb";
+  const std::vector<std::string> args = {"denoise", input, output.string(), "--res", "32", "--json"};
+  setenv("LBMSHAPE_DEVICE_TRACE", "1", 1);
+  const testing::CliResult traced = testing::runLbmshape(args);
+  ASSERT_EQ(traced.exitCode, 0) << traced.err;
+  for (const char* n : {"1", "2", "3"})
+    EXPECT_TRUE(hasLineStartingWith(traced.err, std::string("lbmshape: device trace: submission ") + n + " at "))
+        << traced.err;
+  EXPECT_NE(traced.err.find(" ms waited"), std::string::npos) << traced.err;
+  EXPECT_NO_THROW(nlohmann::json::parse(traced.out)) << "stdout holds only the JSON result: " << traced.out;
+  unsetenv("LBMSHAPE_DEVICE_TRACE");
+  const testing::CliResult plain = testing::runLbmshape(args);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("device trace"), std::string::npos) << plain.err;
+}
 
 TEST_F(DenoiseProgress, StagesShowHowFarTheyAreOnStderrOnly)
 {

@@ -59,6 +59,12 @@ for res in 128 256 512; do
     >"$results/denoise$res-isotropic.json" 2>"$results/denoise$res-isotropic.err"
 done
 python3 scripts/make-sphere.py /tmp/sphere.obj
+# Every compute submission of a denoise at 512 and of the morph at 256,
+# beside the -v stage lines: where the device waits for the host.
+LBMSHAPE_DEVICE_TRACE=1 timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/trace512.glb --res 512 \
+  2>"$results/trace-denoise512.err" >/dev/null
+LBMSHAPE_DEVICE_TRACE=1 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/trace-morph \
+  --res 256 --align none --force 2>"$results/trace-morph256.err" >/dev/null
 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256 --res 256 --align none --force --json \
   >"$results/morph256.json" 2>"$results/morph256.err"
 save

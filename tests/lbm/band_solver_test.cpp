@@ -318,8 +318,13 @@ TEST_P(BandSolverTest, DiffusesWithGammaEqualToTauMinusHalfOverThree)
 // gave after the step before, on the band and on the grid alike.
 TEST_P(BandSolverTest, PreviousFieldIsTheFieldOneStepBack)
 {
-  auto [band, grid, field, bricks] = bothStartedOnASphere();
-  const Extent3 extent = field.extent();
+  // Named members, not a structured binding: a lambda below captures
+  // `bricks` (which clang allows only from C++20).
+  BothStarted started = bothStartedOnASphere();
+  auto& band = started.band;
+  auto& grid = started.grid;
+  const auto& bricks = started.bricks;
+  const Extent3 extent = started.field.extent();
   EXPECT_THROW(band->previousField(), std::logic_error);
   band->step(3);
   grid->step(3);

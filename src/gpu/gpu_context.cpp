@@ -154,9 +154,10 @@ void GpuContext::replayAndWait(const RecordedCommands& commands)
   if (!trace_) return;
   const double doneAt = sinceCreated_.ms();
   std::ostringstream line;
-  line << std::fixed << std::setprecision(3) << "device trace: submission " << ++submissions_ << " at " << submittedAt
-       << " ms, the host " << submittedAt - lastDoneMs_ << " ms since the last; the device " << deviceMs << " ms of "
-       << doneAt - submittedAt << " ms waited";
+  line << std::fixed << std::setprecision(3) << "device trace: submission " << ++submissions_;
+  if (const char* label = TraceLabel::current()) line << " (" << label << ")";
+  line << " at " << submittedAt << " ms, the host " << submittedAt - lastDoneMs_ << " ms since the last; the device "
+       << deviceMs << " ms of " << doneAt - submittedAt << " ms waited";
   log::info(line.str());
   lastDoneMs_ = doneAt;
 }
@@ -199,5 +200,16 @@ void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd)
     throw DeviceError("timed out waiting for the Vulkan device");
   device_.resetFences(*fence_);
 }
+
+namespace {
+thread_local const char* currentLabel = nullptr;
+}  // namespace
+
+TraceLabel::TraceLabel(const char* what) : outer_(currentLabel)
+{
+  if (!currentLabel) currentLabel = what;
+}
+TraceLabel::~TraceLabel() { currentLabel = outer_; }
+const char* TraceLabel::current() { return currentLabel; }
 
 }  // namespace lbmshape::gpu

@@ -120,4 +120,20 @@ private:
   size_t submissions_ = 0;
 };
 
+// Names the compute submissions this thread makes while it lives, in
+// LBMSHAPE_DEVICE_TRACE's lines ("band start", "band steps"). The
+// outermost label names them all: a label inside another (the band's
+// set-up within the device's warm-up) changes nothing.
+class TraceLabel {
+public:
+  explicit TraceLabel(const char* what);
+  ~TraceLabel();
+  TraceLabel(const TraceLabel&) = delete;
+  TraceLabel& operator=(const TraceLabel&) = delete;
+  static const char* current();
+
+private:
+  const char* outer_;
+};
+
 }  // namespace lbmshape::gpu

@@ -401,6 +401,7 @@ struct BandVulkanSolver::Resources {
 BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
                                    uint64_t stagingBytes)
 {
+  const gpu::TraceLabel label("band set-up");
   if (bricks->activeCount() == 0) throw std::invalid_argument("a narrow band without bricks");
   r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes);
   const BrickSet& b = *r_->bricks;
@@ -494,6 +495,7 @@ void BandVulkanSolver::setPaperRule(double gamma0)
 
 void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
 {
+  const gpu::TraceLabel label("band gamma upload");
   band_state::checkSameBricks(*r_->bricks, gamma, "gamma");
   const std::vector<float> omega = band_state::omegaFromGamma(gamma);
   r_->perCellOmega = true;
@@ -504,6 +506,7 @@ void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
 
 void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge)
 {
+  const gpu::TraceLabel label("band feature rule");
   // Before the first step the field is the host's, which initialize() got.
   if (r_->steps == 0) return BandSolver::setFeaturePreservingGamma(gamma0, kappaEdge);
   adaptive_gamma::checkFeatureRule(gamma0, kappaEdge);
@@ -548,6 +551,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
 
 void BandVulkanSolver::setSource(std::optional<BandSource> source)
 {
+  const gpu::TraceLabel label("band source upload");
   if (source) {
     band_state::checkSameBricks(*r_->bricks, source->base, "source");
     if (r_->source.bytes() != 4 * r_->cells) {
@@ -563,6 +567,7 @@ void BandVulkanSolver::setSourceStrength(float decay, float scale) { setStrength
 
 void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
+  const gpu::TraceLabel label("band start");
   band_state::checkSameBricks(*r_->bricks, field, "field");
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
@@ -584,6 +589,7 @@ void BandVulkanSolver::holdFieldForRestart() { r_->holdForRestart = true; }
 
 void BandVulkanSolver::restart()
 {
+  const gpu::TraceLabel label("band restart");
   band_state::checkRestart(!r_->initial.values().empty(), r_->workHasSource, r_->sourceHost.has_value());
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
   r_->holdForRestart = false;  // for one restart: the steps after it let the field go
@@ -638,6 +644,7 @@ void BandVulkanSolver::startFrom(BandField field)
 
 void BandVulkanSolver::step(int count)
 {
+  const gpu::TraceLabel label("band steps");
   requirePaperRuleInitialized(r_->paperRuleGamma0.has_value(), r_->paperRuleReady);
   // The state initialize() leaves is the one after the first step
   // (band_state::collidedEquilibrium): that step costs nothing.
@@ -684,6 +691,7 @@ BandField BandVulkanSolver::previousField()
 
 BandField BandVulkanSolver::storedField(int back)
 {
+  const gpu::TraceLabel label("band stored field read-back");
   band_state::checkStoredField(back, r_->stepsStored(), r_->sourceHost.has_value());
   // Moment 0 of every brick of the copy: the first quarter of each slot.
   const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
@@ -700,6 +708,7 @@ BandField BandVulkanSolver::storedField(int back)
 
 double BandVulkanSolver::surfaceSpeed()
 {
+  const gpu::TraceLabel label("band surface speed");
   band_state::checkStoredField(2, r_->stepsStored(), r_->sourceHost.has_value());
   r_->writeSpeedDescriptors();
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
@@ -732,6 +741,7 @@ BandField BandVulkanSolver::field()
 
 void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStrength> next)
 {
+  const gpu::TraceLabel label("band step with its field");
   // One pass where the step updates every brick (a morph's: its source
   // moves the held cells too) and is a real one (the first is free, and
   // its field the initial one); the paper's rule is never used with a
@@ -769,6 +779,7 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
 
 void BandVulkanSolver::fieldInto(BandField& out)
 {
+  const gpu::TraceLabel label("band field read-back");
   // Beyond the band nothing moves: the far sides are the initial field's
   // (its values, kept until the first real step, are not copied).
   if (r_->steps == 0) {

@@ -270,6 +270,7 @@ void VulkanSolver::Resources::stage(const Volume& values)
 
 VulkanSolver::VulkanSolver(gpu::GpuContext& context, Extent3 extent)
 {
+  const gpu::TraceLabel label("grid set-up");
   LatticeLayout layout = latticeLayout(extent);
   checkFitsDevice(layout, context.description());
   r_ = std::make_unique<Resources>(context, layout);
@@ -291,6 +292,7 @@ void VulkanSolver::setUniformGamma(double gamma)
 
 void VulkanSolver::setGammaPerCell(const Volume& gamma)
 {
+  const gpu::TraceLabel label("grid gamma upload");
   solver_state::checkSameExtent(extent(), gamma.extent(), "gamma");
   r_->upload(solver_state::omegaFromGammaVolume(gamma), r_->omega);
   r_->perCellOmega = true;
@@ -299,6 +301,7 @@ void VulkanSolver::setGammaPerCell(const Volume& gamma)
 
 void VulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge)
 {
+  const gpu::TraceLabel label("grid feature rule");
   adaptive_gamma::checkFeatureRule(gamma0, kappaEdge);
   // The rule replaces the paper's (whose X before the field pass would
   // overwrite) and any gamma per cell.
@@ -336,6 +339,7 @@ void VulkanSolver::setPaperRule(double gamma0)
 
 void VulkanSolver::setSource(std::optional<LinearSource> source)
 {
+  const gpu::TraceLabel label("grid source upload");
   if (source) {
     solver_state::checkSameExtent(extent(), source->base.extent(), "source");
     r_->upload(source->base, r_->sourceBuffer);
@@ -347,6 +351,7 @@ void VulkanSolver::setSourceStrength(float decay, float scale) { setStrength(r_-
 
 void VulkanSolver::initialize(const Volume& fieldValues)
 {
+  const gpu::TraceLabel label("grid start");
   solver_state::checkSameExtent(extent(), fieldValues.extent(), "field");
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->source.has_value());
   // The field buffer holds X at the start: under the paper's rule, the
@@ -396,6 +401,7 @@ void VulkanSolver::initialize(const Volume& fieldValues)
 
 void VulkanSolver::step(int count)
 {
+  const gpu::TraceLabel label("grid steps");
   requirePaperRuleInitialized(r_->paperRuleGamma0.has_value(), r_->paperRuleReady);
   auto& program = r_->context.program(r_->latticeProgram("lbm_step"));
   const StepParameters push = r_->parameters();
@@ -445,6 +451,7 @@ void VulkanSolver::Resources::unstageField(Volume& out) const
 
 void VulkanSolver::fieldIntoThenStep(Volume& out, std::optional<SourceStrength> next)
 {
+  const gpu::TraceLabel label("grid step with its field");
   // Under the paper's rule the field buffer holds the rule's X before.
   if (r_->paperRuleGamma0) {
     LatticeSolver::fieldIntoThenStep(out, next);
@@ -484,6 +491,7 @@ Volume VulkanSolver::field()
 
 void VulkanSolver::fieldInto(Volume& out)
 {
+  const gpu::TraceLabel label("grid field read-back");
   auto& program = r_->context.program(r_->latticeProgram("lbm_field"));
   const LatticeLayout& l = r_->layout;
   // Under the paper's rule the field buffer holds the X the last step

@@ -44,6 +44,7 @@ void ComputeDevice::warmUpForTheBand() const
     // A band of one brick: its solver compiles the band's pipeline and runs
     // it once (lavapipe turns it into machine code then), for the GpuContext
     // to keep.
+    const gpu::TraceLabel label("warm-up: the band's pipelines");
     auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
     brick->activate(0, 0, 0);
     BandVulkanSolver warm(openContext(), std::move(brick));

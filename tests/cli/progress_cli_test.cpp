@@ -49,7 +49,8 @@ protected:
 };
 
 // LBMSHAPE_DEVICE_TRACE=1 lists every compute submission on stderr, in
-// order, with its device time; without it there is no such line.
+// order, with what it does and its device time; without it there is no
+// such line.
 TEST_F(DenoiseProgress, TheDeviceTraceListsEachSubmission)
 {
   const fs::path output = folder / "out.glb";
@@ -58,9 +59,11 @@ TEST_F(DenoiseProgress, TheDeviceTraceListsEachSubmission)
   const testing::CliResult traced = testing::runLbmshape(args);
   ASSERT_EQ(traced.exitCode, 0) << traced.err;
   for (const char* n : {"1", "2", "3"})
-    EXPECT_TRUE(hasLineStartingWith(traced.err, std::string("lbmshape: device trace: submission ") + n + " at "))
+    EXPECT_TRUE(hasLineStartingWith(traced.err, std::string("lbmshape: device trace: submission ") + n + " "))
         << traced.err;
   EXPECT_NE(traced.err.find(" ms waited"), std::string::npos) << traced.err;
+  // Each names the work it does: the band's steps are among them.
+  EXPECT_NE(traced.err.find("(band steps) at "), std::string::npos) << traced.err;
   EXPECT_NO_THROW(nlohmann::json::parse(traced.out)) << "stdout holds only the JSON result: " << traced.out;
   unsetenv("LBMSHAPE_DEVICE_TRACE");
   const testing::CliResult plain = testing::runLbmshape(args);

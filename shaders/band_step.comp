@@ -99,32 +99,39 @@ vec4 ownA[4], ownB[4];  // the same cells' own moments
                 w * (b[0] + 3.0 * E_DOT(EX, EY, EZ, b[1], b[2], b[3])), both(validB, streamsB));               \
   }
 
+// X from the sum of the pulled f under a source of decay c and scale k:
+// X = (sum + A/2) / (1 + c/2), A = k base, S = A - c X (lattice.glsl's
+// fieldFromSum; without a source X is the sum).
+vec4 fieldFromSum(vec4 sum, float decay, float baseScale, int cells, out vec4 S)
+{
+  S = vec4(0.0);
+  if (!HAS_SOURCE) return sum;
+  const vec4 A = baseScale * texelFetch(sourceBase, cells);
+  const vec4 X = (sum + 0.5 * A) / (1.0 + 0.5 * decay);
+  S = A - decay * X;
+  return X;
+}
+
 // X = sum f, J = sum e f (in index order, as the CPU reference sums), the
 // source, then the collision or the field, for one half of the row.
 void finish(vec4 f[19], vec4 rhoBefore, int part)
 {
   const vec4 sum = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] +
                    f[13] + f[14] + f[15] + f[16] + f[17] + f[18];
-  vec4 X = sum;
   const vec4 Jx = f[1] - f[2] + f[7] - f[8] + f[9] - f[10] + f[11] - f[12] + f[13] - f[14];
   const vec4 Jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
   const vec4 Jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
   const int cells = (slot * 64 + z * 8 + y) * 2 + part;  // vec4 index in the per-cell arrays
-  vec4 S = vec4(0.0);
-  if (HAS_SOURCE) {
-    const vec4 A = p.baseScale * texelFetch(sourceBase, cells);
-    X = (X + 0.5 * A) / (1.0 + 0.5 * p.decay);
-    S = A - p.decay * X;
-  }
+  vec4 S;
+  const vec4 X = fieldFromSum(sum, p.decay, p.baseScale, cells, S);
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
   if (p.pass == BAND_PASS_FIELD || p.writeField != 0) {
     // A step's own field, for a frame, is that of the state it starts from
     // under the source of the steps before (a morph may raise Cs from this
     // step on): what the field pass would store.
-    vec4 field = X;
-    if (HAS_SOURCE && p.writeField != 0)
-      field = (sum + 0.5 * (p.fieldBaseScale * texelFetch(sourceBase, cells))) / (1.0 + 0.5 * p.fieldDecay);
+    vec4 unused;
+    const vec4 field = p.writeField != 0 ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = field;
     if (p.pass == BAND_PASS_FIELD) return;

@@ -156,6 +156,10 @@ struct VulkanSolver::Resources {
   }
 
   void upload(const Volume& values, GpuBuffer& target);
+  // Records the copy of the field buffer into the staging buffer and the
+  // barrier that lets the host read it (the caller's barrier before lets
+  // the copy read what shaders wrote).
+  void recordFieldToStaging(vk::CommandBuffer cmd) const;
   // The field in the staging buffer (lattice layout) into `out`, made the
   // grid's size where it is not.
   void unstageField(Volume& out) const;
@@ -436,6 +440,13 @@ Volume VulkanSolver::previousField()
   return out;
 }
 
+void VulkanSolver::Resources::recordFieldToStaging(vk::CommandBuffer cmd) const
+{
+  cmd.copyBuffer(field.handle(), staging.handle(), vk::BufferCopy(0, 0, layout.volumeBytes));
+  barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
+          vk::PipelineStageFlagBits::eHost);
+}
+
 void VulkanSolver::Resources::unstageField(Volume& out) const
 {
   const Extent3& e = layout.extent;
@@ -473,9 +484,7 @@ void VulkanSolver::fieldIntoThenStep(Volume& out, std::optional<SourceStrength> 
     // The next step reads what this one wrote; the copy reads the field.
     barrier(cmd, shaderWrite | shaderRead, computeStage, shaderRead | shaderWrite | vk::AccessFlagBits::eTransferRead,
             computeStage | transferStage);
-    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, r_->layout.volumeBytes));
-    barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
-            vk::PipelineStageFlagBits::eHost);
+    r_->recordFieldToStaging(cmd);
   });
   r_->current = 1 - first;
   r_->steps += 1;
@@ -501,9 +510,7 @@ void VulkanSolver::fieldInto(Volume& out)
     xBefore.resize(l.volumeBytes);
     r_->context.runAndWait([&](vk::CommandBuffer cmd) {
       barrier(cmd, shaderWrite, computeStage, vk::AccessFlagBits::eTransferRead, transferStage);
-      cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
-      barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
-              vk::PipelineStageFlagBits::eHost);
+      r_->recordFieldToStaging(cmd);
     });
     std::memcpy(xBefore.data(), r_->staging.mapped(), l.volumeBytes);
   }
@@ -514,9 +521,7 @@ void VulkanSolver::fieldInto(Volume& out)
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *r_->latticeSets[r_->current], {});
     r_->dispatchLattice(cmd);
     barrier(cmd, shaderWrite, computeStage, vk::AccessFlagBits::eTransferRead, transferStage);
-    cmd.copyBuffer(r_->field.handle(), r_->staging.handle(), vk::BufferCopy(0, 0, l.volumeBytes));
-    barrier(cmd, vk::AccessFlagBits::eTransferWrite, transferStage, vk::AccessFlagBits::eHostRead,
-            vk::PipelineStageFlagBits::eHost);
+    r_->recordFieldToStaging(cmd);
   });
   r_->unstageField(out);
   if (!xBefore.empty()) {

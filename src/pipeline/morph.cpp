@@ -362,15 +362,15 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       // time is the lattice's; X counts half the source at the Cs of the
       // steps that made it, the step collides under its own). The last
       // frame's field is read alone.
-      if (k + 1 < o.frames && frameSteps[size_t(k) + 1] > currentStep) {
+      const bool stepFollows = k + 1 < o.frames && frameSteps[size_t(k) + 1] > currentStep;
+      if (stepFollows) {
         lattice->setGamma(schedule.gammaAt(currentStep));
         csNow = schedule.csAt(currentStep);
         current = lattice->fieldThenStep(csNow);
-        lbmMs += lbm.ms();
-        clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
-      } else {
-        lbmMs += lbm.ms();
-        clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
+      }
+      lbmMs += lbm.ms();
+      clock.recordDevice("lbm", clock.deviceMsNow() - deviceBefore);
+      if (!stepFollows) {
         Stopwatch download;
         deviceBefore = clock.deviceMsNow();
         current = lattice->field();

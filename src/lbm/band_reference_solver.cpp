@@ -11,6 +11,48 @@ namespace lbmshape {
 
 using d3q19::Q;
 
+namespace {
+
+// X and J of the f a cell pulls.
+struct Pulled {
+  float X;
+  glm::vec3 J;
+};
+
+// The f cell `c` (at `l` in its brick, whose neighbours are `around`) pulls:
+// a streaming cell from the cells upstream, or bouncing back at a wall (or,
+// never for a streaming cell, the band's edge), a held cell from itself.
+Pulled pull(const glm::vec4* current, const int32_t* around, const Extent3& e, glm::ivec3 c, glm::ivec3 l,
+            glm::vec4 own, bool streams)
+{
+  float f[Q];
+  for (int q = 0; q < Q; ++q) {
+    const auto& v = d3q19::velocities[q];
+    const glm::vec3 ev(float(v.x), float(v.y), float(v.z));
+    glm::vec4 from = own;
+    float sign = 1.0f;
+    if (streams) {
+      const glm::ivec3 up = c - glm::ivec3(v.x, v.y, v.z);
+      const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
+      const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
+      if (e.contains(up.x, up.y, up.z) && slot != noBrick)
+        from = current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
+      else
+        sign = -1.0f;  // bounce-back: f*_opposite(x)
+    }
+    f[q] = d3q19::weight(q) * (from.x + sign * 3.0f * (ev.x * from.y + ev.y * from.z + ev.z * from.w));
+  }
+  Pulled out{0.0f, glm::vec3(0.0f)};
+  for (int q = 0; q < Q; ++q) out.X += f[q];
+  for (int q = 0; q < Q; ++q) {
+    const auto& v = d3q19::velocities[q];
+    out.J += glm::vec3(float(v.x), float(v.y), float(v.z)) * f[q];
+  }
+  return out;
+}
+
+}  // namespace
+
 BandReferenceSolver::BandReferenceSolver(std::shared_ptr<const BrickSet> bricks)
     : bricks_(std::move(bricks)), neighbours_(bricks_->neighbourTable()), current_(bricks_->storedCells()),
       next_(bricks_->storedCells()), streams_(bricks_->storedCells(), 0)
@@ -53,6 +95,12 @@ void BandReferenceSolver::setSource(std::optional<BandSource> source)
 }
 
 void BandReferenceSolver::setSourceStrength(float decay, float scale) { setStrength(source_, decay, scale); }
+
+void BandReferenceSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
+{
+  band_state::checkHeldBricks(heldPerSlot, *bricks_);
+  heldSlots_ = std::move(heldPerSlot);
+}
 
 void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
@@ -158,37 +206,17 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
     const size_t s = size_t(work[w]);
     const glm::ivec3 origin = brickEdge * bricks.brick(int32_t(s));
     const int32_t* around = neighbours_.data() + s * 27;
+    const bool held = !heldSlots_.empty() && heldSlots_[s] != 0;
     for (int local = 0; local < brickCells; ++local) {
       const size_t i = s * brickCells + size_t(local);
       const glm::ivec3 l(local % brickEdge, local / brickEdge % brickEdge, local / (brickEdge * brickEdge));
       const glm::ivec3 c = origin + l;
       if (!e.contains(c.x, c.y, c.z)) continue;
       const glm::vec4 own = current[i];
-      float f[Q];
-      for (int q = 0; q < Q; ++q) {
-        const auto& v = d3q19::velocities[q];
-        const glm::vec3 ev(float(v.x), float(v.y), float(v.z));
-        glm::vec4 from = own;  // held cells pull from themselves
-        float sign = 1.0f;
-        if (streams_[i]) {
-          const glm::ivec3 up = c - glm::ivec3(v.x, v.y, v.z);
-          const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
-          const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
-          if (e.contains(up.x, up.y, up.z) && slot != noBrick)
-            from =
-                current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
-          else
-            sign = -1.0f;  // a wall (or, never for a streaming cell, the band's edge): bounce-back, f*_opposite(x)
-        }
-        f[q] = d3q19::weight(q) * (from.x + sign * 3.0f * (ev.x * from.y + ev.y * from.z + ev.z * from.w));
-      }
-      float X = 0.0f;
-      for (int q = 0; q < Q; ++q) X += f[q];
-      glm::vec3 J(0.0f);
-      for (int q = 0; q < Q; ++q) {
-        const auto& v = d3q19::velocities[q];
-        J += glm::vec3(float(v.x), float(v.y), float(v.z)) * f[q];
-      }
+      // A held brick's cells pull from themselves: f_i = w_i (rho* + 3 e_i . j*)
+      // sum to rho* with flux j*, no f formed (as band_hold.comp).
+      auto [X, J] =
+          held ? Pulled{own.x, glm::vec3(own.y, own.z, own.w)} : pull(current, around, e, c, l, own, streams_[i] != 0);
       float S = 0.0f;
       if (A) {
         const float a = scale * A[i];

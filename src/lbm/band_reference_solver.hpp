@@ -21,6 +21,7 @@ public:
   void setPaperRule(double gamma0) override;
   void setSource(std::optional<BandSource> source) override;
   void setSourceStrength(float decay, float scale) override;
+  void setHeldBricks(std::vector<uint8_t> heldPerSlot) override;
   using BandSolver::initialize;
   void initialize(BandField field, std::vector<uint8_t> streams) override;
   void holdFieldForRestart() override;
@@ -46,6 +47,7 @@ private:
   std::vector<int32_t> work_;              // the slots a step updates (band_state::slotsToStep)
   BandField initial_;                      // X at initialisation, with its far sides
   float uniformOmega_ = 1.0f;
+  std::vector<uint8_t> heldSlots_;   // setHeldBricks
   std::vector<float> omegaPerCell_;  // empty: uniform
   std::optional<double> paperRuleGamma0_;
   bool paperRuleReady_ = false;      // initialize() has seeded the rule's state

@@ -62,6 +62,13 @@ public:
   virtual void setSource(std::optional<BandSource> source) = 0;
   // The source's decay and scale, its base kept (LatticeSolver's).
   virtual void setSourceStrength(float decay, float scale) = 0;
+  // Bricks held whole from the next step on: one flag a brick slot, 1 where
+  // every cell of the brick is held (pulls from itself) whatever
+  // initialize()'s flags say; empty for none. The steps and field passes
+  // read nothing around them, so they cost a fraction of a streaming
+  // brick's: a morph holds the bricks its moving front is far from. Kept
+  // across initialize() and restart(); not with the feature rule.
+  virtual void setHeldBricks(std::vector<uint8_t> heldPerSlot) = 0;
 
   // Restart from field X, every cell at equilibrium (after setSource); the
   // cells flagged in `streams` (one byte a stored cell) stream, the others

@@ -75,6 +75,12 @@ void checkRestart(bool fieldHeld, bool workHasSource, bool source)
     throw std::logic_error("a restart keeps the cells a step updates: set or clear the source before initialize()");
 }
 
+void checkHeldBricks(const std::vector<uint8_t>& heldPerSlot, const BrickSet& bricks)
+{
+  if (!heldPerSlot.empty() && heldPerSlot.size() != bricks.activeCount())
+    throw std::invalid_argument("one held flag a brick slot, or none");
+}
+
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)
 {
   if (&field.bricks() != &bricks &&

@@ -46,6 +46,9 @@ void checkStoredField(int back, int stepsTaken, bool source);
 // cells a step updates were chosen.
 void checkRestart(bool fieldHeld, bool workHasSource, bool source);
 
+// Throws std::invalid_argument unless `heldPerSlot` (BandSolver::setHeldBricks)
+// is empty or has one flag a brick of `bricks`.
+void checkHeldBricks(const std::vector<uint8_t>& heldPerSlot, const BrickSet& bricks);
 // Throws std::invalid_argument unless `field` lies on `bricks`.
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <numeric>
 
 #include <glm/glm.hpp>
 
@@ -122,8 +123,17 @@ struct BandVulkanSolver::Resources {
   // never holds it while it runs.
   GpuBuffer field;
   GpuBuffer streams, neighbours, origins;
-  GpuBuffer work;  // the slots a step updates, then every slot (for the field)
-  int stepWorks = 0;
+  // The work lists, one after the other: the slots a step updates in full,
+  // those it holds whole (setHeldBricks), then every slot split alike, for
+  // the field pass. band_step.comp runs the first of each pair,
+  // band_hold.comp the second.
+  GpuBuffer work;
+  struct WorkRange {
+    int offset = 0, count = 0;
+  };
+  WorkRange stepRange, heldRange, fieldRange, heldFieldRange;
+  std::vector<int32_t> stepSlots;  // the slots a step updates (band_state::slotsToStep)
+  std::vector<uint8_t> heldSlots;  // per slot, 1 where the brick is held whole; empty: none
   // 16 bytes until set: a valid view for the shader variants that ignore
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
@@ -352,10 +362,14 @@ struct BandVulkanSolver::Resources {
 
   // The one pipeline of every kind of step and of the field pass: what
   // differs between them is in the push constants (parameters()).
-  gpu::ProgramSpec program() const
+  static gpu::ProgramSpec program() { return withTheWeights("band_step"); }
+  // The held bricks' pipeline: band_step.comp's arithmetic, no fetch from
+  // any other cell.
+  static gpu::ProgramSpec holdProgram() { return withTheWeights("band_hold"); }
+  static gpu::ProgramSpec withTheWeights(const char* shader)
   {
     using gpu::specFloat;
-    return {"band_step",
+    return {shader,
             bindings(),
             {specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
             sizeof(band_shader::StepParameters)};
@@ -368,14 +382,34 @@ struct BandVulkanSolver::Resources {
     return {"band_feature_rule", bindings(), {}, sizeof(band_shader::StepParameters)};
   }
 
-  // A step's parameters, or with `everySlot` the field pass's.
+  // The work lists for stepSlots and heldSlots, on the device.
+  void uploadWork()
+  {
+    std::vector<int32_t> every(bricks->activeCount()), lists;
+    std::iota(every.begin(), every.end(), 0);
+    lists.reserve(2 * every.size());
+    const auto append = [&](WorkRange& range, const std::vector<int32_t>& slots, bool held) {
+      range.offset = int(lists.size());
+      for (int32_t s : slots)
+        if ((!heldSlots.empty() && heldSlots[size_t(s)] != 0) == held) lists.push_back(s);
+      range.count = int(lists.size()) - range.offset;
+    };
+    append(stepRange, stepSlots, false);
+    append(heldRange, stepSlots, true);
+    append(fieldRange, every, false);
+    append(heldFieldRange, every, true);
+    upload(lists.data(), lists.size() * 4, work);
+  }
+
+  // A step's parameters, or with `everySlot` the field pass's, for the
+  // slots band_step.comp updates.
   band_shader::StepParameters parameters(bool everySlot) const
   {
     const Extent3& e = bricks->cells();
     band_shader::StepParameters p{};
     p.nx = e.nx, p.ny = e.ny, p.nz = e.nz;
-    p.workOffset = everySlot ? stepWorks : 0;
-    p.works = everySlot ? int(bricks->activeCount()) : stepWorks;
+    p.workOffset = everySlot ? fieldRange.offset : stepRange.offset;
+    p.works = everySlot ? fieldRange.count : stepRange.count;
     p.slotsPerMomentPool = int(pools.slotsPerMomentPool);
     p.slotsPerFieldPool = int(pools.slotsPerFieldPool);
     p.omega = uniformOmega;
@@ -389,12 +423,35 @@ struct BandVulkanSolver::Resources {
     return p;
   }
 
-  void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int from, bool everySlot) const
+  // A dispatch over `push.works` bricks, reading copy `from`.
+  void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int from,
+                const band_shader::StepParameters& push) const
   {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[size_t(from)], {});
-    const uint32_t works = uint32_t(everySlot ? bricks->activeCount() : size_t(stepWorks));
+    const auto works = uint32_t(push.works);
     cmd.dispatch(std::min<uint32_t>(works, BAND_MAX_WORKGROUPS_X),
                  (works + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
+  }
+
+  // A step from copy `from` (`push` from parameters(false)), or the field
+  // pass (parameters(true)): band_step.comp over its slots, band_hold.comp
+  // over the held ones.
+  void recordPass(vk::CommandBuffer cmd, int from, band_shader::StepParameters push)
+  {
+    const bool fieldPass = push.pass == BAND_PASS_FIELD;
+    dispatch(cmd, context.program(program()), from, push);
+    const WorkRange& held = fieldPass ? heldFieldRange : heldRange;
+    if (held.count == 0) return;
+    // The two write different bricks, but both shaders may write the omega
+    // buffer (the paper's rule) that both read: ordered for the validation
+    // layer, which cannot see that they never meet.
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead), {}, {});
+    push.workOffset = held.offset;
+    push.works = held.count;
+    dispatch(cmd, context.program(holdProgram()), from, push);
   }
 };
 
@@ -510,6 +567,7 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
   // Before the first step the field is the host's, which initialize() got.
   if (r_->steps == 0) return BandSolver::setFeaturePreservingGamma(gamma0, kappaEdge);
   adaptive_gamma::checkFeatureRule(gamma0, kappaEdge);
+  if (r_->heldRange.count > 0) throw std::logic_error("the feature rule runs on no held bricks");
   r_->perCellBuffer();
   // In one submission: the field into the older copy of the moments, then
   // the rule, which reads it there (through the other descriptor set) and
@@ -529,17 +587,13 @@ void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, access), {}, {});
   };
   r_->context.runAndWait([&](vk::CommandBuffer cmd) {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     push.pass = BAND_PASS_FIELD_TO_OLDER;
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    r_->dispatch(cmd, program, r_->current, false);
+    r_->dispatch(cmd, program, r_->current, push);
     shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader, vk::AccessFlagBits::eShaderRead);
     push.gamma0 = float(gamma0);
     push.kappaEdge = float(kappaEdge);
     push.lowestGamma = float(std::min(adaptive_gamma::lowest, gamma0));
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *rule.pipeline);
-    cmd.pushConstants<band_shader::StepParameters>(*rule.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    r_->dispatch(cmd, rule, 1 - r_->current, false);
+    r_->dispatch(cmd, rule, 1 - r_->current, push);
     // The next step reads omega, and writes the older copy the rule read.
     shaderWritten(cmd, vk::PipelineStageFlagBits::eComputeShader,
                   vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
@@ -565,6 +619,13 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
 
 void BandVulkanSolver::setSourceStrength(float decay, float scale) { setStrength(r_->sourceHost, decay, scale); }
 
+void BandVulkanSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
+{
+  band_state::checkHeldBricks(heldPerSlot, *r_->bricks);
+  r_->heldSlots = std::move(heldPerSlot);
+  if (!r_->stepSlots.empty()) r_->uploadWork();
+}
+
 void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
 {
   const gpu::TraceLabel label("band start");
@@ -572,11 +633,9 @@ void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
   solver_state::checkPaperRuleWithoutSource(r_->paperRuleGamma0.has_value(), r_->sourceHost.has_value());
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
   streams = band_state::onlyCellsInTheGrid(std::move(streams), *r_->bricks);
-  std::vector<int32_t> work = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
-  r_->stepWorks = int(work.size());
+  r_->stepSlots = band_state::slotsToStep(*r_->bricks, streams, r_->sourceHost.has_value());
   r_->workHasSource = r_->sourceHost.has_value();
-  for (size_t s = 0; s < r_->bricks->activeCount(); ++s) work.push_back(int32_t(s));
-  r_->upload(work.data(), work.size() * 4, r_->work);
+  r_->uploadWork();
   std::vector<uint32_t> rows(64 * r_->bricks->activeCount(), 0);
 #pragma omp parallel for schedule(static)
   for (size_t row = 0; row < rows.size(); ++row)
@@ -655,17 +714,15 @@ void BandVulkanSolver::step(int count)
   if (r_->steps > 0 && !r_->holdForRestart) std::vector<float>().swap(r_->initial.values());
   if (count <= 0) return;
   auto& program = r_->context.program(r_->program());
-  const auto bind = vk::PipelineBindPoint::eCompute;
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
     const int first = r_->current;
     const band_shader::StepParameters push = r_->parameters(false);
-    const std::string key = gpu::keyOf(batch, first, r_->stepWorks, push, static_cast<VkPipeline>(*program.pipeline));
+    const std::string key = gpu::keyOf(batch, first, r_->heldRange.offset, r_->heldRange.count, push,
+                                       static_cast<VkPipeline>(*program.pipeline));
     r_->context.replayAndWait(r_->recordedSteps.get(r_->context, key, [&](vk::CommandBuffer cmd) {
-      cmd.bindPipeline(bind, *program.pipeline);
-      cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
       for (int s = 0; s < batch; ++s) {
-        r_->dispatch(cmd, program, (first + s) % 2, false);
+        r_->recordPass(cmd, (first + s) % 2, push);
         // The next step reads what this one wrote and overwrites what it read.
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
                             vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eShaderRead,
@@ -746,14 +803,13 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   // moves the held cells too) and is a real one (the first is free, and
   // its field the initial one); the paper's rule is never used with a
   // source.
-  const bool stepsEveryBrick = size_t(r_->stepWorks) == r_->bricks->activeCount();
+  const bool stepsEveryBrick = size_t(r_->stepRange.count + r_->heldRange.count) == r_->bricks->activeCount();
   if (r_->steps == 0 || !stepsEveryBrick || r_->paperRuleGamma0) {
     BandSolver::fieldIntoThenStep(out, next);
     return;
   }
   r_->shapeLikeTheBand(out);
   r_->fullFieldBuffer();
-  auto& program = r_->context.program(r_->program());
   const band_shader::StepParameters before = r_->parameters(false);
   if (next) setSourceStrength(next->decay, next->scale);
   band_shader::StepParameters push = r_->parameters(false);
@@ -762,9 +818,7 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   push.fieldBaseScale = before.baseScale;
   const int first = r_->current;
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    r_->dispatch(cmd, program, first, false);
+    r_->recordPass(cmd, first, push);
     // The next step reads what this one wrote; the copy reads the field.
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
                         vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {},
@@ -788,12 +842,8 @@ void BandVulkanSolver::fieldInto(BandField& out)
   }
   r_->shapeLikeTheBand(out);
   r_->fullFieldBuffer();
-  auto& program = r_->context.program(r_->program());
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0,
-                                                   r_->parameters(true));
-    r_->dispatch(cmd, program, r_->current, true);
+    r_->recordPass(cmd, r_->current, r_->parameters(true));
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
   });

@@ -35,6 +35,7 @@ public:
   void setFeaturePreservingGamma(double gamma0, double kappaEdge) override;
   void setSource(std::optional<BandSource> source) override;
   void setSourceStrength(float decay, float scale) override;
+  void setHeldBricks(std::vector<uint8_t> heldPerSlot) override;
   using BandSolver::initialize;
   void initialize(BandField field, std::vector<uint8_t> streams) override;
   void holdFieldForRestart() override;

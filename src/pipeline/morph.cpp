@@ -1,5 +1,6 @@
 #include "pipeline/morph.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -302,7 +303,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     prepareFolder(*to.folder);       // only now: a bad input leaves no folder behind
     if (!*to.lock) to.lock->emplace(*to.folder);
   }
-  lattice->start(device, o, clock);
+  lattice->start(device, o, schedule, clock);
   SteppingSolver& solver = lattice->solver();
 
   const FrameWriter::Keep keep =
@@ -341,8 +342,10 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     return now;
   };
   const auto advanceTo = [&](int step) {
-    while (solver.stepsTaken() < step)
-      stepper.advanceTo(std::min(step, schedule.sameStepsUntil(followSchedule())), whatWasDone);
+    while (solver.stepsTaken() < step) {
+      const int now = followSchedule();
+      stepper.advanceTo(std::min({step, schedule.sameStepsUntil(now), lattice->prepareSteps(now)}), whatWasDone);
+    }
   };
   double lbmMs = 0.0, downloadMs = 0.0, waitedMs = 0.0;
   std::optional<int> convergedAt;
@@ -366,6 +369,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       if (stepFollows) {
         lattice->setGamma(schedule.gammaAt(currentStep));
         csNow = schedule.csAt(currentStep);
+        lattice->prepareSteps(currentStep);
         current = lattice->fieldThenStep(csNow);
       }
       lbmMs += lbm.ms();

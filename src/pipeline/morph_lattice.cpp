@@ -1,8 +1,11 @@
 #include "pipeline/morph_lattice.hpp"
 
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "lbm/band_width.hpp"
+#include "pipeline/morph_front.hpp"
 #include "pipeline/field_noise.hpp"
 #include "pipeline/recycled_fields.hpp"
 #include "sdf/band_signed_distance.hpp"
@@ -92,7 +95,7 @@ public:
     target_ = clock.time("sdf", [&](Progress& p) { return signedDistance(target, frame, {.progress = &p}); });
   }
 
-  void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
+  void start(const ComputeDevice& device, const MorphOptions& o, const MorphSchedule&, StageClock& clock) override
   {
     addFieldNoise(source_, o.noise);
     solver_ = clock.time("setup", [&] {
@@ -106,6 +109,7 @@ public:
     source_ = Volume();  // no longer needed
   }
 
+  int prepareSteps(int) override { return std::numeric_limits<int>::max(); }
   size_t cells() const override { return frame_.extent.cells(); }
   nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
 
@@ -145,16 +149,27 @@ public:
     });
   }
 
-  void start(const ComputeDevice& device, const MorphOptions& o, StageClock& clock) override
+  void start(const ComputeDevice& device, const MorphOptions& o, const MorphSchedule& schedule,
+             StageClock& clock) override
   {
     solver_ = clock.time("setup", [&] {
       auto s = device.makeBandSolver(source_.sharedBricks());
       s->setUniformGamma(o.gamma);
       s->setSource(morphForce(o.cs));
       std::vector<uint8_t> flags = streams();
+      front_.emplace(source_, target_, flags, halfWidth_ + frontMargin, schedule);
+      held_ = front_->heldDuring(0);
+      s->setHeldBricks(held_);
       s->initialize(std::move(source_), std::move(flags));  // the solver keeps it until its first step
       return s;
     });
+  }
+
+  int prepareSteps(int step) override
+  {
+    std::vector<uint8_t> held = front_->heldDuring(step);
+    if (held != held_) solver_->setHeldBricks(held_ = std::move(held));
+    return front_->sameUntil(step);
   }
 
   size_t cells() const override { return target_.bricks().storedCells(); }
@@ -165,10 +180,16 @@ public:
             {"half_width", halfWidth_},
             {"bricks", bricks.activeCount()},
             {"cells", bricks.storedCells()},
-            {"fraction_of_grid", double(bricks.storedCells()) / double(frame_.extent.cells())}};
+            {"fraction_of_grid", double(bricks.storedCells()) / double(frame_.extent.cells())},
+            {"streaming_fraction", front_ ? nlohmann::json(front_->meanStreamingFraction()) : nlohmann::json(nullptr)}};
   }
 
 private:
+  // How far beyond the streaming half-width a brick's predicted X counts
+  // as near the surface: diffusion moves the surface from the prediction
+  // by about gamma t times its curvature, a voxel or two over a morph.
+  static constexpr double frontMargin = 2.0;
+
   // S = Cs X_target - Cs X.
   BandSource morphForce(double cs) const { return BandSource{target_, float(cs), float(cs)}; }
 
@@ -233,6 +254,8 @@ private:
   }
 
   double halfWidth_ = 0.0;
+  std::optional<MorphFront> front_;
+  std::vector<uint8_t> held_;  // the held bricks set on the solver
 };
 
 }  // namespace

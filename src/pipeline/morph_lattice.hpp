@@ -35,8 +35,13 @@ public:
   // The target's zero level on the grid: where a morph that arrives ends.
   virtual TriangleMesh targetLevel() const = 0;
   // The solver, with the morph force S = Cs (X_target - X), started from the
-  // source's field (and its noise, on the grid).
-  virtual void start(const ComputeDevice& device, const MorphOptions& options, StageClock& clock) = 0;
+  // source's field (and its noise, on the grid), for the steps of `schedule`.
+  virtual void start(const ComputeDevice& device, const MorphOptions& options, const MorphSchedule& schedule,
+                     StageClock& clock) = 0;
+  // Before the steps from `step` on: sets the lattice up for them (the band
+  // holds the bricks its moving surface is far from, morph_front.hpp), and
+  // returns the first later step that needs it again.
+  virtual int prepareSteps(int step) = 0;
   virtual SteppingSolver& solver() = 0;
   // gamma of the steps from now on (voxels^2 per step).
   virtual void setGamma(double gamma) = 0;

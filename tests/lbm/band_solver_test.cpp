@@ -3,6 +3,8 @@
 // other back end.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -281,6 +283,44 @@ TEST_P(BandSolverTest, HeldCellsKeepTheirValueWithoutASource)
   EXPECT_GT(held, 1000u);
 }
 
+// Bricks held whole (setHeldBricks) follow the source alone: after n steps
+// X = X_T + (X_0 - X_T) r^n with r = (1 - Cs/2) / (1 + Cs/2), however near
+// the surface they are; the bricks that stream diffuse away from that.
+TEST_P(BandSolverTest, HeldBricksFollowTheSourceAlone)
+{
+  const Extent3 extent{32, 32, 32};
+  const Volume from = testing::sphereDistance(extent, 15.5, 15.5, 15.5, 6.0);
+  const Volume to = testing::sphereDistance(extent, 15.5, 15.5, 15.5, 11.0);
+  const float cs = 0.2f;
+  const int steps = 10;
+  auto bricks = testing::bricksNear(from, 40.0);
+  std::vector<uint8_t> held(bricks->activeCount());
+  for (size_t s = 0; s < held.size(); ++s) held[s] = bricks->brick(int32_t(s)).x >= 2;  // the +x half
+  auto band = solver(bricks);
+  EXPECT_THROW(band->setHeldBricks(std::vector<uint8_t>(held.size() + 1)), std::invalid_argument);
+  band->setUniformGamma(0.2);
+  const BandField target = testing::bandOf(to, bricks), start = testing::bandOf(from, bricks);
+  band->setSource(BandSource{target, cs, cs});
+  band->setHeldBricks(held);
+  band->initialize(start, std::numeric_limits<double>::infinity());
+  band->step(steps);
+  const BandField after = band->field();
+  const double r = std::pow((1.0 - cs / 2.0) / (1.0 + cs / 2.0), steps);
+  double heldWorst = 0.0, streamingLargest = 0.0;
+  for (size_t i = 0; i < after.values().size(); ++i) {
+    const glm::ivec3 c = bricks->cell(int32_t(i / brickCells), int(i % brickCells));
+    if (!extent.contains(c.x, c.y, c.z)) continue;
+    const double T = target.values()[i], predicted = T + (start.values()[i] - T) * r;
+    const double off = std::abs(after.values()[i] - predicted);
+    if (held[i / brickCells])
+      heldWorst = std::max(heldWorst, off);
+    else
+      streamingLargest = std::max(streamingLargest, off);
+  }
+  EXPECT_LE(heldWorst, 1e-5 * 16.0) << "voxels from the force alone, in the held bricks";
+  EXPECT_GT(streamingLargest, 0.05) << "the streaming bricks diffuse";
+}
+
 // A Gaussian pulse spreads with variance growing by 2 gamma t along each
 // axis: the moment form keeps BGK's diffusion coefficient (tau - 1/2) / 3.
 TEST_P(BandSolverTest, DiffusesWithGammaEqualToTauMinusHalfOverThree)
@@ -520,7 +560,8 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
 {
   // 0 plain, 1 source, 2 gamma per cell, 3 both, 4 the paper's rule, 5 the
   // feature-preserving rule (on the device against the host's), 6 the same
-  // rule with the steps going on from the state it read (no new start)
+  // rule with the steps going on from the state it read (no new start), 7
+  // a source with held bricks (setHeldBricks)
   const int variant = GetParam();
   const Extent3 extent{37, 29, 45};  // sides that are no multiple of 8; the sphere reaches the faces
   const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
@@ -533,7 +574,7 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
   for (BandSolver* s : {gpu.get(), cpu.get()}) {
     s->setUniformGamma(0.15);
     if (variant == 4) s->setPaperRule(0.15);
-    if (variant == 1 || variant == 3) {
+    if (variant == 1 || variant == 3 || variant == 7) {
       BandField target = testing::bandOf(testing::sphereDistance(extent, 20.0, 14.0, 20.0, 12.0), bricks);
       for (float& v : target.values()) v *= 0.1f;
       s->setSource(BandSource{std::move(target), 0.1f});
@@ -550,6 +591,21 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
       s->initialize(start, 6.0);
       s->step(5);
       s->setFeaturePreservingGamma(0.2, 0.2);
+    }
+    if (variant == 7) {
+      // Held bricks, a third of them, then others from the step they
+      // change, a frame's field read and a step in one pass.
+      std::vector<uint8_t> held(bricks->activeCount());
+      for (size_t b = 0; b < held.size(); ++b) held[b] = b % 3 == 0;
+      s->setHeldBricks(held);
+      s->initialize(start, 6.0);
+      s->step(10);
+      for (size_t b = 0; b < held.size(); ++b) held[b] = b % 3 == 1;
+      s->setHeldBricks(held);
+      BandField frame;
+      s->fieldIntoThenStep(frame, SourceStrength{0.3f, 0.3f});
+      s->step(9);
+      continue;
     }
     if (variant != 6) s->initialize(start, 6.0);
     s->step(20);
@@ -589,12 +645,12 @@ TEST_F(BandVulkanStaging, ChunkedCopiesGiveTheSameField)
 
 std::string variantName(const ::testing::TestParamInfo<int>& info)
 {
-  static const char* names[] = {"plain",      "source",       "gamma_per_cell",         "source_and_gamma_per_cell",
-                                "paper_rule", "feature_rule", "feature_rule_then_steps"};
+  static const char* names[] = {"plain",      "source",       "gamma_per_cell",          "source_and_gamma_per_cell",
+                                "paper_rule", "feature_rule", "feature_rule_then_steps", "held_bricks"};
   return names[info.param];
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, BandVulkanMatchesReference, ::testing::Values(0, 1, 2, 3, 4, 5, 6), variantName);
+INSTANTIATE_TEST_SUITE_P(Variants, BandVulkanMatchesReference, ::testing::Values(0, 1, 2, 3, 4, 5, 6, 7), variantName);
 
 }  // namespace
 }  // namespace lbmshape

@@ -8,6 +8,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/in_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_arrival_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/morph_front_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recycled_fields_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop_test.cpp
 )

@@ -1,0 +1,88 @@
+#include "pipeline/morph_front.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lbmshape {
+namespace {
+
+// D after each step: D[0] = 1, D[n + 1] = D[n] r(Cs of step n).
+std::vector<double> decayAfterEachStep(const MorphSchedule& schedule)
+{
+  std::vector<double> D(size_t(schedule.totalSteps()) + 1, 1.0);
+  for (int n = 0; n < schedule.totalSteps(); ++n) {
+    const double cs = schedule.csAt(n);
+    D[size_t(n) + 1] = D[size_t(n)] * (1.0 - cs / 2.0) / (1.0 + cs / 2.0);
+  }
+  return D;
+}
+
+}  // namespace
+
+MorphFront::MorphFront(const BandField& source, const BandField& target, const std::vector<uint8_t>& streams,
+                       double reach, const MorphSchedule& schedule)
+    : first_(source.bricks().activeCount()), last_(source.bricks().activeCount()), totalSteps_(schedule.totalSteps())
+{
+  const std::vector<double> D = decayAfterEachStep(schedule);
+  const std::vector<float>& A = source.values();
+  const std::vector<float>& T = target.values();
+  const double W = reach;
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < first_.size(); ++s) {
+    // The hull of the D for which some cell of the brick has |X(D)| < W.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t i = s * brickCells; i < (s + 1) * brickCells && W > 0.0; ++i) {
+      if (!streams[i]) continue;
+      const double a = A[i], t = T[i], d = a - t;
+      double from = 0.0, to = 1.0;  // X(D) = t + d D over D in [0, 1]
+      if (d == 0.0) {
+        if (std::abs(t) >= W) continue;
+      } else {
+        from = std::max(from, std::min((-W - t) / d, (W - t) / d));
+        to = std::min(to, std::max((-W - t) / d, (W - t) / d));
+        if (from > to) continue;
+      }
+      lo = std::min(lo, from);
+      hi = std::max(hi, to);
+    }
+    // Step n spans D from D[n] down to D[n + 1]: it streams while the two
+    // ranges meet, a contiguous run of steps since D falls.
+    int first = totalSteps_, last = -1;
+    for (int n = 0; n < totalSteps_; ++n)
+      if (D[size_t(n) + 1] <= hi && D[size_t(n)] >= lo) {
+        first = std::min(first, n);
+        last = n;
+      }
+    first_[s] = first;
+    last_[s] = last;
+  }
+}
+
+std::vector<uint8_t> MorphFront::heldDuring(int step) const
+{
+  std::vector<uint8_t> held(first_.size());
+  for (size_t s = 0; s < held.size(); ++s) held[s] = step < first_[s] || step > last_[s];
+  return held;
+}
+
+int MorphFront::sameUntil(int step) const
+{
+  int next = totalSteps_;
+  for (size_t s = 0; s < first_.size(); ++s) {
+    if (first_[s] > last_[s]) continue;  // held throughout
+    if (first_[s] > step) next = std::min(next, first_[s]);
+    if (last_[s] + 1 > step) next = std::min(next, last_[s] + 1);
+  }
+  return std::max(next, step + 1);
+}
+
+double MorphFront::meanStreamingFraction() const
+{
+  if (first_.empty() || totalSteps_ == 0) return 0.0;
+  double streamingSteps = 0.0;
+  for (size_t s = 0; s < first_.size(); ++s) streamingSteps += std::max(0, last_[s] - first_[s] + 1);
+  return streamingSteps / (double(first_.size()) * totalSteps_);
+}
+
+}  // namespace lbmshape

@@ -14,6 +14,7 @@ struct MorphArguments {
   // (and refuse), not the same as no --steps.
   CLI::Option *voxelGiven = nullptr, *stepsPerFrameGiven = nullptr, *stepsGiven = nullptr;
   bool noAnimation = false;
+  bool dense = false, band = false;  // --band is the default, kept for scripts that name it
   std::string preview;
   std::string colour = "none";
 };
@@ -24,6 +25,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (a.stepsPerFrameGiven->count()) a.options.stepsPerFrame = a.stepsPerFrame;
   if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
+  a.options.band = !a.dense;
   if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.colourByCurvature = a.colour == "curvature";
   a.options.frameFigures = common.json;  // only the JSON report shows them
@@ -86,9 +88,11 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--noise", a->options.noise.amplitude, "The paper's noise on the source's distance field (0.05 = 5%)")
       ->capture_default_str();
   cmd->add_option("--seed", a->options.noise.seed, "Seed of --noise")->capture_default_str();
-  cmd->add_flag(
-      "--band", a->options.band,
-      "Run the lattice on the narrow band around both surfaces and between them (less memory; not with --noise)");
+  auto* dense =
+      cmd->add_flag("--dense", a->dense,
+                    "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band "
+                    "around both surfaces and between them (--noise implies it)");
+  cmd->add_flag("--band", a->band, "The narrow band, the default (kept for scripts that name it)")->excludes(dense);
   cmd->callback([&common, a] { runMorph(common, *a); });
 }
 

@@ -214,7 +214,7 @@ PYBIND11_MODULE(lbmshape, m)
         "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");
   m.def("morph", &morph, py::arg("source_vertices"), py::arg("source_triangles"), py::arg("target_vertices"),
         py::arg("target_triangles"), py::arg("frames") = 48, py::arg("res") = 128, py::arg("steps") = py::none(),
-        py::arg("cs") = 0.1, py::arg("gamma") = 0.05, py::arg("align") = "fit", py::arg("band") = false,
+        py::arg("cs") = 0.1, py::arg("gamma") = 0.05, py::arg("align") = "fit", py::arg("band") = true,
         py::arg("device") = nullptr, py::arg("on_frame") = py::none(), py::arg("report") = false,
         "Morph one closed mesh into another, as `lbmshape morph` with the same defaults: a list of `frames` "
         "(vertices, triangles) pairs, or each passed to on_frame(index, vertices, triangles) as it is made (then "

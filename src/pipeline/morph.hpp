@@ -53,11 +53,12 @@ struct MorphOptions {
   // much work as extracting the frame).
   bool frameFigures = true;
   FieldNoise noise;  // on the source's field (the paper's noisy sphere)
-  // The lattice on the narrow band around both surfaces and between them,
-  // instead of every cell of the grid: less memory, but between a source
-  // and a target that differ much the band is most of the grid, and there a
-  // cell of the band costs more than a cell of the grid (docs/performance.md).
-  bool band = false;
+  // The lattice on the narrow band around both surfaces and between them
+  // (the default), its bricks streaming while the moving surface passes
+  // them (pipeline/morph_front.hpp), or with false on every cell of the
+  // grid (--dense, the paper's): the band takes less memory and, since it
+  // follows the surface, less time (docs/morphing.md).
+  bool band = true;
   // Lattice steps between two Ctrl-C checks; by default batches of about a
   // quarter of a second. The frames do not depend on it (for tests).
   std::optional<int> stepsPerBatch;

@@ -235,7 +235,7 @@ TEST(DenoiseCli, ABandTooLargeForTheDeviceIsRefusedBeforeItsDistances)
   const auto before = folder.entries();
   // --quiet: on a busy machine, choosing the bricks may take long enough to show progress.
   for (std::vector<std::string> args : {std::vector<std::string>{"-q", "denoise", input, (folder / "out.glb").string()},
-                                        {"-q", "morph", input, input, (folder / "frames").string(), "--band"}}) {
+                                        {"-q", "morph", input, input, (folder / "frames").string()}}) {
     args.insert(args.end(), {"--res", "1200"});
     testing::CliResult r = testing::runLbmshape(args);
     EXPECT_EQ(r.exitCode, 5) << args[1] << ": " << r.err;

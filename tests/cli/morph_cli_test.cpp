@@ -90,6 +90,28 @@ TEST_F(MorphCli, FramesDoNotDependOnTheWritersTiming)
   }
 }
 
+// The lattice runs on the narrow band unless --dense asks for every cell of
+// the grid; --band, the default, is still accepted, but not with --dense.
+TEST_F(MorphCli, RunsOnTheBandUnlessDense)
+{
+  auto kind = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"morph",          sphere,  torus,      (folder / extra.front()).string(),
+                                     "--res",          "24",    "--frames", "3",
+                                     "--no-animation", "--json"};
+    args.insert(args.end(), extra.begin() + 1, extra.end());
+    testing::CliResult r = testing::runLbmshape(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.out)["lattice"]["kind"].get<std::string>() : "";
+  };
+  EXPECT_EQ(kind({"default"}), "band");
+  EXPECT_EQ(kind({"named", "--band"}), "band");
+  EXPECT_EQ(kind({"dense", "--dense"}), "grid");
+  testing::CliResult both =
+      testing::runLbmshape({"morph", sphere, torus, (folder / "both").string(), "--res", "24", "--band", "--dense"});
+  EXPECT_EQ(both.exitCode, 2) << both.err;
+  EXPECT_FALSE(fs::exists(folder / "both"));
+}
+
 TEST_F(MorphCli, OtherFrameFormats)
 {
   for (const char* format : {"obj", "ply"}) {

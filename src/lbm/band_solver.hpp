@@ -59,6 +59,9 @@ public:
   {
     setGammaPerCell(adaptive_gamma::featurePreservingRule(field(), gamma0, kappaEdge));
   }
+  // The Vulkan solver lets the host's copy of the source's base go after
+  // the first step (unless the field is held for a restart): a later
+  // initialize() needs setSource() again.
   virtual void setSource(std::optional<BandSource> source) = 0;
   // The source's decay and scale, its base kept (LatticeSolver's).
   virtual void setSourceStrength(float decay, float scale) = 0;

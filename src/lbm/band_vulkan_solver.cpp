@@ -659,6 +659,8 @@ void BandVulkanSolver::restart()
 // rule seeded: initialize() after the streaming cells are on the device.
 void BandVulkanSolver::startFrom(BandField field)
 {
+  if (r_->sourceHost && r_->sourceHost->base.values().size() != r_->cells)
+    throw std::logic_error("a new start with a source needs setSource() again: its values go after the first step");
   if (r_->paperRuleGamma0) {
     const std::vector<float> gamma(r_->cells, float(*r_->paperRuleGamma0));
     r_->upload(gamma.data(), 4 * r_->cells, r_->omega);
@@ -711,7 +713,12 @@ void BandVulkanSolver::step(int count)
   // Once a step is taken, field() makes every stored value on the device:
   // only the far sides of the initial field are still needed, unless it is
   // held for a restart.
-  if (r_->steps > 0 && !r_->holdForRestart) std::vector<float>().swap(r_->initial.values());
+  if (r_->steps > 0 && !r_->holdForRestart) {
+    std::vector<float>().swap(r_->initial.values());
+    // The source's base is on the device; the host's copy was for the
+    // start's rho* (44 MB at a morph's 256^3).
+    if (r_->sourceHost) std::vector<float>().swap(r_->sourceHost->base.values());
+  }
   if (count <= 0) return;
   auto& program = r_->context.program(r_->program());
   while (count > 0) {

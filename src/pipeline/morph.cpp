@@ -29,6 +29,7 @@
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/morph_frame_report.hpp"
 #include "pipeline/morph_lattice.hpp"
+#include "core/host_memory.hpp"
 #include "pipeline/morph_schedule.hpp"
 #include "pipeline/render_job.hpp"
 #include "render/curvature_colours.hpp"
@@ -38,11 +39,6 @@ namespace lbmshape {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Cells within this many voxels of the target's surface decide convergence:
-// those whose values place the surface (marching cubes interpolates between
-// the cells on either side of it).
-constexpr float convergenceBand = 1.0f;
 
 const char* alignmentName(Alignment a)
 {
@@ -281,9 +277,10 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     // The animation, and the preview's frames, hold every frame in memory.
     if (o.animation || o.preview) checkAnimationFits(source, target, frame.voxel, o.frames);
   });
+  returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
-  const double initialError = lattice->sourceErrorNearTarget(convergenceBand);
+  const double initialError = lattice->sourceErrorNearTarget();
   const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
   const std::vector<int>& frameSteps = schedule.frameSteps();
   if (!stepsGiven(o))
@@ -381,7 +378,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         downloadMs += download.ms();
         clock.recordDevice("download", clock.deviceMsNow() - deviceBefore);
       }
-      lastError = lattice->errorNearTarget(current, convergenceBand);
+      lastError = lattice->errorNearTarget(current);
       // Only the paper's scheme stops early: a morph that arrives spreads
       // its frames over the whole way, wherever the tolerance is reached.
       if (stepsGiven(o) && k > 0 && lastError < o.tolerance) {
@@ -408,6 +405,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const nlohmann::json latticeDescription = lattice->describe();
   current = FrameField();
   lattice->finish();
+  returnFreedHeapMemory();  // the lattice's and the fields' memory, before the animation's peak
   const std::vector<int> emptyFrames = writer.emptyFrames();
   if (!emptyFrames.empty())
     log::warning((emptyFrames.size() == 1 ? "frame " : "frames ") + frameRanges(emptyFrames) +

@@ -21,6 +21,11 @@
 
 namespace lbmshape {
 
+// Cells within this many voxels of the target's surface decide convergence:
+// those whose values place the surface (marching cubes interpolates between
+// the cells on either side of it).
+inline constexpr float convergenceBand = 1.0f;
+
 class MorphLattice {
 public:
   virtual ~MorphLattice() = default;
@@ -29,9 +34,9 @@ public:
   // encloses nothing on the grid (before any output folder exists).
   virtual void requireEnclosedVolumes(const std::filesystem::path& source,
                                       const std::filesystem::path& target) const = 0;
-  // Before start(): max |X_source - X_target| over the cells within `band`
-  // voxels of the target's surface, where the morph starts from.
-  virtual double sourceErrorNearTarget(float band) const = 0;
+  // Before start(): max |X_source - X_target| over the cells within
+  // convergenceBand of the target's surface, where the morph starts from.
+  virtual double sourceErrorNearTarget() const = 0;
   // The target's zero level on the grid: where a morph that arrives ends.
   virtual TriangleMesh targetLevel() const = 0;
   // The solver, with the morph force S = Cs (X_target - X), started from the
@@ -52,8 +57,9 @@ public:
   // The same, then one step (gamma set for it) under Cs `nextCs`: one pass
   // over the lattice where the solver can.
   virtual FrameField fieldThenStep(double nextCs) = 0;
-  // max |X - X_target| over the cells within `band` voxels of the target's surface.
-  virtual double errorNearTarget(const FrameField& field, float band) const = 0;
+  // max |X - X_target| over the cells within convergenceBand of the
+  // target's surface (after start(), which keeps X_target there alone).
+  virtual double errorNearTarget(const FrameField& field) const = 0;
   // After the last frame: lets the solver, the fields and the frames'
   // memory go before the animation is assembled. Nothing may be called
   // after.

@@ -616,6 +616,42 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
   EXPECT_GT(d.scale, 1.0);
 }
 
+// The Vulkan solver lets its host copy of the source's base go after the
+// first step: a new start must set the source again (and then runs as the
+// first did), unless the field was held for a restart.
+class BandVulkanSource : public testing::GpuTest {};
+
+TEST_F(BandVulkanSource, ANewStartNeedsTheSourceAgain)
+{
+  const Extent3 extent{30, 26, 28};
+  const Volume from = testing::sphereDistance(extent, 14.5, 13.0, 13.5, 8.0);
+  const Volume to = testing::sphereDistance(extent, 15.5, 12.5, 14.0, 10.0);
+  auto bricks = testing::bricksNear(from, 40.0);
+  const BandSource source{testing::bandOf(to, bricks), 0.1f, 0.1f};
+  BandVulkanSolver solver(testing::sharedGpu(), bricks, BandVulkanSolver::defaultStagingBytes);
+  solver.setUniformGamma(0.05);
+  solver.setSource(source);
+  solver.initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  solver.step(3);
+  const BandField first = solver.field();
+  EXPECT_THROW(solver.initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity()),
+               std::logic_error);
+  solver.setSource(source);
+  solver.initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  solver.step(3);
+  EXPECT_EQ(solver.field().values(), first.values());
+
+  BandVulkanSolver held(testing::sharedGpu(), bricks, BandVulkanSolver::defaultStagingBytes);
+  held.setUniformGamma(0.05);
+  held.setSource(source);
+  held.holdFieldForRestart();
+  held.initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  held.step(3);
+  EXPECT_NO_THROW(held.restart());
+  held.step(3);
+  EXPECT_EQ(held.field().values(), first.values());
+}
+
 // A staging buffer of a few bricks, so that every upload and the field's
 // download take many chunks, one of them partial and their edges inside a
 // brick: the same field as with one chunk.

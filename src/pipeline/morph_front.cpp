@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace lbmshape {
 namespace {
@@ -28,11 +29,12 @@ MorphFront::MorphFront(const BandField& source, const BandField& target, const s
   const std::vector<float>& A = source.values();
   const std::vector<float>& T = target.values();
   const double W = reach;
+  if (!(W > 0.0)) throw std::invalid_argument("a morph front's reach must be positive");
 #pragma omp parallel for schedule(static)
   for (size_t s = 0; s < first_.size(); ++s) {
     // The hull of the D for which some cell of the brick has |X(D)| < W.
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (size_t i = s * brickCells; i < (s + 1) * brickCells && W > 0.0; ++i) {
+    for (size_t i = s * brickCells; i < (s + 1) * brickCells; ++i) {
       if (!streams[i]) continue;
       const double a = A[i], t = T[i], d = a - t;
       double from = 0.0, to = 1.0;  // X(D) = t + d D over D in [0, 1]

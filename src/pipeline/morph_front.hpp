@@ -26,8 +26,8 @@ namespace lbmshape {
 class MorphFront {
 public:
   // `streams` (one flag a stored cell, initialize()'s) says which cells may
-  // stream at all; `reach` is how near zero (voxels) a cell's predicted X
-  // makes its brick stream.
+  // stream at all; `reach` (positive, else std::invalid_argument) is how
+  // near zero (voxels) a cell's predicted X makes its brick stream.
   MorphFront(const BandField& source, const BandField& target, const std::vector<uint8_t>& streams, double reach,
              const MorphSchedule& schedule);
 

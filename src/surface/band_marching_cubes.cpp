@@ -39,38 +39,36 @@ public:
 
   void triangulate(int32_t slot, const std::vector<int8_t>& sides, BrickTriangles& out) const
   {
-    // The brick's cubes reach one cell into the bricks after it along x, y
-    // and z: when those and the brick lie wholly on one side, no cube is cut.
+    // The brick's cubes reach one cell into the seven bricks after it along
+    // x, y and z: each of the eight is stored (its values) or not (its far
+    // value), or beyond the grid, where no cube reads (and which counts as
+    // on the brick's own side).
     const BrickSet& bricks = field_.bricks();
     const glm::ivec3 b = bricks.brick(slot);
-    const int8_t own = sides[size_t(slot)];
-    bool uniform = own != 0;
-    for (int k = 1; k < 8 && uniform; ++k) {
+    std::array<const float*, 8> from{};
+    std::array<float, 8> far{};
+    std::array<int8_t, 8> sideOfEach;
+    sideOfEach.fill(sides[size_t(slot)]);
+    for (int k = 1; k < 8; ++k) {
       const glm::ivec3 n = b + glm::ivec3(k & 1, k >> 1 & 1, k >> 2 & 1);
       if (!bricks.bricks().contains(n.x, n.y, n.z)) continue;
       const int32_t s = bricks.slot(n.x, n.y, n.z);
-      const int8_t side = s != noBrick
-                              ? sides[size_t(s)]
-                              : (field_.farValue() * field_.farSide(n.x, n.y, n.z) > iso_ ? int8_t(1) : int8_t(-1));
-      uniform = side == own;
+      if (s != noBrick) {
+        from[size_t(k)] = field_.values().data() + size_t(s) * brickCells;
+        sideOfEach[size_t(k)] = sides[size_t(s)];
+      } else {
+        far[size_t(k)] = field_.farValue() * field_.farSide(n.x, n.y, n.z);
+        sideOfEach[size_t(k)] = far[size_t(k)] > iso_ ? int8_t(1) : int8_t(-1);
+      }
     }
-    if (uniform) return;
+    from[0] = field_.values().data() + size_t(slot) * brickCells;
+    // When all eight lie wholly on one side, no cube is cut.
+    const auto onTheBricksSide = [&](int8_t x) { return x == sideOfEach[0]; };
+    if (sideOfEach[0] != 0 && std::all_of(sideOfEach.begin(), sideOfEach.end(), onTheBricksSide)) return;
 
-    // The brick's cells and the layer after it along x, y and z, from the
-    // seven bricks beside it (or the far value): 9^3 samples, looked up once
+    // The brick's cells and the layer after it, 9^3 samples, looked up once
     // each instead of once per cube corner.
     constexpr int side = brickEdge + 1;
-    std::array<const float*, 8> from{};
-    std::array<float, 8> far{};
-    for (int k = 0; k < 8; ++k) {
-      const glm::ivec3 n = b + glm::ivec3(k & 1, k >> 1 & 1, k >> 2 & 1);
-      if (!bricks.bricks().contains(n.x, n.y, n.z)) continue;  // beyond the grid: no cube reads it
-      const int32_t s = bricks.slot(n.x, n.y, n.z);
-      if (s != noBrick)
-        from[size_t(k)] = field_.values().data() + size_t(s) * brickCells;
-      else
-        far[size_t(k)] = field_.farValue() * field_.farSide(n.x, n.y, n.z);
-    }
     std::array<float, side * side * side> sample;
     for (int z = 0; z < side; ++z)
       for (int y = 0; y < side; ++y)

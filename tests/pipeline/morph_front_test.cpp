@@ -104,6 +104,7 @@ TEST(MorphFront, OnlyCellsThatMayStreamCount)
   for (int n = 0; n < plane.schedule.totalSteps(); ++n)
     EXPECT_EQ(front.heldDuring(n), std::vector<uint8_t>(7, 1)) << "step " << n;
   EXPECT_EQ(front.meanStreamingFraction(), 0.0);
+  EXPECT_THROW(MorphFront(plane.source, plane.target, plane.streams, 0.0, plane.schedule), std::invalid_argument);
 }
 
 }  // namespace

@@ -24,25 +24,49 @@ GlbChunks glbChunks(std::string_view glb)
   return chunks;
 }
 
-std::string glbFile(std::string json, std::string binary)
+namespace {
+
+// Everything of the file before the binary chunk's bytes: the header, the
+// JSON chunk (padded with spaces) and the binary chunk's own header when it
+// has bytes; the binary chunk is then padded with zeros to a multiple of 4.
+std::string glbUpToBinary(std::string json, size_t binaryBytes)
 {
   json.resize((json.size() + 3) / 4 * 4, ' ');
-  binary.resize((binary.size() + 3) / 4 * 4, '\0');
-  const size_t total = 12 + 8 + json.size() + (binary.empty() ? 0 : 8 + binary.size());
+  const size_t binaryChunk = (binaryBytes + 3) / 4 * 4;
+  const size_t total = 12 + 8 + json.size() + (binaryBytes == 0 ? 0 : 8 + binaryChunk);
   std::string out;
-  out.reserve(total);
+  out.reserve(28 + json.size());
   appendWord(out, 0x46546C67);  // "glTF"
   appendWord(out, 2);
   appendWord(out, uint32_t(total));
   appendWord(out, uint32_t(json.size()));
   appendWord(out, 0x4E4F534A);  // "JSON"
   out += json;
-  if (!binary.empty()) {
-    appendWord(out, uint32_t(binary.size()));
+  if (binaryBytes != 0) {
+    appendWord(out, uint32_t(binaryChunk));
     appendWord(out, 0x004E4942);  // "BIN\0"
-    out += binary;
   }
   return out;
+}
+
+size_t binaryPadding(size_t binaryBytes) { return (4 - binaryBytes % 4) % 4; }
+
+}  // namespace
+
+std::string glbFile(std::string json, std::string binary)
+{
+  std::string out = glbUpToBinary(std::move(json), binary.size());
+  out.reserve(out.size() + binary.size() + 3);
+  out += binary;
+  out.append(binaryPadding(binary.size()), '\0');
+  return out;
+}
+
+void writeGlb(std::ostream& out, std::string json, std::string_view binary)
+{
+  out << glbUpToBinary(std::move(json), binary.size());
+  out.write(binary.data(), std::streamsize(binary.size()));
+  out.write("\0\0\0", std::streamsize(binaryPadding(binary.size())));
 }
 
 }  // namespace lbmshape

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -22,5 +23,8 @@ GlbChunks glbChunks(std::string_view glb);
 // A GLB file of this JSON text and binary chunk (none when empty), padded
 // as GLB requires: the JSON with spaces, the binary chunk with zeros.
 std::string glbFile(std::string json, std::string binary);
+// The same written to `out` as it goes, the binary chunk from where it lies
+// (a morph's animation holds hundreds of megabytes: no copy of them is made).
+void writeGlb(std::ostream& out, std::string json, std::string_view binary);
 
 }  // namespace lbmshape

@@ -1,6 +1,7 @@
 #include "mesh/gltf_animation.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -36,51 +37,79 @@ ScaleKeys scaleKeys(size_t frame, size_t frames, double fps)
 
 }  // namespace
 
-void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path,
-                        GltfCompression compression)
+struct GltfAnimation::Model {
+  explicit Model(GltfCompression compression) : builder(compression) { animation.name = "morph"; }
+  GltfBuilder builder;
+  tinygltf::Animation animation;
+};
+
+GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, double fps, GltfCompression compression)
+    : path_(std::move(path)), frameCount_(frameCount), fps_(fps)
 {
-  const std::string prefix = "cannot write " + path.string() + ": ";
-  const auto format = meshFormatOf(path);
+  const std::string prefix = "cannot write " + path_.string() + ": ";
+  const auto format = meshFormatOf(path_);
   if (format != MeshFormat::Gltf && format != MeshFormat::Glb)
     throw UsageError(prefix + "an animation is written as glTF, so the file name must end in .gltf or .glb, not '" +
-                     path.extension().string() + "'");
-  if (frames.empty()) throw UsageError(prefix + "the animation has no frames");
+                     path_.extension().string() + "'");
+  if (frameCount == 0) throw UsageError(prefix + "the animation has no frames");
   if (!std::isfinite(fps) || fps <= 0)
     throw UsageError(prefix + "the frame rate must be a positive number, not " + std::to_string(fps));
   // Keys closer than float resolution would not be increasing any more.
-  if (float(double(frames.size()) / fps) <= float(double(frames.size() - 1) / fps))
-    throw UsageError(prefix + std::to_string(frames.size()) + " frames at " + std::to_string(fps) +
+  if (float(double(frameCount) / fps) <= float(double(frameCount - 1) / fps))
+    throw UsageError(prefix + std::to_string(frameCount) + " frames at " + std::to_string(fps) +
                      " per second are too many to time in single precision");
-  // A frame may be empty (a morph through nothing): its node has no mesh.
-  for (size_t i = 0; i < frames.size(); ++i)
-    requireWritable(frames[i], path, "frame " + std::to_string(i), EmptyMesh::Allowed);
+  model_ = std::make_unique<Model>(compression);
+}
 
-  AtomicFile file(path);
-  GltfBuilder builder(compression);
-  tinygltf::Animation animation;
-  animation.name = "morph";
-  for (size_t i = 0; i < frames.size(); ++i) {
-    const std::string name = "frame " + std::to_string(i);
-    // At rest (no animation playing) only frame 0 is shown.
-    const int node = builder.addNode(builder.addMesh(frames[i], name), name,
-                                     i == 0 ? std::vector<double>{} : std::vector<double>{0, 0, 0});
-    const ScaleKeys keys = scaleKeys(i, frames.size(), fps);
-    tinygltf::AnimationSampler sampler;
-    sampler.input = builder.addFloatAccessor(keys.times, TINYGLTF_TYPE_SCALAR, true);  // glTF requires bounds on times
-    sampler.output = builder.addFloatAccessor(keys.scales, TINYGLTF_TYPE_VEC3, false);
-    sampler.interpolation = "STEP";
-    animation.samplers.push_back(sampler);
-    tinygltf::AnimationChannel channel;
-    channel.sampler = int(animation.samplers.size() - 1);
-    channel.target_node = node;
-    channel.target_path = "scale";
-    animation.channels.push_back(channel);
-  }
-  builder.model().animations.push_back(animation);
-  saveGltf(builder.model(), *format, file);
+GltfAnimation::~GltfAnimation() = default;
+
+void GltfAnimation::add(const TriangleMesh& frame)
+{
+  const size_t i = added_;
+  if (i >= frameCount_)
+    throw std::logic_error("the animation of " + std::to_string(frameCount_) + " frames was given one more");
+  const std::string name = "frame " + std::to_string(i);
+  // A frame may be empty (a morph through nothing): its node has no mesh.
+  requireWritable(frame, path_, name, EmptyMesh::Allowed);
+  GltfBuilder& builder = model_->builder;
+  // At rest (no animation playing) only frame 0 is shown.
+  const int node = builder.addNode(builder.addMesh(frame, name), name,
+                                   i == 0 ? std::vector<double>{} : std::vector<double>{0, 0, 0});
+  const ScaleKeys keys = scaleKeys(i, frameCount_, fps_);
+  tinygltf::AnimationSampler sampler;
+  sampler.input = builder.addFloatAccessor(keys.times, TINYGLTF_TYPE_SCALAR, true);  // glTF requires bounds on times
+  sampler.output = builder.addFloatAccessor(keys.scales, TINYGLTF_TYPE_VEC3, false);
+  sampler.interpolation = "STEP";
+  tinygltf::Animation& animation = model_->animation;
+  animation.samplers.push_back(sampler);
+  tinygltf::AnimationChannel channel;
+  channel.sampler = int(animation.samplers.size() - 1);
+  channel.target_node = node;
+  channel.target_path = "scale";
+  animation.channels.push_back(channel);
+  ++added_;
+}
+
+void GltfAnimation::write()
+{
+  if (added_ != frameCount_)
+    throw std::logic_error("the animation has " + std::to_string(added_) + " of its " + std::to_string(frameCount_) +
+                           " frames");
+  AtomicFile file(path_);
+  tinygltf::Model& model = model_->builder.model();
+  model.animations.assign(1, model_->animation);
+  saveGltf(model, *meshFormatOf(path_), file);
   file.commit();
-  log::verbose("wrote " + path.string() + ": " + std::to_string(frames.size()) + " frames, " +
-               std::to_string(double(frames.size()) / fps) + " s");
+  log::verbose("wrote " + path_.string() + ": " + std::to_string(frameCount_) + " frames, " +
+               std::to_string(double(frameCount_) / fps_) + " s");
+}
+
+void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path,
+                        GltfCompression compression)
+{
+  GltfAnimation animation(path, frames.size(), fps, compression);
+  for (const TriangleMesh& frame : frames) animation.add(frame);
+  animation.write();
 }
 
 }  // namespace lbmshape

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "mesh/gltf_compression.hpp"
@@ -22,5 +23,30 @@ namespace lbmshape {
 // as writeMesh() does (naming the frame that cannot be written).
 void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, const std::filesystem::path& path,
                         GltfCompression compression = GltfCompression::None);
+
+// The same file made frame by frame, as a morph's frames come (on its frame
+// writer's thread, while the lattice computes the next ones), so that only
+// the writing is left when the last frame is in. The same checks and errors
+// as writeGltfAnimation(): the arguments' in the constructor, a frame's in
+// add(), a frame missing in write().
+class GltfAnimation {
+public:
+  GltfAnimation(std::filesystem::path path, size_t frameCount, double fps,
+                GltfCompression compression = GltfCompression::None);
+  ~GltfAnimation();
+  GltfAnimation(const GltfAnimation&) = delete;
+  GltfAnimation& operator=(const GltfAnimation&) = delete;
+
+  void add(const TriangleMesh& frame);  // the next frame
+  void write();                         // once every frame is in
+
+private:
+  struct Model;  // the glTF assembled so far
+  std::filesystem::path path_;
+  size_t frameCount_;
+  double fps_;
+  size_t added_ = 0;
+  std::unique_ptr<Model> model_;
+};
 
 }  // namespace lbmshape

@@ -61,7 +61,8 @@ private:
 // buffer embedded (a data URI) so the file stands alone; a model that holds no
 // data at all is written without a buffer (glTF forbids empty ones). A
 // compressed model is written as .glb only. Throws OutputError naming
-// file.target().
-void saveGltf(const tinygltf::Model& model, MeshFormat format, const AtomicFile& file);
+// file.target(). The model is only borrowed: a .glb's buffer is written from
+// where it lies, moved out of the model meanwhile and back before return.
+void saveGltf(tinygltf::Model& model, MeshFormat format, const AtomicFile& file);
 
 }  // namespace lbmshape

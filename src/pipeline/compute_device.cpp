@@ -40,6 +40,16 @@ void ComputeDevice::finishWarmUp() const
 void ComputeDevice::warmUpForTheBand() const
 {
   if (isReference() || gpu_ || warmUp_.valid()) return;
+  // The Vulkan loader and driver are loaded here, on the caller's thread.
+  // Loaded on the warm-up's, a library constructor that throws (out of
+  // memory under an address-space limit) leaves the dynamic loader's lock
+  // held by a thread that then ends, and the next dlopen of the process
+  // waits forever (a morph under `ulimit -v 150000` hung one run in two).
+  try {
+    description();
+  } catch (...) {
+    return;  // the first real use meets the same failure
+  }
   warmUp_ = std::async(std::launch::async, [this] {
     // A band of one brick: its solver compiles the band's pipeline and runs
     // it once (lavapipe turns it into machine code then), for the GpuContext

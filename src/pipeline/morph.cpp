@@ -20,6 +20,7 @@
 #include "core/interrupt.hpp"
 #include "core/temporary_files.hpp"
 #include "core/log.hpp"
+#include "core/stopwatch.hpp"
 #include "lbm/relaxation.hpp"
 #include "mesh/gltf_animation.hpp"
 #include "mesh/mesh_format.hpp"
@@ -303,13 +304,27 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   lattice->start(device, o, schedule, clock);
   SteppingSolver& solver = lattice->solver();
 
-  const FrameWriter::Keep keep =
-      o.animation || o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
+  // The animation is assembled as the frames come, on the frame writer's
+  // thread: after the last frame only its file is left to write (at 256^3
+  // assembling 48 frames took 0.24 s of the 0.81 s).
+  std::optional<GltfAnimation> animation;
+  if (to.folder && o.animation) animation.emplace(*to.folder / "morph.glb", size_t(o.frames), o.fps, o.compression);
+  double figuresMs = 0.0, animationMs = 0.0;  // the writer's thread's, read after writer.finish()
+  const FrameWriter::Keep keep = o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
   const FrameWriter::Inspect inspect =
-      o.frameFigures ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
-        frameReport.surface(k, field, mesh);
+      o.frameFigures || animation ? FrameWriter::Inspect([&](int k, const FrameField& field, const TriangleMesh& mesh) {
+        if (o.frameFigures) {
+          const Stopwatch figures;
+          frameReport.surface(k, field, mesh);
+          figuresMs += figures.ms();
+        }
+        if (animation) {
+          const Stopwatch assembly;
+          animation->add(mesh);
+          animationMs += assembly.ms();
+        }
       })
-                     : FrameWriter::Inspect();
+                                  : FrameWriter::Inspect();
   const FrameWriter::Decorate decorate = o.colourByCurvature
                                              ? FrameWriter::Decorate([scale = colourScale](TriangleMesh& mesh) {
                                                  mesh.colours = render::curvatureColours(mesh, scale);
@@ -416,15 +431,18 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   clock.record("download", downloadMs);
   clock.record("extract", writer.extractMs());
   clock.record("write", writer.writeMs());
-  clock.record("frame_figures", writer.inspectMs());
+  clock.record("frame_figures", figuresMs);
   StageClock::report("lbm", lbmMs, clock.deviceMs("lbm"));
   StageClock::report("extract", writer.extractMs());
   StageClock::report("write", writer.writeMs());
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
   interrupt::check(std::to_string(o.frames) + " complete frames" + (to.folder ? " in " + to.folder->string() : ""));
-  if (to.folder && o.animation)
-    clock.time("animation", [&] { writeGltfAnimation(meshes, o.fps, *to.folder / "morph.glb", o.compression); });
+  if (animation) {
+    clock.record("animation", animationMs);
+    log::verbose("animation: " + std::to_string(int(animationMs)) + " ms assembling it alongside the frames");
+    clock.time("animation", [&] { animation->write(); });
+  }
   device.requireCleanValidation();
   if (to.folder && o.preview)
     clock.time("preview",

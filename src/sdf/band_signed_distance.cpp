@@ -130,23 +130,20 @@ void markFarSides(BandField& band, const std::vector<uint8_t>& inside, const Tri
 
 }  // namespace
 
-std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const GridFrame& frame, double reachVoxels)
+std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
+                                            double reachVoxels)
 {
   checkSignedDistanceArguments(mesh, frame, 1.0);
-  return bandBricks(TriangleBvh(mesh), frame, reachVoxels);
+  return bandBricks(tree, frame, reachVoxels);
 }
 
-BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options,
-                             SignedDistanceStats* stats)
-{
-  checkSignedDistanceArguments(mesh, frame, 1.0);
-  if (!(options.halfWidth >= 1.0) || !std::isfinite(options.halfWidth))
-    throw UsageError("the band's half width must be at least 1 voxel");
-  return signedDistanceOn(mesh, frame, nullptr, options, stats);
-}
+namespace {
 
-BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std::shared_ptr<const BrickSet> given,
-                           const BandDistanceOptions& options, SignedDistanceStats* stats)
+// signedDistanceOn(), given how long the tree took to build when it was
+// built for it (signedDistanceBand()).
+BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, double treeMs, const GridFrame& frame,
+                            std::shared_ptr<const BrickSet> given, const BandDistanceOptions& options,
+                            SignedDistanceStats* stats)
 {
   checkSignedDistanceArguments(mesh, frame, 1.0);
   SignedDistanceStats local;
@@ -159,10 +156,8 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
   };
 
   Stopwatch stage;
-  beginPart("hierarchy", 0.1);
-  const TriangleBvh bvh(mesh);
   const std::shared_ptr<const BrickSet> bricks = given ? given : bandBricks(bvh, frame, options.halfWidth + 2.0);
-  s.bvhMs = stage.ms();
+  s.bvhMs = treeMs + stage.ms();
   interrupt::check("nothing was written");
   if (options.checkBricks) options.checkBricks(*bricks);
 
@@ -198,13 +193,34 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std
     values[i] = inside[i] ? d : -d;
   }
   markFarSides(band, inside, bvh, frame);
-  s.totalMs = total.ms();
+  s.totalMs = treeMs + total.ms();
   log::verbose("band distances: " + std::to_string(bricks->activeCount()) + " bricks; hierarchy and bricks " +
                std::to_string(int(s.bvhMs)) + " ms, " + std::to_string(s.bandCells) + " exact distances " +
                std::to_string(int(s.bandMs)) + " ms, " + std::to_string(s.farCells) + " propagated " +
                std::to_string(int(s.farFieldMs)) + " ms, sign " + std::to_string(int(s.signMs)) + " ms (" +
                std::to_string(s.windingEvaluations) + " evaluations), all " + std::to_string(int(s.totalMs)) + " ms");
   return band;
+}
+
+}  // namespace
+
+BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options,
+                             SignedDistanceStats* stats)
+{
+  checkSignedDistanceArguments(mesh, frame, 1.0);
+  if (!(options.halfWidth >= 1.0) || !std::isfinite(options.halfWidth))
+    throw UsageError("the band's half width must be at least 1 voxel");
+  if (options.progress) options.progress->beginPart("hierarchy", 1.0, 0.1);
+  const Stopwatch hierarchy;
+  const TriangleBvh tree(mesh);
+  return distancesOnBricks(mesh, tree, hierarchy.ms(), frame, nullptr, options, stats);
+}
+
+BandField signedDistanceOn(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
+                           std::shared_ptr<const BrickSet> bricks, const BandDistanceOptions& options,
+                           SignedDistanceStats* stats)
+{
+  return distancesOnBricks(mesh, tree, 0.0, frame, std::move(bricks), options, stats);
 }
 
 }  // namespace lbmshape

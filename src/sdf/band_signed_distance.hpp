@@ -17,6 +17,7 @@
 #include "mesh/triangle_mesh.hpp"
 #include "sdf/grid_frame.hpp"
 #include "sdf/signed_distance.hpp"
+#include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 
@@ -41,9 +42,13 @@ BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, c
 // The two halves of it, for a band that must hold more than one surface (a
 // morph's source and target): the bricks with a cell within `reachVoxels`
 // of the mesh, and the signed distance on given bricks (every cell of them;
-// far value halfWidth + 2 + a brick's diagonal).
-std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const GridFrame& frame, double reachVoxels);
-BandField signedDistanceOn(const TriangleMesh& mesh, const GridFrame& frame, std::shared_ptr<const BrickSet> bricks,
-                           const BandDistanceOptions& options = {}, SignedDistanceStats* stats = nullptr);
+// far value halfWidth + 2 + a brick's diagonal). `tree` is the mesh's own
+// hierarchy (TriangleBvh(mesh), with winding numbers), built once by the
+// caller for both halves and whatever else it asks of the mesh.
+std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
+                                            double reachVoxels);
+BandField signedDistanceOn(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
+                           std::shared_ptr<const BrickSet> bricks, const BandDistanceOptions& options = {},
+                           SignedDistanceStats* stats = nullptr);
 
 }  // namespace lbmshape

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <parallel/algorithm>
@@ -18,23 +20,48 @@ namespace {
 // A cut grid edge, named by the grid index of its lower sample and its axis.
 using EdgeKey = uint64_t;
 
+// The same edge named within the brick whose cubes cut it: its lower sample
+// (0..8 along each axis, 8 being the next brick's first layer) and its axis.
+// Within one brick these ids are in the order of the edges' keys (z, then y,
+// then x, then the axis), so a brick's edges listed by id are sorted by key.
+using LocalEdge = uint16_t;
+constexpr int sampleSide = brickEdge + 1;
+constexpr int localEdgeCount = 3 * sampleSide * sampleSide * sampleSide;
+constexpr int sampleIndex(int x, int y, int z) { return x + sampleSide * (y + sampleSide * z); }
+
 struct BrickTriangles {
-  std::vector<std::array<EdgeKey, 3>> triangles;
-  std::vector<EdgeKey> keys;  // of their corners, sorted, each once
+  std::vector<std::array<LocalEdge, 3>> triangles;
+  std::vector<LocalEdge> edges;  // those its triangles use, each once, in order
+  std::vector<EdgeKey> keys;     // of the same edges
 };
+
+// Whether each of a brick's 9^3 samples is above the isovalue, four at a
+// time: bit 0 at (x, y, z), 1 at (x, y + 1, z), 2 at (x, y, z + 1), 3 at
+// (x, y + 1, z + 1). A cube's case is its two columns' codes interleaved.
+constexpr std::array<uint8_t, 16> spreadColumn = [] {
+  std::array<uint8_t, 16> spread{};
+  for (int c = 0; c < 16; ++c)
+    for (int bit = 0; bit < 4; ++bit) spread[size_t(c)] |= uint8_t((c >> bit & 1) << (2 * bit));
+  return spread;
+}();
 
 class BrickCubes {
 public:
   BrickCubes(const BandField& field, float iso) : field_(field), e_(field.extent()), iso_(iso) {}
 
   // +1 when every stored cell of the slot is above the isovalue, -1 when
-  // every one is at or below it, 0 when mixed.
-  int8_t sideOf(int32_t slot) const
+  // every one is at or below it, 0 when mixed; `finite` false when one is
+  // NaN or infinite. (Counts, not branches: the loop vectorizes.)
+  int8_t sideOf(int32_t slot, bool& finite) const
   {
     const float* v = field_.values().data() + size_t(slot) * brickCells;
-    bool above = false, below = false;
-    for (int l = 0; l < brickCells; ++l) (v[l] > iso_ ? above : below) = true;
-    return above && below ? 0 : above ? 1 : -1;
+    int above = 0, notFinite = 0;
+    for (int l = 0; l < brickCells; ++l) {
+      above += int(v[l] > iso_);
+      notFinite |= int(!(std::abs(v[l]) <= std::numeric_limits<float>::max()));
+    }
+    finite = notFinite == 0;
+    return above == brickCells ? 1 : above == 0 ? -1 : 0;
   }
 
   void triangulate(int32_t slot, const std::vector<int8_t>& sides, BrickTriangles& out) const
@@ -68,61 +95,85 @@ public:
 
     // The brick's cells and the layer after it, 9^3 samples, looked up once
     // each instead of once per cube corner.
-    constexpr int side = brickEdge + 1;
-    std::array<float, side * side * side> sample;
-    for (int z = 0; z < side; ++z)
-      for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
+    std::array<float, sampleSide * sampleSide * sampleSide> sample;
+    for (int z = 0; z < sampleSide; ++z)
+      for (int y = 0; y < sampleSide; ++y)
+        for (int x = 0; x < sampleSide; ++x) {
           const int k = (x >> 3) | (y >> 3) << 1 | (z >> 3) << 2;
-          sample[size_t(x + side * (y + side * z))] =
+          sample[size_t(sampleIndex(x, y, z))] =
               from[size_t(k)] ? from[size_t(k)][cellInBrick(x & 7, y & 7, z & 7)] : far[size_t(k)];
         }
+    std::array<uint8_t, sample.size()> above;
+    for (size_t i = 0; i < sample.size(); ++i) above[i] = uint8_t(sample[i] > iso_);
 
     const glm::ivec3 origin = brickEdge * b;
+    // The cubes that lie inside the grid: those whose upper corner does.
+    const glm::ivec3 end = glm::min(glm::ivec3(brickEdge), glm::ivec3(e_.nx, e_.ny, e_.nz) - 1 - origin);
     const auto& cases = cube::cubeCases();
-    std::array<float, 8> corner;
-    for (int lz = 0; lz < brickEdge; ++lz)
-      for (int ly = 0; ly < brickEdge; ++ly)
-        for (int lx = 0; lx < brickEdge; ++lx) {
-          const glm::ivec3 c = origin + glm::ivec3(lx, ly, lz);
-          if (c.x + 1 >= e_.nx || c.y + 1 >= e_.ny || c.z + 1 >= e_.nz) continue;
-          int index = 0;
-          for (int k = 0; k < 8; ++k) {
-            const int dx = k & 1, dy = k >> 1 & 1, dz = k >> 2 & 1;
-            corner[k] = sample[size_t(lx + dx + side * (ly + dy + side * (lz + dz)))];
-            index |= int(corner[k] > iso_) << k;
-          }
+    std::array<uint8_t, sampleSide> column;
+    for (int lz = 0; lz < end.z; ++lz)
+      for (int ly = 0; ly < end.y; ++ly) {
+        for (int x = 0; x <= end.x; ++x)
+          column[size_t(x)] = uint8_t(
+              above[size_t(sampleIndex(x, ly, lz))] | above[size_t(sampleIndex(x, ly + 1, lz))] << 1 |
+              above[size_t(sampleIndex(x, ly, lz + 1))] << 2 | above[size_t(sampleIndex(x, ly + 1, lz + 1))] << 3);
+        for (int lx = 0; lx < end.x; ++lx) {
+          const int index = spreadColumn[column[size_t(lx)]] | spreadColumn[column[size_t(lx + 1)]] << 1;
           if (index == 0 || index == 255) continue;
-          triangulateCube(cases[index], c, corner, out);
+          std::array<float, 8> corner;
+          for (int k = 0; k < 8; ++k)
+            corner[size_t(k)] = sample[size_t(sampleIndex(lx + (k & 1), ly + (k >> 1 & 1), lz + (k >> 2 & 1)))];
+          triangulateCube(cases[size_t(index)], glm::ivec3(lx, ly, lz), corner, out);
         }
+      }
+    listEdges(origin, out);
   }
 
 private:
-  EdgeKey keyOf(int edge, const glm::ivec3& c) const
+  static LocalEdge localEdgeOf(int edge, const glm::ivec3& cube)
   {
-    const cube::Edge& e = cube::edges()[edge];
-    const glm::ivec3 lower =
-        c + glm::ivec3(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1), cube::cornerOffset(e.lower, 2));
-    return EdgeKey(e_.index(lower.x, lower.y, lower.z)) * 3 + e.axis;
+    const cube::Edge& e = cube::edges()[size_t(edge)];
+    const glm::ivec3 lower = cube + glm::ivec3(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1),
+                                               cube::cornerOffset(e.lower, 2));
+    return LocalEdge(e.axis + 3 * sampleIndex(lower.x, lower.y, lower.z));
   }
 
   // The cube-local position of the vertex on a cube edge.
   glm::dvec3 localPoint(int edge, const std::array<float, 8>& corner) const
   {
-    const cube::Edge& e = cube::edges()[edge];
+    const cube::Edge& e = cube::edges()[size_t(edge)];
     glm::dvec3 p(cube::cornerOffset(e.lower, 0), cube::cornerOffset(e.lower, 1), cube::cornerOffset(e.lower, 2));
     p[e.axis] += edge_vertex::crossing(corner[e.lower], corner[e.upper], iso_);
     return p;
   }
 
-  void triangulateCube(const cube::CubeCase& c, const glm::ivec3& cell, const std::array<float, 8>& corner,
+  void triangulateCube(const cube::CubeCase& c, const glm::ivec3& cube, const std::array<float, 8>& corner,
                        BrickTriangles& out) const
   {
     triangulateCubeCase(
         c, [&](int edge) { return localPoint(edge, corner); },
         [&](int i, int j, int k) {
-          out.triangles.push_back({keyOf(c.edges[i], cell), keyOf(c.edges[j], cell), keyOf(c.edges[k], cell)});
+          out.triangles.push_back(
+              {localEdgeOf(c.edges[i], cube), localEdgeOf(c.edges[j], cube), localEdgeOf(c.edges[k], cube)});
         });
+  }
+
+  // The edges the brick's triangles use, in order, and their keys.
+  void listEdges(const glm::ivec3& origin, BrickTriangles& out) const
+  {
+    std::bitset<localEdgeCount> used;
+    for (const auto& t : out.triangles)
+      for (LocalEdge edge : t) used.set(edge);
+    out.edges.reserve(used.count());
+    for (int edge = int(used._Find_first()); edge < localEdgeCount; edge = int(used._Find_next(size_t(edge))))
+      out.edges.push_back(LocalEdge(edge));
+    out.keys.reserve(out.edges.size());
+    for (LocalEdge edge : out.edges) {
+      const int sample = edge / 3;
+      const glm::ivec3 lower = origin + glm::ivec3(sample % sampleSide, sample / sampleSide % sampleSide,
+                                                   sample / (sampleSide * sampleSide));
+      out.keys.push_back(EdgeKey(e_.index(lower.x, lower.y, lower.z)) * 3 + EdgeKey(edge % 3));
+    }
   }
 
   const BandField& field_;
@@ -138,16 +189,20 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
     throw std::invalid_argument("the field is " + field.extent().toString() + " but its frame is " +
                                 frame.extent.toString());
   if (!std::isfinite(isovalue)) throw UsageError("the iso value must be a finite number");
-  for (float v : field.values())
-    if (!std::isfinite(v)) throw NumericalError("the field holds a value that is not a finite number");
 
   const BrickSet& bricks = field.bricks();
   const size_t slots = bricks.activeCount();
   std::vector<BrickTriangles> perBrick(slots);
   const BrickCubes cubes(field, isovalue);
   std::vector<int8_t> sides(slots);
-#pragma omp parallel for schedule(static)
-  for (size_t s = 0; s < slots; ++s) sides[s] = cubes.sideOf(int32_t(s));
+  bool allFinite = true;
+#pragma omp parallel for schedule(static) reduction(&& : allFinite)
+  for (size_t s = 0; s < slots; ++s) {
+    bool finite = true;
+    sides[s] = cubes.sideOf(int32_t(s), finite);
+    allFinite = allFinite && finite;
+  }
+  if (!allFinite) throw NumericalError("the field holds a value that is not a finite number");
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), sides, perBrick[s]);
 
@@ -157,19 +212,11 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
   const size_t triangleCount = firstTriangle[slots];
 
   // One vertex per cut edge: the edges' keys, sorted, number the vertices.
-  // Each brick first sorts its own (most of its triangles' corners are
-  // shared within it), so the sort over the whole surface and the look-ups
-  // into it see each edge about once rather than six times. (All on the
-  // threads: at --res 512 the sort and the look-ups took 320 of the 575 ms
-  // when they ran on one.)
+  // Each brick lists its own edges in key order (BrickCubes::listEdges), so
+  // the sort over the whole surface sees each edge about once rather than
+  // six times, and a triangle finds its corners' vertices by their ids in
+  // the brick, not by searching.
   std::vector<size_t> firstKey(slots + 1, 0);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (size_t s = 0; s < slots; ++s) {
-    std::vector<EdgeKey>& own = perBrick[s].keys;
-    for (const auto& t : perBrick[s].triangles) own.insert(own.end(), t.begin(), t.end());
-    std::sort(own.begin(), own.end());
-    own.erase(std::unique(own.begin(), own.end()), own.end());
-  }
   for (size_t s = 0; s < slots; ++s) firstKey[s + 1] = firstKey[s] + perBrick[s].keys.size();
   std::vector<EdgeKey> keys(firstKey[slots]);
 #pragma omp parallel for schedule(dynamic, 16)
@@ -182,18 +229,21 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
 
   TriangleMesh mesh;
   mesh.triangles.resize(triangleCount);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (size_t s = 0; s < slots; ++s) {
-    const std::vector<EdgeKey>& own = perBrick[s].keys;
-    std::vector<uint32_t> vertexOfOwn(own.size());
-    for (size_t j = 0; j < own.size(); ++j)
-      vertexOfOwn[j] = uint32_t(std::lower_bound(keys.begin(), keys.end(), own[j]) - keys.begin());
-    auto vertexOf = [&](EdgeKey key) {
-      return vertexOfOwn[size_t(std::lower_bound(own.begin(), own.end(), key) - own.begin())];
-    };
-    for (size_t k = 0; k < perBrick[s].triangles.size(); ++k) {
-      const auto& t = perBrick[s].triangles[k];
-      mesh.triangles[firstTriangle[s] + k] = glm::uvec3(vertexOf(t[0]), vertexOf(t[1]), vertexOf(t[2]));
+#pragma omp parallel
+  {
+    std::array<uint32_t, localEdgeCount> vertexOfEdge;  // read only where the brick's edges set it
+#pragma omp for schedule(dynamic, 16)
+    for (size_t s = 0; s < slots; ++s) {
+      const BrickTriangles& brick = perBrick[s];
+      auto from = keys.begin();
+      for (size_t j = 0; j < brick.edges.size(); ++j) {
+        from = std::lower_bound(from, keys.end(), brick.keys[j]);  // the brick's keys ascend
+        vertexOfEdge[brick.edges[j]] = uint32_t(from - keys.begin());
+      }
+      for (size_t k = 0; k < brick.triangles.size(); ++k) {
+        const auto& t = brick.triangles[k];
+        mesh.triangles[firstTriangle[s] + k] = glm::uvec3(vertexOfEdge[t[0]], vertexOfEdge[t[1]], vertexOfEdge[t[2]]);
+      }
     }
   }
 

@@ -4,6 +4,7 @@ lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/compressed_gltf_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reading_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_validation_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_writing_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_made_gltf.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_fixtures.cpp
   ${CMAKE_CURRENT_LIST_DIR}/noise_test.cpp

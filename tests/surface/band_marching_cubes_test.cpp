@@ -1,6 +1,7 @@
 // Marching cubes on the narrow band gives the grid's mesh: the same
 // vertices (position and normal) and the same triangles, in another order.
 #include <algorithm>
+#include <limits>
 #include <map>
 
 #include <omp.h>
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/mesh_topology.hpp"
+#include "core/error.hpp"
 #include "surface/band_marching_cubes.hpp"
 #include "surface/marching_cubes.hpp"
 #include "support/band_fields.hpp"
@@ -71,6 +73,23 @@ TEST(BandMarchingCubes, DoesNotDependOnTheThreads)
   omp_set_num_threads(omp_get_num_procs());
   EXPECT_EQ(many.positions, one.positions);
   EXPECT_EQ(many.triangles, one.triangles);
+}
+
+TEST(BandMarchingCubes, RefusesASampleThatIsNotAFiniteNumber)
+{
+  const GridFrame frame = testing::cubicFrame({20, 20, 20}, 1.0);
+  const Volume field = testing::sampleImplicit(frame, [](const glm::dvec3& p) {
+    return testing::sphereSdf(p, {9.6, 10.2, 9.9}, 6.3);
+  });
+  const BandField band = testing::bandOf(field, testing::bricksNear(field, 2.0));
+  ASSERT_NO_THROW(extractSurface(band, frame));
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()})
+    for (const size_t at : {size_t(0), band.values().size() / 2, band.values().size() - 1}) {
+      BandField broken = band;
+      broken.values()[at] = bad;
+      EXPECT_THROW(extractSurface(broken, frame), NumericalError) << bad << " at " << at;
+    }
 }
 
 }  // namespace

@@ -1,0 +1,104 @@
+// How lbmshape writes glTF: the GLB container written as it goes is the one
+// made in memory, a model written to a file is given back whole, and an
+// animation made frame by frame checks its frames as the whole-file call
+// does.
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "mesh/glb_container.hpp"
+#include "mesh/gltf_animation.hpp"
+#include "mesh/gltf_builder.hpp"
+#include "mesh/mesh_fixtures.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+std::string fileBytes(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(GlbContainer, WrittenAsItGoesIsTheFileMadeInMemory)
+{
+  for (const size_t binaryBytes : {0, 1, 3, 4, 6, 1000}) {
+    for (const std::string json : {"{}", "{\"asset\":{\"version\":\"2.0\"}}"}) {
+      std::string binary(binaryBytes, '\0');
+      for (size_t i = 0; i < binaryBytes; ++i) binary[i] = char(i * 7 + 1);
+      std::ostringstream streamed;
+      writeGlb(streamed, json, binary);
+      const std::string made = glbFile(json, binary);
+      EXPECT_EQ(streamed.str(), made) << binaryBytes << " binary bytes";
+      EXPECT_EQ(made.size() % 4, 0u);
+      EXPECT_EQ(glbWord(made, 8), made.size()) << "the header's length";
+      EXPECT_EQ(glbChunks(made).binary.substr(0, binaryBytes), binary);
+    }
+  }
+}
+
+TEST(SaveGltf, GivesTheModelBackWhole)
+{
+  GltfBuilder builder;
+  builder.addNode(builder.addMesh(testing::icosphere(2), "sphere"), "sphere");
+  const std::vector<unsigned char> before = builder.model().buffers.at(0).data;
+  ASSERT_FALSE(before.empty());
+  testing::ScratchFolder folder;
+  for (const char* name : {"first.glb", "second.glb"}) {
+    AtomicFile file(folder / name);
+    saveGltf(builder.model(), MeshFormat::Glb, file);
+    file.commit();
+  }
+  EXPECT_EQ(builder.model().buffers.at(0).data, before) << "the buffer lent to the writer came back";
+  EXPECT_EQ(fileBytes(folder / "first.glb"), fileBytes(folder / "second.glb"));
+  const std::string glb = fileBytes(folder / "first.glb");
+  const GlbChunks chunks = glbChunks(glb);
+  EXPECT_EQ(chunks.binary.substr(0, before.size()),
+            std::string_view(reinterpret_cast<const char*>(before.data()), before.size()));
+  EXPECT_NE(chunks.json.find("\"byteLength\":" + std::to_string(before.size())), std::string_view::npos) << chunks.json;
+}
+
+TEST(GltfAnimationFrameByFrame, IsTheFileOfAllFramesAtOnce)
+{
+  testing::ScratchFolder folder;
+  const std::vector<TriangleMesh> frames = {testing::icosphere(1), TriangleMesh{}, testing::icosphere(2, 1.5)};
+  writeGltfAnimation(frames, 12.0, folder / "at_once.glb");
+  GltfAnimation animation(folder / "by_frame.glb", frames.size(), 12.0);
+  for (const TriangleMesh& frame : frames) animation.add(frame);
+  EXPECT_FALSE(std::filesystem::exists(folder / "by_frame.glb")) << "nothing is written before write()";
+  animation.write();
+  // The file's name is not in it: the two compare byte for byte.
+  EXPECT_EQ(fileBytes(folder / "by_frame.glb"), fileBytes(folder / "at_once.glb"));
+}
+
+TEST(GltfAnimationFrameByFrame, RefusesTooFewOrTooManyFramesAndBadOnes)
+{
+  testing::ScratchFolder folder;
+  GltfAnimation animation(folder / "morph.glb", 2, 24.0);
+  animation.add(testing::icosphere(1));
+  EXPECT_THROW(animation.write(), std::logic_error) << "one frame of two";
+  EXPECT_FALSE(std::filesystem::exists(folder / "morph.glb"));
+  TriangleMesh broken = testing::icosphere(1);
+  broken.triangles.front().x = uint32_t(broken.positions.size());  // past the vertices
+  try {
+    animation.add(broken);
+    FAIL() << "a frame with a triangle past its vertices was taken";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 1"), std::string::npos) << e.what();
+  }
+  animation.add(testing::icosphere(1));
+  EXPECT_THROW(animation.add(testing::icosphere(1)), std::logic_error) << "a third frame of two";
+  animation.write();
+  EXPECT_TRUE(std::filesystem::exists(folder / "morph.glb"));
+  EXPECT_THROW(GltfAnimation(folder / "m.obj", 2, 24.0), UsageError);
+  EXPECT_THROW(GltfAnimation(folder / "m.glb", 0, 24.0), UsageError);
+  EXPECT_THROW(GltfAnimation(folder / "m.glb", 2, 0.0), UsageError);
+}
+
+}  // namespace
+}  // namespace lbmshape

@@ -1,7 +1,8 @@
-// The morph keeps every frame's mesh in memory for morph.glb, which is written
-// after the last frame: at a fine grid and many frames that is more than the
-// lattice. This estimates it from the shapes before any work, and refuses a
-// morph whose animation cannot fit, saying how many frames would.
+// morph.glb holds every frame: the morph assembles its glTF buffers frame by
+// frame and writes them after the last one, which at a fine grid and many
+// frames is more than the lattice. This estimates it from the shapes before
+// any work, and refuses a morph whose animation cannot fit, saying how many
+// frames would.
 #pragma once
 
 #include <cstdint>
@@ -14,11 +15,13 @@ namespace lbmshape {
 // of its area (tests/pipeline/animation_memory_test.cpp measures it on a
 // sphere and a torus).
 inline constexpr double trianglesPerVoxelArea = 3.0;
-// Per triangle of every frame: the mesh kept (positions, triangles) and the
-// glTF buffers built from it (positions, normals, indices); measured as the
-// peak RSS of a morph with the animation less that of one without, over the
-// triangles of all its frames (docs/morphing.md).
-inline constexpr double animationBytesPerTriangle = 60.0;  // 57 measured at --res 128, 48 frames
+// Per triangle of every frame: the glTF buffers (positions, normals,
+// indices: about 24 B), in one array that grows by doubling, so up to three
+// times that while it moves; measured as the peak RSS of a morph with the
+// animation less that of one without, over the triangles of all its frames
+// (docs/morphing.md): 33 B at --res 128, 48 frames (57 B when every frame's
+// mesh was kept as well, before the animation was assembled alongside).
+inline constexpr double animationBytesPerTriangle = 60.0;
 
 // Host bytes of an animation of `frames` frames of a surface of
 // `areaInVoxels` (voxel side = 1): the frames' meshes and morph.glb's

@@ -1,11 +1,13 @@
 #include "mesh/gltf_animation.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "mesh/glb_stream.hpp"
 #include "mesh/gltf_builder.hpp"
 #include "mesh/mesh_format.hpp"
 #include "mesh/writable_mesh.hpp"
@@ -37,10 +39,19 @@ ScaleKeys scaleKeys(size_t frame, size_t frames, double fps)
 
 }  // namespace
 
+// Room for the JSON of a streamed animation: half again the 1,072 bytes a
+// frame that a 48-frame morph's took (GlbStream writes the file again in the
+// rare case it is longer).
+constexpr size_t jsonRoomPerFrame = 1600, jsonRoomBase = 4096;
+
 struct GltfAnimation::Model {
   explicit Model(GltfCompression compression) : builder(compression) { animation.name = "morph"; }
   GltfBuilder builder;
   tinygltf::Animation animation;
+  // A plain .glb is streamed: each frame's buffer goes to the file as it
+  // comes, and the animation holds no frame. A compressed one, or a .gltf
+  // (its buffer a data URI), is assembled in memory and written at the end.
+  std::optional<GlbStream> stream;
 };
 
 GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, double fps, GltfCompression compression)
@@ -59,6 +70,8 @@ GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, doub
     throw UsageError(prefix + std::to_string(frameCount) + " frames at " + std::to_string(fps) +
                      " per second are too many to time in single precision");
   model_ = std::make_unique<Model>(compression);
+  if (format == MeshFormat::Glb && compression == GltfCompression::None)
+    model_->stream.emplace(path_, jsonRoomBase + jsonRoomPerFrame * frameCount);
 }
 
 GltfAnimation::~GltfAnimation() = default;
@@ -87,6 +100,7 @@ void GltfAnimation::add(const TriangleMesh& frame)
   channel.target_node = node;
   channel.target_path = "scale";
   animation.channels.push_back(channel);
+  if (model_->stream) model_->stream->append(builder.takeBufferData());
   ++added_;
 }
 
@@ -95,11 +109,15 @@ void GltfAnimation::write()
   if (added_ != frameCount_)
     throw std::logic_error("the animation has " + std::to_string(added_) + " of its " + std::to_string(frameCount_) +
                            " frames");
-  AtomicFile file(path_);
   tinygltf::Model& model = model_->builder.model();
   model.animations.assign(1, model_->animation);
-  saveGltf(model, *meshFormatOf(path_), file);
-  file.commit();
+  if (model_->stream) {
+    model_->stream->finish(plainGlbJson(model, model_->builder.bufferBytes()));
+  } else {
+    AtomicFile file(path_);
+    saveGltf(model, *meshFormatOf(path_), file);
+    file.commit();
+  }
   log::verbose("wrote " + path_.string() + ": " + std::to_string(frameCount_) + " frames, " +
                std::to_string(double(frameCount_) / fps_) + " s");
 }

@@ -25,10 +25,13 @@ void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, con
                         GltfCompression compression = GltfCompression::None);
 
 // The same file made frame by frame, as a morph's frames come (on its frame
-// writer's thread, while the lattice computes the next ones), so that only
-// the writing is left when the last frame is in. The same checks and errors
-// as writeGltfAnimation(): the arguments' in the constructor, a frame's in
-// add(), a frame missing in write().
+// writer's thread, while the lattice computes the next ones). A plain .glb
+// is streamed (GlbStream): each frame's arrays go to the file as they come
+// and none stays in memory; only the JSON is left to write when the last
+// frame is in. A compressed .glb or a .gltf is assembled in memory. The same
+// checks and errors as writeGltfAnimation(): the arguments' in the
+// constructor (which also makes the temporary file, so an unwritable folder
+// is reported at once), a frame's in add(), a frame missing in write().
 class GltfAnimation {
 public:
   GltfAnimation(std::filesystem::path path, size_t frameCount, double fps,

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -88,10 +89,10 @@ int GltfBuilder::addEncodedView(const std::vector<unsigned char>& encoded, size_
                                 const char* mode, int target)
 {
   auto& buffer = model_.buffers[0].data;
-  buffer.resize((buffer.size() + 3) / 4 * 4, 0);
+  buffer.resize(buffer.size() + (4 - bufferBytes() % 4) % 4, 0);
   tinygltf::Value::Object meshopt;
   meshopt["buffer"] = tinygltf::Value(0);
-  meshopt["byteOffset"] = integer(buffer.size());
+  meshopt["byteOffset"] = integer(bufferBytes());
   meshopt["byteLength"] = integer(encoded.size());
   meshopt["byteStride"] = tinygltf::Value(int(stride));
   meshopt["mode"] = tinygltf::Value(std::string(mode));
@@ -164,16 +165,26 @@ int GltfBuilder::addAccessor(const tinygltf::Accessor& accessor)
 int GltfBuilder::addBufferView(const void* data, size_t bytes, int target)
 {
   auto& buffer = model_.buffers[0].data;
-  buffer.resize((buffer.size() + 3) / 4 * 4, 0);  // every component here is 4 bytes and must be aligned to them
+  // Every component here is 4 bytes and must be aligned to them, in the
+  // whole buffer.
+  buffer.resize(buffer.size() + (4 - bufferBytes() % 4) % 4, 0);
   tinygltf::BufferView view;
   view.buffer = 0;
-  view.byteOffset = buffer.size();
+  view.byteOffset = bufferBytes();
   view.byteLength = bytes;
   view.target = target;
   const auto* bytesIn = static_cast<const unsigned char*>(data);
   buffer.insert(buffer.end(), bytesIn, bytesIn + bytes);
   model_.bufferViews.push_back(view);
   return int(model_.bufferViews.size() - 1);
+}
+
+std::vector<unsigned char> GltfBuilder::takeBufferData()
+{
+  std::vector<unsigned char> data;
+  data.swap(model_.buffers[0].data);
+  taken_ += data.size();
+  return data;
 }
 
 int GltfBuilder::addFloatAccessor(const std::vector<float>& values, int type, bool withBounds, int target)
@@ -311,8 +322,7 @@ size_t decodedLength(const tinygltf::Model& model)
 
 // A plain .glb written without tinygltf's copy of the buffer (it copies the
 // whole buffer before writing it: 171 MB for a 48-frame morph at 256^3,
-// most of the 0.41 s that writing its animation took): the JSON comes from
-// the model with an empty buffer, its length put right afterwards.
+// most of the 0.41 s that writing its animation took).
 bool writePlainGlb(tinygltf::Model& model, std::ostream& out)
 {
   struct LentBuffer {
@@ -321,16 +331,35 @@ bool writePlainGlb(tinygltf::Model& model, std::ostream& out)
     ~LentBuffer() { owner = std::move(data); }
   } lent{model.buffers[0].data};
   model.buffers[0].data.clear();
-  std::ostringstream withoutData;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, withoutData, false, true)) return false;
-  nlohmann::json json = nlohmann::json::parse(glbChunks(withoutData.str()).json);
-  json.at("buffers").at(0)["byteLength"] = lent.data.size();
-  writeGlb(out, json.dump(), std::string_view(reinterpret_cast<const char*>(lent.data.data()), lent.data.size()));
+  writeGlb(out, plainGlbJson(model, lent.data.size()),
+           std::string_view(reinterpret_cast<const char*>(lent.data.data()), lent.data.size()));
   return bool(out);
 }
 
 }  // namespace
+
+std::string plainGlbJson(const tinygltf::Model& model, size_t bufferBytes)
+{
+  if (model.buffers.size() != 1 || !model.buffers[0].data.empty())
+    throw std::logic_error("plainGlbJson() is for an uncompressed model whose buffer is elsewhere");
+  tinygltf::TinyGLTF writer;
+  std::ostringstream glb;
+  bool ok = false;
+  if (bufferBytes == 0) {
+    // No data at all: no buffer either (glTF forbids empty ones).
+    tinygltf::Model withoutBuffer = model;  // cheap: it holds no data
+    withoutBuffer.buffers.clear();
+    ok = writer.WriteGltfSceneToStream(&withoutBuffer, glb, false, true);
+  } else {
+    ok = writer.WriteGltfSceneToStream(&model, glb, false, true);
+  }
+  if (!ok) throw std::runtime_error("tinygltf could not serialize the model");
+  if (bufferBytes == 0) return std::string(glbChunks(glb.str()).json);
+  // tinygltf gave the buffer the length of the data it holds (none).
+  nlohmann::json json = nlohmann::json::parse(glbChunks(glb.str()).json);
+  json.at("buffers").at(0)["byteLength"] = bufferBytes;
+  return json.dump();
+}
 
 void saveGltf(tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
 {

@@ -41,6 +41,14 @@ public:
 
   tinygltf::Model& model() { return model_; }
 
+  // The bytes added to the buffer since the last call, handed over: a
+  // writer that streams the buffer to its file as it grows (GltfAnimation).
+  // The views keep their offsets in the whole buffer; the model then holds
+  // only what was added since, so saveGltf() cannot write it.
+  std::vector<unsigned char> takeBufferData();
+  // The whole buffer's length, taken bytes included.
+  size_t bufferBytes() const { return taken_ + model_.buffers[0].data.size(); }
+
 private:
   int addBufferView(const void* data, size_t bytes, int target);
   int addAccessor(const tinygltf::Accessor& accessor);
@@ -54,6 +62,7 @@ private:
   tinygltf::Model model_;
   GltfCompression compression_;
   size_t decodedBytes_ = 0;                                      // of the fallback buffer
+  size_t taken_ = 0;                                             // bytes of buffer 0 handed over (takeBufferData)
   std::map<int, std::pair<glm::dvec3, double>> dequantization_;  // translation and scale, by mesh
 };
 
@@ -64,5 +73,11 @@ private:
 // file.target(). The model is only borrowed: a .glb's buffer is written from
 // where it lies, moved out of the model meanwhile and back before return.
 void saveGltf(tinygltf::Model& model, MeshFormat format, const AtomicFile& file);
+
+// The JSON chunk of a .glb whose binary chunk holds the model's buffer of
+// `bufferBytes` bytes, when the model itself holds none of them (its buffer
+// streamed to the file as it grew: GltfAnimation); with 0 bytes, a file
+// without a buffer. Uncompressed models only (std::logic_error otherwise).
+std::string plainGlbJson(const tinygltf::Model& model, size_t bufferBytes);
 
 }  // namespace lbmshape

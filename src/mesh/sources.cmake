@@ -1,5 +1,6 @@
 target_sources(lbmshape_mesh PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/glb_container.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/glb_stream.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_builder.cpp

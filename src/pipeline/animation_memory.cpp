@@ -22,18 +22,22 @@ double animationBytes(double areaInVoxels, int frames)
   return areaMargin * areaInVoxels * trianglesPerVoxelArea * animationBytesPerTriangle * double(frames);
 }
 
-void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames)
+void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames,
+                        FramesHeldBy heldBy)
 {
   const double area = std::max(surfaceArea(source), surfaceArea(target)) / (voxel * voxel);
   const double needed = animationBytes(area, frames);
   const double allowed = double(hostMemoryBytes());
   if (needed <= allowed) return;
   const int fit = int(std::floor(allowed / animationBytes(area, 1) * 0.95));
-  throw DeviceError("the " + std::to_string(frames) + " frames of morph.glb need about " + mebibytes(uint64_t(needed)) +
-                    " but this machine allows " + mebibytes(uint64_t(allowed)) + "; " +
-                    (fit >= 2 ? "about " + std::to_string(fit) + " frames would fit" : "not even 2 frames would fit") +
-                    ", or give " + nameOf(Parameter::Animation) +
-                    " (the frame files alone need no more memory than one frame)");
+  const bool preview = heldBy == FramesHeldBy::Preview;
+  throw DeviceError(
+      "the " + std::to_string(frames) + " frames of " + (preview ? "the preview" : "a compressed morph.glb") +
+      " need about " + mebibytes(uint64_t(needed)) + " but this machine allows " + mebibytes(uint64_t(allowed)) + "; " +
+      (fit >= 2 ? "about " + std::to_string(fit) + " frames would fit" : "not even 2 frames would fit") +
+      (preview ? ", or leave out " + nameOf(Parameter::Preview)
+               : ", or leave out " + nameOf(Parameter::Compression) +
+                     " (a plain morph.glb is written as the frames come) or give " + nameOf(Parameter::Animation)));
 }
 
 }  // namespace lbmshape

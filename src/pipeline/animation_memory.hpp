@@ -1,8 +1,8 @@
-// morph.glb holds every frame: the morph assembles its glTF buffers frame by
-// frame and writes them after the last one, which at a fine grid and many
-// frames is more than the lattice. This estimates it from the shapes before
-// any work, and refuses a morph whose animation cannot fit, saying how many
-// frames would.
+// A morph's preview, and a compressed morph.glb, hold every frame until the
+// last one is done, which at a fine grid and many frames is more than the
+// lattice (a plain morph.glb is streamed to its file and holds none). This
+// estimates it from the shapes before any work, and refuses a morph whose
+// frames cannot fit, saying how many would.
 #pragma once
 
 #include <cstdint>
@@ -28,10 +28,17 @@ inline constexpr double animationBytesPerTriangle = 60.0;
 // buffers while it is assembled.
 double animationBytes(double areaInVoxels, int frames);
 
+// What holds every frame's mesh or arrays in memory until the end: the
+// preview's pictures, or a compressed morph.glb (a plain one is streamed to
+// its file as the frames come).
+enum class FramesHeldBy { Preview, CompressedAnimation };
+
 // Throws DeviceError (exit 5) when animationBytes for the larger of the two
 // shapes' areas, at this voxel size, exceeds what the host allows: "the N
-// frames of morph.glb need about X MiB but this machine allows Y MiB; about
-// K frames would fit, or give --no-animation".
-void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames);
+// frames of the preview (of a compressed morph.glb) need about X MiB but
+// this machine allows Y MiB; about K frames would fit, or leave out
+// --preview (--compress ...)".
+void checkAnimationFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames,
+                        FramesHeldBy heldBy);
 
 }  // namespace lbmshape

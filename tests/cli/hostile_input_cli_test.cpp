@@ -148,15 +148,30 @@ TEST(MemoryPressure, AnAnimationThatCannotFitIsRefusedBeforeAnyWorkSayingWhatWou
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::box({-0.8, -0.8, -0.8}, {0.8, 0.8, 0.8}), folder / "b.obj");
   // 100,000 frames of a sphere 90 voxels across: hundreds of GB of meshes.
-  const auto result =
-      testing::runLbmshapeWithin(1000, {"morph", (folder / "a.obj").string(), (folder / "b.obj").string(),
-                                        (folder / "frames").string(), "--res", "96", "--frames", "100000"});
-  EXPECT_EQ(result.exitCode, 5) << result.err;
-  const auto lines = testing::messageLines(result.err);
-  ASSERT_EQ(lines.size(), 1u) << result.err;
-  EXPECT_NE(lines[0].find("the 100000 frames of morph.glb need about"), std::string::npos) << lines[0];
-  EXPECT_NE(lines[0].find("frames would fit, or give --no-animation"), std::string::npos) << lines[0];
-  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"a.obj", "b.obj"})) << "nothing written";
+  // A plain morph.glb is streamed to its file; a compressed one, and the
+  // preview's frames, are held in memory.
+  for (const std::string heldInMemory : {"--compress", "--preview"}) {
+    std::vector<std::string> args = {"morph",
+                                     (folder / "a.obj").string(),
+                                     (folder / "b.obj").string(),
+                                     (folder / "frames").string(),
+                                     "--res",
+                                     "96",
+                                     "--frames",
+                                     "100000",
+                                     heldInMemory};
+    if (heldInMemory == "--preview") args.push_back((folder / "sheet.png").string());
+    const auto result = testing::runLbmshapeWithin(1000, args);
+    EXPECT_EQ(result.exitCode, 5) << heldInMemory << "\n" << result.err;
+    const auto lines = testing::messageLines(result.err);
+    ASSERT_EQ(lines.size(), 1u) << result.err;
+    EXPECT_NE(lines[0].find(std::string("the 100000 frames of ") +
+                            (heldInMemory == "--preview" ? "the preview" : "a compressed morph.glb") + " need about"),
+              std::string::npos)
+        << lines[0];
+    EXPECT_NE(lines[0].find("frames would fit, or leave out " + heldInMemory), std::string::npos) << lines[0];
+    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"a.obj", "b.obj"})) << "nothing written";
+  }
 }
 
 TEST(StandardOutput, ResultsThatCannotBeWrittenAreAnOutputError)

@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "mesh/glb_container.hpp"
+#include "mesh/glb_stream.hpp"
 #include "mesh/gltf_animation.hpp"
 #include "mesh/gltf_builder.hpp"
 #include "mesh/mesh_fixtures.hpp"
@@ -40,6 +41,62 @@ TEST(GlbContainer, WrittenAsItGoesIsTheFileMadeInMemory)
       EXPECT_EQ(glbChunks(made).binary.substr(0, binaryBytes), binary);
     }
   }
+}
+
+std::vector<unsigned char> someBytes(size_t count, int seed)
+{
+  std::vector<unsigned char> bytes(count);
+  for (size_t i = 0; i < count; ++i) bytes[i] = static_cast<unsigned char>(i * 13 + size_t(seed));
+  return bytes;
+}
+
+TEST(GlbStream, LeavesRoomForTheJsonAndFillsItLast)
+{
+  testing::ScratchFolder folder;
+  const std::string json = "{\"asset\":{\"version\":\"2.0\"}}";
+  GlbStream stream(folder / "s.glb", 100);
+  const auto first = someBytes(7, 1), second = someBytes(30, 2);
+  stream.append(first);
+  stream.append(second);
+  EXPECT_EQ(stream.binaryBytes(), 37u);
+  EXPECT_FALSE(std::filesystem::exists(folder / "s.glb")) << "nothing under the name before finish()";
+  stream.finish(json);
+  const std::string glb = fileBytes(folder / "s.glb");
+  EXPECT_EQ(glbWord(glb, 8), glb.size());
+  EXPECT_EQ(glb.size() % 4, 0u);
+  const GlbChunks chunks = glbChunks(glb);
+  EXPECT_EQ(chunks.json.size(), 100u) << "the room, padded with spaces";
+  EXPECT_EQ(chunks.json.substr(0, json.size()), json);
+  EXPECT_EQ(chunks.json.find_first_not_of(' ', json.size()), std::string_view::npos);
+  std::string binary(first.begin(), first.end());
+  binary.append(second.begin(), second.end());
+  EXPECT_EQ(chunks.binary.size(), 40u) << "37 bytes padded to 4";
+  EXPECT_EQ(chunks.binary.substr(0, 37), binary);
+  EXPECT_EQ(chunks.binary.substr(37), std::string(3, '\0'));
+}
+
+TEST(GlbStream, AJsonLongerThanItsRoomWritesTheFileAgain)
+{
+  testing::ScratchFolder folder;
+  const std::string json = "{\"asset\":{\"version\":\"2.0\",\"generator\":\"a generator with a long name\"}}";
+  GlbStream stream(folder / "s.glb", 8);
+  const auto bytes = someBytes(1001, 3);
+  stream.append(bytes);
+  stream.finish(json);
+  EXPECT_EQ(fileBytes(folder / "s.glb"), glbFile(json, std::string(bytes.begin(), bytes.end())));
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+    EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary file was left: " << entry.path();
+}
+
+TEST(GlbStream, WithoutBytesHasNoBinaryChunk)
+{
+  testing::ScratchFolder folder;
+  GlbStream stream(folder / "s.glb", 64);
+  stream.finish("{}");
+  const std::string glb = fileBytes(folder / "s.glb");
+  EXPECT_EQ(glb.size(), 12u + 8u + 64u);
+  EXPECT_EQ(glbWord(glb, 8), glb.size());
+  EXPECT_TRUE(glbChunks(glb).binary.empty());
 }
 
 TEST(SaveGltf, GivesTheModelBackWhole)

@@ -19,11 +19,19 @@ GpuBuffer::GpuBuffer(GpuContext& context, vk::DeviceSize bytes, vk::BufferUsageF
     required = Flag::eHostVisible | Flag::eHostCoherent;
     preferred = Flag::eHostCached;
     break;
+  case MemoryUse::DeviceReadByHost: preferred = Flag::eDeviceLocal; break;
   }
+  const vk::MemoryPropertyFlags direct =
+      Flag::eDeviceLocal | Flag::eHostVisible | Flag::eHostCoherent | Flag::eHostCached;
   uint32_t type = context.memoryType(requirements.memoryTypeBits, required, preferred);
+  bool map = use == MemoryUse::Upload || use == MemoryUse::Readback;
+  if (use == MemoryUse::DeviceReadByHost) {
+    const uint32_t readable = context.memoryType(requirements.memoryTypeBits, {}, direct);
+    if ((context.memoryFlags(readable) & direct) == direct) type = readable, map = true;
+  }
   memory_ = vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo(requirements.size, type));
   buffer_.bindMemory(*memory_, 0);
-  if (use != MemoryUse::Device) mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
+  if (map) mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
 }
 
 }  // namespace lbmshape::gpu

@@ -51,6 +51,7 @@ public:
   // preferring one that also has the `preferred` ones.
   uint32_t memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required,
                       vk::MemoryPropertyFlags preferred = {}) const;
+  vk::MemoryPropertyFlags memoryFlags(uint32_t type) const { return memoryProperties_.memoryTypes[type].propertyFlags; }
 
   // The compiled program for this shader and specialization, built once.
   ComputeProgram& program(const ProgramSpec& spec);

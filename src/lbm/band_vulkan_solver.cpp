@@ -308,6 +308,18 @@ struct BandVulkanSolver::Resources {
   void downloadUnits(const GpuBuffer& source, uint64_t units, uint64_t unitBytes, uint64_t sourceStride, void* data,
                      Before before)
   {
+    if (source.mapped() && sourceStride == unitBytes) {  // readable where it lies: no staging copy
+      context.runAndWait([&](vk::CommandBuffer cmd) {
+        before(cmd);
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer,
+                            vk::PipelineStageFlagBits::eHost, {},
+                            vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eTransferWrite,
+                                              vk::AccessFlagBits::eHostRead),
+                            {}, {});
+      });
+      parallelCopy(static_cast<std::byte*>(data), source.mapped(), units * unitBytes);
+      return;
+    }
     const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unitBytes);
     std::vector<vk::BufferCopy> regions;
     for (uint64_t first = 0; first < units; first += unitsPerChunk) {
@@ -348,7 +360,10 @@ struct BandVulkanSolver::Resources {
   void fullFieldBuffer()
   {
     if (field.bytes() == 4 * cells) return;
-    field = GpuBuffer(context, 4 * cells, storage, MemoryUse::Device);
+    // Read back at every frame of a morph: on lavapipe straight from where
+    // the device wrote it (a 44 MB copy into the staging buffer and one out
+    // of it, each frame, at 256^3, became the second alone).
+    field = GpuBuffer(context, 4 * cells, storage, MemoryUse::DeviceReadByHost);
     writeDescriptors();
   }
 

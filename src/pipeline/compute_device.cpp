@@ -1,5 +1,7 @@
 #include "pipeline/compute_device.hpp"
 
+#include <system_error>
+
 #include "core/error.hpp"
 #include "core/host_memory.hpp"
 #include "gpu/gpu_context.hpp"
@@ -50,15 +52,20 @@ void ComputeDevice::warmUpForTheBand() const
   } catch (...) {
     return;  // the first real use meets the same failure
   }
-  warmUp_ = std::async(std::launch::async, [this] {
-    // A band of one brick: its solver compiles the band's pipeline and runs
-    // it once (lavapipe turns it into machine code then), for the GpuContext
-    // to keep.
-    const gpu::TraceLabel label("warm-up: the band's pipelines");
-    auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
-    brick->activate(0, 0, 0);
-    BandVulkanSolver warm(openContext(), std::move(brick));
-  });
+  try {
+    warmUp_ = std::async(std::launch::async, [this] {
+      // A band of one brick: its solver compiles the band's pipeline and runs
+      // it once (lavapipe turns it into machine code then), for the GpuContext
+      // to keep.
+      const gpu::TraceLabel label("warm-up: the band's pipelines");
+      auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
+      brick->activate(0, 0, 0);
+      BandVulkanSolver warm(openContext(), std::move(brick));
+    });
+  } catch (const std::system_error&) {
+    // No thread to spare (an address-space limit leaves no room for its
+    // stack): the device opens when first used, as without the warm-up.
+  }
 }
 
 const gpu::DeviceDescription& ComputeDevice::description() const

@@ -24,12 +24,7 @@ GlbChunks glbChunks(std::string_view glb)
   return chunks;
 }
 
-namespace {
-
-// Everything of the file before the binary chunk's bytes: the header, the
-// JSON chunk (padded with spaces) and the binary chunk's own header when it
-// has bytes; the binary chunk is then padded with zeros to a multiple of 4.
-std::string glbUpToBinary(std::string json, size_t binaryBytes)
+std::string glbHead(std::string json, size_t binaryBytes)
 {
   json.resize((json.size() + 3) / 4 * 4, ' ');
   const size_t binaryChunk = (binaryBytes + 3) / 4 * 4;
@@ -49,13 +44,15 @@ std::string glbUpToBinary(std::string json, size_t binaryBytes)
   return out;
 }
 
+namespace {
+
 size_t binaryPadding(size_t binaryBytes) { return (4 - binaryBytes % 4) % 4; }
 
 }  // namespace
 
 std::string glbFile(std::string json, std::string binary)
 {
-  std::string out = glbUpToBinary(std::move(json), binary.size());
+  std::string out = glbHead(std::move(json), binary.size());
   out.reserve(out.size() + binary.size() + 3);
   out += binary;
   out.append(binaryPadding(binary.size()), '\0');
@@ -64,7 +61,7 @@ std::string glbFile(std::string json, std::string binary)
 
 void writeGlb(std::ostream& out, std::string json, std::string_view binary)
 {
-  out << glbUpToBinary(std::move(json), binary.size());
+  out << glbHead(std::move(json), binary.size());
   out.write(binary.data(), std::streamsize(binary.size()));
   out.write("\0\0\0", std::streamsize(binaryPadding(binary.size())));
 }

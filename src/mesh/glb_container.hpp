@@ -23,6 +23,12 @@ GlbChunks glbChunks(std::string_view glb);
 // A GLB file of this JSON text and binary chunk (none when empty), padded
 // as GLB requires: the JSON with spaces, the binary chunk with zeros.
 std::string glbFile(std::string json, std::string binary);
+// Everything of such a file before the binary chunk's bytes: the header,
+// the JSON chunk (padded with spaces) and, when there are binary bytes, the
+// binary chunk's own header (its bytes then padded with zeros to a multiple
+// of 4). A file whose JSON is already padded has a head of the same length
+// whatever its text: GlbStream writes it last, over room left for it.
+std::string glbHead(std::string json, size_t binaryBytes);
 // The same written to `out` as it goes, the binary chunk from where it lies
 // (a morph's animation holds hundreds of megabytes: no copy of them is made).
 void writeGlb(std::ostream& out, std::string json, std::string_view binary);

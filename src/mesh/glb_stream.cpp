@@ -9,11 +9,6 @@
 namespace lbmshape {
 namespace {
 
-void writeWord(std::ostream& out, uint32_t value) { out.write(reinterpret_cast<const char*>(&value), 4); }
-
-constexpr size_t headerBytes = 12, chunkHeaderBytes = 8;
-constexpr uint32_t glbMagic = 0x46546C67, jsonChunk = 0x4E4F534A, binaryChunk = 0x004E4942;
-
 size_t paddedToFour(size_t bytes) { return (bytes + 3) / 4 * 4; }
 
 }  // namespace
@@ -21,22 +16,31 @@ size_t paddedToFour(size_t bytes) { return (bytes + 3) / 4 * 4; }
 GlbStream::GlbStream(std::filesystem::path target, size_t jsonRoom)
     : file_(std::move(target)), out_(file_.open()), jsonRoom_(paddedToFour(jsonRoom))
 {
-  // The header, the JSON chunk's header and its room, the binary chunk's
-  // header: all written again by finish().
-  out_ << std::string(headerBytes + chunkHeaderBytes + jsonRoom_ + chunkHeaderBytes, ' ');
+  // The head of the file (glbHead), the JSON chunk's room and the binary
+  // chunk's header included: all written again by finish().
+  out_ << std::string(headBytes(), ' ');
   requireGood();
+}
+
+size_t GlbStream::headBytes() const
+{
+  return glbHead(std::string(), 1).size() + jsonRoom_;  // with the binary chunk's header
+}
+
+void GlbStream::failed() const
+{
+  throw OutputError("cannot write " + file_.target().string() + ": writing the file failed (is the disk full?)");
 }
 
 void GlbStream::requireGood()
 {
-  if (!out_)
-    throw OutputError("cannot write " + file_.target().string() + ": writing the file failed (is the disk full?)");
+  if (!out_) failed();
 }
 
 void GlbStream::append(const std::vector<unsigned char>& bytes)
 {
   // A .glb states its length in 32 bits.
-  if (headerBytes + 2 * chunkHeaderBytes + jsonRoom_ + paddedToFour(binaryBytes_ + bytes.size()) > UINT32_MAX)
+  if (headBytes() + paddedToFour(binaryBytes_ + bytes.size()) > UINT32_MAX)
     throw OutputError("cannot write " + file_.target().string() +
                       ": a .glb holds at most 4 GiB; give fewer frames, a coarser grid or --no-animation");
   out_.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
@@ -56,36 +60,27 @@ void GlbStream::finish(const std::string& json)
     AtomicFile again(file_.target());
     std::ofstream copy = again.open();
     std::ifstream first(file_.temporaryPath(), std::ios::binary);
-    first.seekg(std::streamoff(headerBytes + 2 * chunkHeaderBytes + jsonRoom_));
+    first.seekg(std::streamoff(headBytes()));
     std::string binary(binaryBytes_, '\0');  // the rare path: in memory
     first.read(binary.data(), std::streamsize(binary.size()));
     writeGlb(copy, json, binary);
     copy.close();
-    if (!first || !copy)
-      throw OutputError("cannot write " + file_.target().string() + ": writing the file failed (is the disk full?)");
+    if (!first || !copy) failed();
     again.commit();
     first.close();
     std::error_code ignored;  // the AtomicFile removes it at the latest
     std::filesystem::remove(file_.temporaryPath(), ignored);
     return;
   }
-  const size_t total =
-      headerBytes + chunkHeaderBytes + jsonRoom_ + (binaryBytes_ > 0 ? chunkHeaderBytes + binaryChunkBytes : 0);
+  // The JSON fills its room with spaces, so the head is as long as the
+  // room left for it (less the binary chunk's header without binary bytes).
+  const std::string head = glbHead(json + std::string(jsonRoom_ - json.size(), ' '), binaryBytes_);
   out_.seekp(0);
-  writeWord(out_, glbMagic);
-  writeWord(out_, 2);
-  writeWord(out_, uint32_t(total));
-  writeWord(out_, uint32_t(jsonRoom_));
-  writeWord(out_, jsonChunk);
-  out_ << json << std::string(jsonRoom_ - json.size(), ' ');
-  if (binaryBytes_ > 0) {
-    writeWord(out_, uint32_t(binaryChunkBytes));
-    writeWord(out_, binaryChunk);
-  }
+  out_ << head;
   out_.close();
   requireGood();
   // Without a binary chunk, its header's room is cut off.
-  if (binaryBytes_ == 0) std::filesystem::resize_file(file_.temporaryPath(), total);
+  if (binaryBytes_ == 0) std::filesystem::resize_file(file_.temporaryPath(), head.size());
   file_.commit();
 }
 

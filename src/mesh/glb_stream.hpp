@@ -30,7 +30,9 @@ public:
   void finish(const std::string& json);
 
 private:
+  [[noreturn]] void failed() const;  // OutputError naming the target
   void requireGood();
+  size_t headBytes() const;  // where the binary chunk's bytes begin
 
   AtomicFile file_;
   std::ofstream out_;

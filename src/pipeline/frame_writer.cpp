@@ -104,11 +104,6 @@ double FrameWriter::writeMs() const
   std::lock_guard lock(mutex_);
   return writeMs_;
 }
-double FrameWriter::inspectMs() const
-{
-  std::lock_guard lock(mutex_);
-  return inspectMs_;
-}
 
 void FrameWriter::run()
 {
@@ -152,9 +147,7 @@ void FrameWriter::run()
       else
         writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
       const double writeMs = write.ms();
-      Stopwatch inspect;
       if (inspect_) inspect_(job.first, job.second, mesh);
-      const double inspectMs = inspect.ms();
       previousField = job.second;
       std::lock_guard lock(mutex_);
       if (empty) emptyFrames_.push_back(job.first);
@@ -165,7 +158,6 @@ void FrameWriter::run()
       ++written_;
       extractMs_ += extractMs;
       writeMs_ += writeMs;
-      inspectMs_ += inspectMs;
       busy_ = false;
     } catch (...) {
       std::lock_guard lock(mutex_);

@@ -81,7 +81,6 @@ public:
   int stop();
   double extractMs() const;
   double writeMs() const;
-  double inspectMs() const;
 
 private:
   // Both public constructors: files when `sink` is empty.
@@ -110,7 +109,7 @@ private:
   std::vector<TriangleMesh> meshes_;
   int written_ = 0;
   std::vector<int> emptyFrames_;
-  double extractMs_ = 0.0, writeMs_ = 0.0, inspectMs_ = 0.0;
+  double extractMs_ = 0.0, writeMs_ = 0.0;
   std::thread thread_;
 };
 

@@ -55,7 +55,7 @@ Pulled pull(const glm::vec4* current, const int32_t* around, const Extent3& e, g
 
 BandReferenceSolver::BandReferenceSolver(std::shared_ptr<const BrickSet> bricks)
     : bricks_(std::move(bricks)), neighbours_(bricks_->neighbourTable()), current_(bricks_->storedCells()),
-      next_(bricks_->storedCells()), streams_(bricks_->storedCells(), 0)
+      next_(bricks_->storedCells()), streams_(bricks_->storedCells(), 0), frozen_(bricks_->activeCount())
 {}
 
 void BandReferenceSolver::setUniformGamma(double gamma)
@@ -99,7 +99,42 @@ void BandReferenceSolver::setSourceStrength(float decay, float scale) { setStren
 void BandReferenceSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
 {
   band_state::checkHeldBricks(heldPerSlot, *bricks_);
+  for (const FrozenBricks::CatchUp& group : frozen_.setMotion(heldPerSlot, steps_)) {
+    std::vector<glm::vec4>& from = copy(group.copy);
+#pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < group.slots.size(); ++k)
+      for (size_t i = size_t(group.slots[k]) * brickCells; i < size_t(group.slots[k] + 1) * brickCells; ++i)
+        current_[i] = heldStep(from[i], i, group.decay, group.omega);
+  }
   heldSlots_ = std::move(heldPerSlot);
+}
+
+glm::vec4 BandReferenceSolver::heldStep(glm::vec4 own, size_t i, float c, float omega) const
+{
+  float X = own.x, S = 0.0f;
+  if (source_) {
+    const float a = c * source_->base.values()[i];
+    X = (X + 0.5f * a) / (1.0f + 0.5f * c);
+    S = a - c * X;
+  }
+  return glm::vec4(X + 0.5f * S, (1.0f - omega) * glm::vec3(own.y, own.z, own.w));
+}
+
+void BandReferenceSolver::freezeBeforeSteps(int count)
+{
+  const FrozenBricks::StepParameters p{
+      source_.has_value(), source_ ? source_->decay : 0.0f, source_ ? source_->scale : 1.0f,
+      uniformOmega_,       !omegaPerCell_.empty(),          paperRuleGamma0_.has_value()};
+  const std::vector<int32_t> freezing = frozen_.beforeSteps(count, p, steps_, currentCopy_);
+  if (freezing.empty()) return;
+  // X of the state they freeze with, as a field pass (sweep<false>) makes it.
+  if (frozenField_.empty()) frozenField_.assign(current_.size(), 0.0f);
+  for (int32_t s : freezing)
+    for (size_t i = size_t(s) * brickCells; i < size_t(s + 1) * brickCells; ++i) {
+      float X = current_[i].x;
+      if (source_) X = (X + 0.5f * source_->scale * source_->base.values()[i]) / (1.0f + 0.5f * source_->decay);
+      frozenField_[i] = X;
+    }
 }
 
 void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> streams)
@@ -114,6 +149,8 @@ void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> strea
   }
   current_ = band_state::collidedEquilibrium(field, source_);
   next_ = current_;  // bricks a step skips keep their moments in both copies
+  currentCopy_ = 0;
+  frozen_.start();
   if (streams.size() != field.values().size()) throw std::invalid_argument("one streaming flag a stored cell");
   streams_ = band_state::onlyCellsInTheGrid(std::move(streams), *bricks_);
   work_ = band_state::slotsToStep(*bricks_, streams_, source_.has_value());
@@ -140,10 +177,12 @@ void BandReferenceSolver::step(int count)
   // The state initialize() leaves is already the one after the first step
   // (band_state::collidedEquilibrium): that step costs nothing.
   if (count > 0 && steps_ == 0) --count, ++steps_;
+  freezeBeforeSteps(count);
   for (int s = 0; s < count; ++s) {
     if (paperRuleGamma0_) applyPaperRule();
     sweep<true>(nullptr);
     current_.swap(next_);
+    currentCopy_ = 1 - currentCopy_;
     ++steps_;
   }
 }
@@ -152,8 +191,10 @@ BandField BandReferenceSolver::previousField()
 {
   requireTwoSteps();
   current_.swap(next_);
+  currentCopy_ = 1 - currentCopy_;
   BandField out = field();
   current_.swap(next_);
+  currentCopy_ = 1 - currentCopy_;
   return out;
 }
 
@@ -206,6 +247,15 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
     const size_t s = size_t(work[w]);
     const glm::ivec3 origin = brickEdge * bricks.brick(int32_t(s));
     const int32_t* around = neighbours_.data() + s * 27;
+    if (frozen_.frozen(s)) {  // a step skips it; its field is what it froze with
+      if constexpr (!Collide)
+        for (int local = 0; local < brickCells; ++local) {
+          const size_t i = s * brickCells + size_t(local);
+          const glm::ivec3 c = bricks.cell(int32_t(s), local);
+          if (e.contains(c.x, c.y, c.z)) (*fieldOut)[i] = frozenField_[i];
+        }
+      continue;
+    }
     const bool held = !heldSlots_.empty() && heldSlots_[s] != 0;
     for (int local = 0; local < brickCells; ++local) {
       const size_t i = s * brickCells + size_t(local);

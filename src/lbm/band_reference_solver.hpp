@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "lbm/band_solver.hpp"
+#include "lbm/frozen_bricks.hpp"
 
 namespace lbmshape {
 
@@ -39,6 +40,12 @@ private:
   // The paper's rule before a step's collision: gamma and omega per cell
   // from the X the step pulls (setPaperRule).
   void applyPaperRule();
+  // The bricks that freeze before the next `count` steps: their field kept.
+  void freezeBeforeSteps(int count);
+  // A held step of cell i from `from` into current_ under decay (and
+  // scale) c and omega (FrozenBricks::CatchUp).
+  glm::vec4 heldStep(glm::vec4 own, size_t i, float c, float omega) const;
+  std::vector<glm::vec4>& copy(int k) { return k == currentCopy_ ? current_ : next_; }
 
   std::shared_ptr<const BrickSet> bricks_;
   std::vector<int32_t> neighbours_;        // 27 a slot (BrickSet::neighbourTable)
@@ -47,7 +54,10 @@ private:
   std::vector<int32_t> work_;              // the slots a step updates (band_state::slotsToStep)
   BandField initial_;                      // X at initialisation, with its far sides
   float uniformOmega_ = 1.0f;
-  std::vector<uint8_t> heldSlots_;   // setHeldBricks
+  std::vector<uint8_t> heldSlots_;  // setHeldBricks: BrickMotion a slot
+  FrozenBricks frozen_;
+  std::vector<float> frozenField_;   // the field of the frozen bricks' cells, as they froze
+  int currentCopy_ = 0;              // which of the two copies current_ is (they swap at each step)
   std::vector<float> omegaPerCell_;  // empty: uniform
   std::optional<double> paperRuleGamma0_;
   bool paperRuleReady_ = false;      // initialize() has seeded the rule's state

@@ -65,12 +65,19 @@ public:
   virtual void setSource(std::optional<BandSource> source) = 0;
   // The source's decay and scale, its base kept (LatticeSolver's).
   virtual void setSourceStrength(float decay, float scale) = 0;
-  // Bricks held whole from the next step on: one flag a brick slot, 1 where
-  // every cell of the brick is held (pulls from itself) whatever
-  // initialize()'s flags say; empty for none. The steps and field passes
-  // read nothing around them, so they cost a fraction of a streaming
-  // brick's: a morph holds the bricks its moving front is far from. Kept
-  // across initialize() and restart(); not with the feature rule.
+  // Bricks held whole from the next step on: one BrickMotion a brick slot
+  // (lbm/frozen_bricks.hpp); empty for none. Held (1): every cell of the
+  // brick pulls from itself whatever initialize()'s flags say; the steps
+  // and field passes read nothing around them, so they cost a fraction of
+  // a streaming brick's: a morph holds the bricks its moving front is far
+  // from. Frozen (2): from the next step on no step or field pass touches
+  // the brick, which keeps the field it froze with; when it is set to
+  // anything else it catches up, in one held step, with the steps it
+  // missed. The caller freezes only bricks that no streaming brick reads
+  // (none of their 26 neighbours streams meanwhile), under a uniform
+  // omega and a source whose scale is its decay (else the step throws
+  // std::logic_error). Kept across initialize() and restart(); not with
+  // the feature rule.
   virtual void setHeldBricks(std::vector<uint8_t> heldPerSlot) = 0;
 
   // Restart from field X, every cell at equilibrium (after setSource); the

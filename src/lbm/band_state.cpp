@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
+#include "lbm/frozen_bricks.hpp"
 #include "lbm/relaxation.hpp"
 
 namespace lbmshape::band_state {
@@ -79,6 +81,9 @@ void checkHeldBricks(const std::vector<uint8_t>& heldPerSlot, const BrickSet& br
 {
   if (!heldPerSlot.empty() && heldPerSlot.size() != bricks.activeCount())
     throw std::invalid_argument("one held flag a brick slot, or none");
+  for (uint8_t motion : heldPerSlot)
+    if (motion > uint8_t(BrickMotion::Frozen))
+      throw std::invalid_argument("a brick streams (0), is held (1) or frozen (2), not " + std::to_string(motion));
 }
 
 void checkSameBricks(const BrickSet& bricks, const BandField& field, const char* what)

@@ -16,6 +16,7 @@
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/band_state.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/frozen_bricks.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/solver_state.hpp"
 
@@ -88,13 +89,13 @@ struct BandPools {
 
 struct BandVulkanSolver::Resources {
   Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b, uint64_t stagingBytes)
-      : context(c), bricks(std::move(b)), cells(bricks->storedCells()),
+      : context(c), bricks(std::move(b)), cells(bricks->storedCells()), frozen(bricks->activeCount()),
         pools(c.description(), bricks->activeCount()), moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device),
                                                                GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
         field(c, 16, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
         neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
-        work(c, 4 * 2 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
+        work(c, 4 * 3 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
         source(c, 16, texels, MemoryUse::Device),
         partials(c, 8 * bricks->activeCount(),
                  vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device),
@@ -102,13 +103,13 @@ struct BandVulkanSolver::Resources {
                 vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
     std::array<vk::DescriptorPoolSize, 3> sizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 2 * 7),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 2),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 2 * 2 * BAND_MAX_POOLS)};
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 4 * 7),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 4),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4 * 2 * BAND_MAX_POOLS)};
     descriptorPool = vk::raii::DescriptorPool(
-        c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
+        c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 4, sizes));
     const auto& setLayout = c.program(program()).setLayout;
-    std::vector<vk::DescriptorSetLayout> layouts(2, *setLayout);
+    std::vector<vk::DescriptorSetLayout> layouts(4, *setLayout);
     sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
     writeDescriptors();
   }
@@ -116,6 +117,7 @@ struct BandVulkanSolver::Resources {
   gpu::GpuContext& context;
   std::shared_ptr<const BrickSet> bricks;
   size_t cells;
+  FrozenBricks frozen;
   BandPools pools;
   GpuBuffer moments[2];
   // The field buffer: 16 bytes until field() needs it (fullFieldBuffer()), so
@@ -125,15 +127,16 @@ struct BandVulkanSolver::Resources {
   GpuBuffer streams, neighbours, origins;
   // The work lists, one after the other: the slots a step updates in full,
   // those it holds whole (setHeldBricks), then every slot split alike, for
-  // the field pass. band_step.comp runs the first of each pair,
-  // band_hold.comp the second.
+  // the field pass; frozen slots in none. band_step.comp runs the first of
+  // each pair, band_hold.comp the second. From 2 * slots on, the slots of
+  // one freezing or catch-up pass (extraList()).
   GpuBuffer work;
   struct WorkRange {
     int offset = 0, count = 0;
   };
   WorkRange stepRange, heldRange, fieldRange, heldFieldRange;
   std::vector<int32_t> stepSlots;  // the slots a step updates (band_state::slotsToStep)
-  std::vector<uint8_t> heldSlots;  // per slot, 1 where the brick is held whole; empty: none
+  std::vector<uint8_t> heldSlots;  // per slot, a BrickMotion; empty: every brick streams
   // 16 bytes until set: a valid view for the shader variants that ignore
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
@@ -142,7 +145,9 @@ struct BandVulkanSolver::Resources {
   GpuBuffer staging;
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
-  std::vector<vk::raii::DescriptorSet> sets;  // [k]: reads copy k, writes the other
+  // [k]: reads copy k, writes the other; [2 + k]: reads and writes copy k
+  // (a catch-up whose brick froze in the copy a step reads next).
+  std::vector<vk::raii::DescriptorSet> sets;
   // The surface-speed pass's: [k] reads copy k as the newer, the other as
   // the older. Its own views: the moments buffers are never replaced.
   std::vector<vk::raii::BufferView> speedViews;
@@ -200,14 +205,15 @@ struct BandVulkanSolver::Resources {
       }
       return ranges;
     };
-    std::array<std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS>, 2> nextRanges = {
-        poolRanges(moments[1], momentBytesPerSlot, pools.slotsPerMomentPool),
-        poolRanges(moments[0], momentBytesPerSlot, pools.slotsPerMomentPool)};
+    std::array<std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS>, 2> copyRanges = {
+        poolRanges(moments[0], momentBytesPerSlot, pools.slotsPerMomentPool),
+        poolRanges(moments[1], momentBytesPerSlot, pools.slotsPerMomentPool)};
     const auto fieldRanges = poolRanges(field, fieldBytesPerSlot, pools.slotsPerFieldPool);
     std::vector<vk::WriteDescriptorSet> writes;
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 4; ++k) {
       const vk::DescriptorSet set = *sets[size_t(k)];
-      writes.emplace_back(set, BAND_BINDING_MOMENTS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[k]);
+      const int reads = k % 2, writesTo = k < 2 ? 1 - reads : reads;
+      writes.emplace_back(set, BAND_BINDING_MOMENTS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &copyViews[reads]);
       writes.emplace_back(set, BAND_BINDING_STREAMS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &streamView);
       writes.emplace_back(set, BAND_BINDING_NEIGHBOURS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &neighbourView);
       writes.emplace_back(set, BAND_BINDING_ORIGINS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &originView);
@@ -215,7 +221,7 @@ struct BandVulkanSolver::Resources {
       writes.emplace_back(set, BAND_BINDING_SOURCE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &sourceView);
       writes.emplace_back(set, BAND_BINDING_WORK, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &workView);
       writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr,
-                          nextRanges[size_t(k)].data());
+                          copyRanges[size_t(writesTo)].data());
       writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, fieldRanges.data());
       writes.emplace_back(set, BAND_BINDING_GAMMA, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &omegaView);
     }
@@ -256,7 +262,7 @@ struct BandVulkanSolver::Resources {
   // whole `unit`s at a time: fill(first, count, to) writes units
   // [first, first + count) at `to`.
   template <class Fill>
-  void uploadUnits(const GpuBuffer& target, uint64_t bytes, uint64_t unit, Fill fill)
+  void uploadUnits(const GpuBuffer& target, uint64_t bytes, uint64_t unit, Fill fill, uint64_t targetOffset = 0)
   {
     const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unit), units = (bytes + unit - 1) / unit;
     for (uint64_t first = 0; first < units; first += unitsPerChunk) {
@@ -264,7 +270,7 @@ struct BandVulkanSolver::Resources {
       const uint64_t chunk = std::min(count * unit, bytes - first * unit);
       fill(first, count, staging.mapped());
       context.runAndWait([&](vk::CommandBuffer cmd) {
-        cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, first * unit, chunk));
+        cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, targetOffset + first * unit, chunk));
       });
     }
   }
@@ -292,12 +298,15 @@ struct BandVulkanSolver::Resources {
     }
   }
 
-  // Copies `bytes` from host memory into a device buffer.
-  void upload(const void* data, uint64_t bytes, const GpuBuffer& target)
+  // Copies `bytes` from host memory into a device buffer, from `targetOffset` on.
+  void upload(const void* data, uint64_t bytes, const GpuBuffer& target, uint64_t targetOffset = 0)
   {
-    uploadUnits(target, bytes, 1, [&](uint64_t first, uint64_t count, std::byte* to) {
-      std::memcpy(to, static_cast<const std::byte*>(data) + first, count);
-    });
+    uploadUnits(
+        target, bytes, 1,
+        [&](uint64_t first, uint64_t count, std::byte* to) {
+          std::memcpy(to, static_cast<const std::byte*>(data) + first, count);
+        },
+        targetOffset);
   }
 
   // Copies `units` pieces of `unitBytes` of a device buffer, piece u at
@@ -406,7 +415,7 @@ struct BandVulkanSolver::Resources {
     const auto append = [&](WorkRange& range, const std::vector<int32_t>& slots, bool held) {
       range.offset = int(lists.size());
       for (int32_t s : slots)
-        if ((!heldSlots.empty() && heldSlots[size_t(s)] != 0) == held) lists.push_back(s);
+        if (!frozen.frozen(size_t(s)) && (!heldSlots.empty() && heldSlots[size_t(s)] != 0) == held) lists.push_back(s);
       range.count = int(lists.size()) - range.offset;
     };
     append(stepRange, stepSlots, false);
@@ -414,6 +423,46 @@ struct BandVulkanSolver::Resources {
     append(fieldRange, every, false);
     append(heldFieldRange, every, true);
     upload(lists.data(), lists.size() * 4, work);
+  }
+
+  // `slots` as the work list of one pass, after the lists uploadWork() makes.
+  WorkRange extraList(const std::vector<int32_t>& slots)
+  {
+    const WorkRange range{int(2 * bricks->activeCount()), int(slots.size())};
+    upload(slots.data(), slots.size() * 4, work, uint64_t(range.offset) * 4);
+    return range;
+  }
+
+  // What the catch-up of frozen bricks needs to know of the steps to come.
+  FrozenBricks::StepParameters frozenStepParameters() const
+  {
+    return {sourceHost.has_value(),
+            sourceHost ? sourceHost->decay : 0.0f,
+            sourceHost ? sourceHost->scale : 1.0f,
+            uniformOmega,
+            perCellOmega,
+            paperRuleGamma0.has_value()};
+  }
+
+  // Before `count` steps: the bricks that freeze now get their field (X of
+  // the state they freeze with), and leave the work lists.
+  void freezeBeforeSteps(int count)
+  {
+    const std::vector<int32_t> freezing = frozen.beforeSteps(count, frozenStepParameters(), steps, current);
+    if (freezing.empty()) return;
+    const gpu::TraceLabel label("band bricks freezing");
+    fullFieldBuffer();
+    band_shader::StepParameters push = parameters(true);
+    const WorkRange range = extraList(freezing);
+    push.workOffset = range.offset;
+    push.works = range.count;
+    context.runAndWait([&](vk::CommandBuffer cmd) {
+      dispatch(cmd, context.program(holdProgram()), current, push);
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderWrite), {},
+                          {});
+    });
+    uploadWork();
   }
 
   // A step's parameters, or with `everySlot` the field pass's, for the
@@ -438,13 +487,14 @@ struct BandVulkanSolver::Resources {
     return p;
   }
 
-  // A dispatch over `push.works` bricks, reading copy `from`.
-  void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int from,
+  // A dispatch over `push.works` bricks through descriptor set `set` (0 or
+  // 1: reading that copy and writing the other).
+  void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int set,
                 const band_shader::StepParameters& push) const
   {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
     cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[size_t(from)], {});
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[size_t(set)], {});
     const auto works = uint32_t(push.works);
     cmd.dispatch(std::min<uint32_t>(works, BAND_MAX_WORKGROUPS_X),
                  (works + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
@@ -637,6 +687,26 @@ void BandVulkanSolver::setSourceStrength(float decay, float scale) { setStrength
 void BandVulkanSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
 {
   band_state::checkHeldBricks(heldPerSlot, *r_->bricks);
+  // The bricks that thaw catch up, each group in one held step from the
+  // copy it froze in to the one the next step reads.
+  for (const FrozenBricks::CatchUp& group : r_->frozen.setMotion(heldPerSlot, r_->steps)) {
+    const gpu::TraceLabel label("band bricks thawing");
+    band_shader::StepParameters push = r_->parameters(false);
+    const Resources::WorkRange range = r_->extraList(group.slots);
+    push.workOffset = range.offset;
+    push.works = range.count;
+    push.decay = push.baseScale = group.decay;
+    push.omega = group.omega;
+    push.perCellOmega = push.paperRule = 0;
+    const int set = group.copy == r_->current ? 2 + r_->current : group.copy;
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
+      r_->dispatch(cmd, r_->context.program(r_->holdProgram()), set, push);
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
+                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite,
+                                            vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
+                          {}, {});
+    });
+  }
   r_->heldSlots = std::move(heldPerSlot);
   if (!r_->stepSlots.empty()) r_->uploadWork();
 }
@@ -715,6 +785,7 @@ void BandVulkanSolver::startFrom(BandField field)
   r_->current = 0;
   r_->steps = 0;
   r_->olderCopySpentAt = -1;
+  r_->frozen.start();
   r_->initial = std::move(field);
 }
 
@@ -735,6 +806,7 @@ void BandVulkanSolver::step(int count)
     if (r_->sourceHost) std::vector<float>().swap(r_->sourceHost->base.values());
   }
   if (count <= 0) return;
+  r_->freezeBeforeSteps(count);
   auto& program = r_->context.program(r_->program());
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
@@ -825,8 +897,12 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   // moves the held cells too) and is a real one (the first is free, and
   // its field the initial one); the paper's rule is never used with a
   // source.
-  const bool stepsEveryBrick = size_t(r_->stepRange.count + r_->heldRange.count) == r_->bricks->activeCount();
-  if (r_->steps == 0 || !stepsEveryBrick || r_->paperRuleGamma0) {
+  // Frozen bricks are in no pass: their field stays what they froze with.
+  // A brick that freezes at this step gets its field after the frame's
+  // is read, as in the reference.
+  const bool stepsEveryBrick =
+      size_t(r_->stepRange.count + r_->heldRange.count) + r_->frozen.frozenCount() == r_->bricks->activeCount();
+  if (r_->steps == 0 || !stepsEveryBrick || r_->paperRuleGamma0 || r_->frozen.freezingNext()) {
     BandSolver::fieldIntoThenStep(out, next);
     return;
   }
@@ -835,6 +911,7 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   const band_shader::StepParameters before = r_->parameters(false);
   if (next) setSourceStrength(next->decay, next->scale);
   band_shader::StepParameters push = r_->parameters(false);
+  r_->frozen.beforeSteps(1, r_->frozenStepParameters(), r_->steps, r_->current);  // freezes none (above)
   push.writeField = 1;
   push.fieldDecay = before.decay;
   push.fieldBaseScale = before.baseScale;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "lbm/frozen_bricks.hpp"
+
 namespace lbmshape {
 namespace {
 
@@ -22,8 +24,10 @@ std::vector<double> decayAfterEachStep(const MorphSchedule& schedule)
 }  // namespace
 
 MorphFront::MorphFront(const BandField& source, const BandField& target, const std::vector<uint8_t>& streams,
-                       double reach, const MorphSchedule& schedule)
-    : first_(source.bricks().activeCount()), last_(source.bricks().activeCount()), totalSteps_(schedule.totalSteps())
+                       double reach, const MorphSchedule& schedule, double keepNearTarget)
+    : first_(source.bricks().activeCount()), last_(source.bricks().activeCount()),
+      awakeFrom_(source.bricks().activeCount()), awakeTo_(source.bricks().activeCount()),
+      nearTarget_(source.bricks().activeCount()), totalSteps_(schedule.totalSteps())
 {
   const std::vector<double> D = decayAfterEachStep(schedule);
   const std::vector<float>& A = source.values();
@@ -58,25 +62,65 @@ MorphFront::MorphFront(const BandField& source, const BandField& target, const s
       }
     first_[s] = first;
     last_[s] = last;
+    bool near = false;
+    for (size_t i = s * brickCells; i < (s + 1) * brickCells && !near; ++i) near = std::abs(T[i]) <= keepNearTarget;
+    nearTarget_[s] = near;
+  }
+  // A brick must be updated from the step before a brick of its 27 first
+  // streams (whose first step pulls the state that step makes) through the
+  // last step one streams.
+  const std::vector<int32_t> around = source.bricks().neighbourTable();
+#pragma omp parallel for schedule(static)
+  for (size_t s = 0; s < first_.size(); ++s) {
+    int from = totalSteps_, to = -1;
+    for (int k = 0; k < 27; ++k) {
+      const int32_t n = around[s * 27 + size_t(k)];
+      if (n == noBrick || first_[size_t(n)] > last_[size_t(n)]) continue;
+      from = std::min(from, first_[size_t(n)] - 1);
+      to = std::max(to, last_[size_t(n)]);
+    }
+    awakeFrom_[s] = from;
+    awakeTo_[s] = to;
   }
 }
 
 std::vector<uint8_t> MorphFront::heldDuring(int step) const
 {
-  std::vector<uint8_t> held(first_.size());
-  for (size_t s = 0; s < held.size(); ++s) held[s] = step < first_[s] || step > last_[s];
-  return held;
+  std::vector<uint8_t> motion(first_.size());
+  for (size_t s = 0; s < motion.size(); ++s) {
+    BrickMotion m = BrickMotion::Streams;
+    if (step < first_[s] || step > last_[s])
+      m = !nearTarget_[s] && (step < awakeFrom_[s] || step > awakeTo_[s]) ? BrickMotion::Frozen : BrickMotion::Held;
+    motion[s] = uint8_t(m);
+  }
+  return motion;
 }
 
 int MorphFront::sameUntil(int step) const
 {
   int next = totalSteps_;
+  const auto change = [&](int from, int to) {  // a run [from, to] of steps
+    if (from > to) return;
+    if (from > step) next = std::min(next, from);
+    if (to + 1 > step) next = std::min(next, to + 1);
+  };
   for (size_t s = 0; s < first_.size(); ++s) {
-    if (first_[s] > last_[s]) continue;  // held throughout
-    if (first_[s] > step) next = std::min(next, first_[s]);
-    if (last_[s] + 1 > step) next = std::min(next, last_[s] + 1);
+    change(first_[s], last_[s]);
+    if (!nearTarget_[s]) change(awakeFrom_[s], awakeTo_[s]);
   }
   return std::max(next, step + 1);
+}
+
+double MorphFront::meanFrozenFraction() const
+{
+  if (first_.empty() || totalSteps_ == 0) return 0.0;
+  double frozenSteps = 0.0;
+  for (size_t s = 0; s < first_.size(); ++s) {
+    if (nearTarget_[s]) continue;
+    const int from = std::max(awakeFrom_[s], 0), to = std::min(awakeTo_[s], totalSteps_ - 1);
+    frozenSteps += totalSteps_ - std::max(0, to - from + 1);
+  }
+  return frozenSteps / (double(first_.size()) * totalSteps_);
 }
 
 double MorphFront::meanStreamingFraction() const

@@ -209,7 +209,8 @@ public:
             {"bricks", bricks.activeCount()},
             {"cells", bricks.storedCells()},
             {"fraction_of_grid", double(bricks.storedCells()) / double(frame_.extent.cells())},
-            {"streaming_fraction", front_ ? nlohmann::json(front_->meanStreamingFraction()) : nlohmann::json(nullptr)}};
+            {"streaming_fraction", front_ ? nlohmann::json(front_->meanStreamingFraction()) : nlohmann::json(nullptr)},
+            {"frozen_fraction", front_ ? nlohmann::json(front_->meanFrozenFraction()) : nlohmann::json(nullptr)}};
   }
 
 private:

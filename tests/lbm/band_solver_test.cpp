@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "lbm/band_vulkan_solver.hpp"
 #include "lbm/band_width.hpp"
+#include "lbm/frozen_bricks.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/surface_change.hpp"
 #include "support/band_fields.hpp"
@@ -549,6 +550,94 @@ TEST_P(BandSolverTest, APerCellGammaThatWouldNotDiffuseIsRefused)
   EXPECT_NO_THROW(band->setGammaPerCell(uniform()));
 }
 
+// Frozen bricks (BrickMotion::Frozen) skip the steps and catch up in one
+// held step when they thaw: the state they come back with is the one held
+// bricks reach step by step, through a change of Cs and with a flux left
+// from streaming (gamma = 1: j* keeps 0.71 of itself a step, so a wrong
+// omega_eff shows).
+TEST_P(BandSolverTest, FrozenBricksCatchUpToTheHeldOnes)
+{
+  const Extent3 extent{40, 24, 24};
+  const Volume from = testing::sphereDistance(extent, 12.0, 11.5, 11.5, 7.0);
+  const Volume to = testing::sphereDistance(extent, 20.0, 11.5, 11.5, 9.0);
+  auto bricks = testing::bricksNear(from, 100.0);
+  const BandField target = testing::bandOf(to, bricks), start = testing::bandOf(from, bricks);
+  // Bricks x >= 2 held (those at x = 2 touch the streaming ones), or those
+  // at x >= 3 frozen.
+  std::vector<uint8_t> everyStreams(bricks->activeCount(), 0), held = everyStreams, frozen = everyStreams;
+  for (size_t s = 0; s < held.size(); ++s) {
+    const int x = bricks->brick(int32_t(s)).x;
+    held[s] = frozen[s] = uint8_t(x >= 2 ? BrickMotion::Held : BrickMotion::Streams);
+    if (x >= 3) frozen[s] = uint8_t(BrickMotion::Frozen);
+  }
+  auto run = [&](const std::vector<uint8_t>& motion) {
+    auto band = solver(bricks);
+    band->setUniformGamma(1.0);
+    // A weak force, so that X is still far from X_target when the bricks
+    // thaw: an error of the catch-up's c_eff shows there.
+    band->setSource(BandSource{target, 0.05f, 0.05f});
+    band->initialize(start, std::numeric_limits<double>::infinity());
+    band->step(5);  // every brick streams: a flux everywhere
+    band->setHeldBricks(motion);
+    band->step(4);
+    band->setSourceStrength(0.08f, 0.08f);
+    BandField frame;
+    band->fieldIntoThenStep(frame, SourceStrength{0.1f, 0.1f});
+    band->step(3);
+    band->setHeldBricks(everyStreams);  // thawed: caught up, then streaming
+    band->step(2);
+    return band->field();
+  };
+  const BandField stepByStep = run(held), caughtUp = run(frozen);
+  const testing::BandDifference d = testing::differenceInside(caughtUp, stepByStep, extent);
+  EXPECT_LE(d.worst, 1e-5 * d.scale) << "max |X|: " << d.scale;
+  EXPECT_GT(d.scale, 1.0);
+  // The two runs differ where the bricks were held, had they not caught up.
+  const BandField notHeld = run(everyStreams);
+  EXPECT_GT(testing::differenceInside(notHeld, stepByStep, extent).worst, 1e-2);
+}
+
+// Frozen bricks while frozen: skipped, with the field they froze with; the
+// catch-up cannot follow omega per cell or a source whose fixed point is
+// not its base (scale != decay), so those are refused.
+TEST_P(BandSolverTest, FrozenBricksKeepTheirFieldAndRefuseWhatTheyCannotFollow)
+{
+  const Extent3 extent{32, 16, 16};
+  const Volume from = testing::sphereDistance(extent, 8.0, 7.5, 7.5, 5.0);
+  auto bricks = testing::bricksNear(from, 100.0);
+  std::vector<uint8_t> motion(bricks->activeCount());
+  for (size_t s = 0; s < motion.size(); ++s)
+    motion[s] = uint8_t(bricks->brick(int32_t(s)).x >= 3 ? BrickMotion::Frozen : BrickMotion::Streams);
+  EXPECT_THROW(solver(bricks)->setHeldBricks(std::vector<uint8_t>(motion.size(), 3)), std::invalid_argument);
+  const BandField base = testing::bandOf(testing::sphereDistance(extent, 20.0, 7.5, 7.5, 6.0), bricks);
+  auto band = solver(bricks);
+  band->setUniformGamma(0.3);
+  band->setSource(BandSource{base, 0.3f, 0.3f});
+  band->setHeldBricks(motion);
+  band->initialize(testing::bandOf(from, bricks), std::numeric_limits<double>::infinity());
+  band->step(2);
+  const BandField first = band->field();
+  band->step(5);
+  const BandField later = band->field();
+  double frozenChange = 0.0, otherChange = 0.0;
+  for (size_t i = 0; i < first.values().size(); ++i) {
+    const glm::ivec3 c = bricks->cell(int32_t(i / brickCells), int(i % brickCells));
+    if (!extent.contains(c.x, c.y, c.z)) continue;
+    const double change = std::abs(later.values()[i] - first.values()[i]);
+    (motion[i / brickCells] ? frozenChange : otherChange) =
+        std::max(motion[i / brickCells] ? frozenChange : otherChange, change);
+  }
+  EXPECT_EQ(frozenChange, 0.0) << "a frozen brick's field is the one it froze with";
+  EXPECT_GT(otherChange, 0.1);
+  band->setSourceStrength(0.3f, 0.2f);
+  EXPECT_THROW(band->step(1), std::logic_error);
+  band->setSourceStrength(0.3f, 0.3f);
+  BandField gamma(bricks, 0.0f);
+  std::fill(gamma.values().begin(), gamma.values().end(), 0.2f);
+  band->setGammaPerCell(gamma);
+  EXPECT_THROW(band->step(1), std::logic_error);
+}
+
 LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
 
 // The Vulkan solver against the CPU reference: near the grid's faces, with
@@ -561,7 +650,7 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
   // 0 plain, 1 source, 2 gamma per cell, 3 both, 4 the paper's rule, 5 the
   // feature-preserving rule (on the device against the host's), 6 the same
   // rule with the steps going on from the state it read (no new start), 7
-  // a source with held bricks (setHeldBricks)
+  // a source with held bricks (setHeldBricks), 8 frozen bricks that thaw
   const int variant = GetParam();
   const Extent3 extent{37, 29, 45};  // sides that are no multiple of 8; the sphere reaches the faces
   const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
@@ -574,10 +663,14 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
   for (BandSolver* s : {gpu.get(), cpu.get()}) {
     s->setUniformGamma(0.15);
     if (variant == 4) s->setPaperRule(0.15);
-    if (variant == 1 || variant == 3 || variant == 7) {
+    if (variant == 1 || variant == 3 || variant == 7 || variant == 8) {
       BandField target = testing::bandOf(testing::sphereDistance(extent, 20.0, 14.0, 20.0, 12.0), bricks);
-      for (float& v : target.values()) v *= 0.1f;
-      s->setSource(BandSource{std::move(target), 0.1f});
+      if (variant == 8) {  // frozen bricks follow a source whose fixed point is its base
+        s->setSource(BandSource{std::move(target), 0.1f, 0.1f});
+      } else {
+        for (float& v : target.values()) v *= 0.1f;
+        s->setSource(BandSource{std::move(target), 0.1f});
+      }
     }
     if (variant == 2 || variant == 3) {
       BandField gamma = testing::bandOf(testing::randomField(extent, 0.02f, 0.6f, 5), bricks);
@@ -591,6 +684,24 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
       s->initialize(start, 6.0);
       s->step(5);
       s->setFeaturePreservingGamma(0.2, 0.2);
+    }
+    if (variant == 8) {
+      // A source, bricks frozen (those at x >= 3, which touch none that
+      // stream) through frames and a change of Cs, then thawed.
+      s->setUniformGamma(0.8);
+      std::vector<uint8_t> motion(bricks->activeCount());
+      for (size_t b = 0; b < motion.size(); ++b)
+        motion[b] = uint8_t(bricks->brick(int32_t(b)).x >= 3   ? BrickMotion::Frozen
+                            : bricks->brick(int32_t(b)).x == 2 ? BrickMotion::Held
+                                                               : BrickMotion::Streams);
+      s->initialize(start, 6.0);
+      s->step(4);
+      s->setHeldBricks(motion);
+      BandField frame;
+      for (int k = 0; k < 5; ++k) s->fieldIntoThenStep(frame, SourceStrength{0.1f + 0.05f * k, 0.1f + 0.05f * k});
+      s->setHeldBricks({});
+      s->step(8);
+      continue;
     }
     if (variant == 7) {
       // Held bricks, a third of them, then others from the step they
@@ -681,12 +792,14 @@ TEST_F(BandVulkanStaging, ChunkedCopiesGiveTheSameField)
 
 std::string variantName(const ::testing::TestParamInfo<int>& info)
 {
-  static const char* names[] = {"plain",      "source",       "gamma_per_cell",          "source_and_gamma_per_cell",
-                                "paper_rule", "feature_rule", "feature_rule_then_steps", "held_bricks"};
+  static const char* names[] = {"plain",        "source",       "gamma_per_cell",          "source_and_gamma_per_cell",
+                                "paper_rule",   "feature_rule", "feature_rule_then_steps", "held_bricks",
+                                "frozen_bricks"};
   return names[info.param];
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, BandVulkanMatchesReference, ::testing::Values(0, 1, 2, 3, 4, 5, 6, 7), variantName);
+INSTANTIATE_TEST_SUITE_P(Variants, BandVulkanMatchesReference, ::testing::Values(0, 1, 2, 3, 4, 5, 6, 7, 8),
+                         variantName);
 
 }  // namespace
 }  // namespace lbmshape

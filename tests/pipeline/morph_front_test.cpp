@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lbm/frozen_bricks.hpp"
 #include "pipeline/morph.hpp"
 #include "support/band_fields.hpp"
 
@@ -74,6 +75,37 @@ TEST(MorphFront, BricksStreamWhileThePredictedSurfaceIsNear)
   EXPECT_LT(front.meanStreamingFraction(), 0.5);
 }
 
+// A frozen brick is one that no step reads: none of its 27 bricks streams
+// in that step or the next; those near the target's surface never freeze;
+// the others freeze where the front is far.
+TEST(MorphFront, FrozenBricksAreFarFromEveryStreamingOne)
+{
+  const PlaneFront plane;
+  const MorphFront front(plane.source, plane.target, plane.streams, 3.0, plane.schedule);
+  const int total = plane.schedule.totalSteps();
+  const std::vector<int32_t> around = plane.bricks->neighbourTable();
+  int frozenSteps = 0;
+  for (int n = 0; n < total; ++n) {
+    const std::vector<uint8_t> now = front.heldDuring(n),
+                               next = n + 1 < total ? front.heldDuring(n + 1) : std::vector<uint8_t>(7, 1);
+    for (size_t s = 0; s < 7; ++s) {
+      if (now[s] != uint8_t(BrickMotion::Frozen)) continue;
+      ++frozenSteps;
+      EXPECT_NE(s, plane.slotAt(39)) << "near the target, step " << n;
+      EXPECT_NE(s, plane.slotAt(40)) << "near the target, step " << n;
+      for (int k = 0; k < 27; ++k) {
+        const int32_t b = around[s * 27 + size_t(k)];
+        if (b == noBrick) continue;
+        EXPECT_NE(now[size_t(b)], uint8_t(BrickMotion::Streams)) << "slot " << s << ", step " << n;
+        EXPECT_NE(next[size_t(b)], uint8_t(BrickMotion::Streams)) << "slot " << s << ", step " << n;
+      }
+    }
+  }
+  // Brick 6 (x >= 48) all the way, brick 0 once the front has left it.
+  EXPECT_GT(frozenSteps, total);
+  EXPECT_GT(front.meanFrozenFraction(), 0.0);
+}
+
 // The steps up to sameUntil() hold the same bricks: the morph runs them as
 // one batch; the step it names holds others.
 TEST(MorphFront, HeldBricksChangeOnlyWhereSameUntilSays)
@@ -95,15 +127,19 @@ TEST(MorphFront, HeldBricksChangeOnlyWhereSameUntilSays)
   EXPECT_GE(changes, 5);
 }
 
-// Cells that never stream (initialize()'s flags) make no brick stream.
+// Cells that never stream (initialize()'s flags) make no brick stream: all
+// are frozen, but for the two with cells within 2 voxels of the target's
+// surface (x = 40), which are held.
 TEST(MorphFront, OnlyCellsThatMayStreamCount)
 {
   PlaneFront plane;
   std::fill(plane.streams.begin(), plane.streams.end(), 0);
   const MorphFront front(plane.source, plane.target, plane.streams, 3.0, plane.schedule);
-  for (int n = 0; n < plane.schedule.totalSteps(); ++n)
-    EXPECT_EQ(front.heldDuring(n), std::vector<uint8_t>(7, 1)) << "step " << n;
+  std::vector<uint8_t> expected(7, uint8_t(BrickMotion::Frozen));
+  expected[plane.slotAt(39)] = expected[plane.slotAt(40)] = uint8_t(BrickMotion::Held);
+  for (int n = 0; n < plane.schedule.totalSteps(); ++n) EXPECT_EQ(front.heldDuring(n), expected) << "step " << n;
   EXPECT_EQ(front.meanStreamingFraction(), 0.0);
+  EXPECT_NEAR(front.meanFrozenFraction(), 5.0 / 7.0, 1e-12);
   EXPECT_THROW(MorphFront(plane.source, plane.target, plane.streams, 0.0, plane.schedule), std::invalid_argument);
 }
 

@@ -91,6 +91,12 @@ SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, 
 {
   // The trees validate both meshes (indices, finite positions) before any sampling.
   const TriangleBvh treeA(a, TriangleBvh::Queries::ClosestOnly), treeB(b, TriangleBvh::Queries::ClosestOnly);
+  return compareSurfaces(a, treeA, b, treeB, options);
+}
+
+SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleBvh& treeA, const TriangleMesh& b,
+                                  const TriangleBvh& treeB, const ComparisonOptions& options)
+{
   if (!hasArea(a)) throw InputError("the first surface to compare has no triangle with area");
   if (!hasArea(b)) throw InputError("the second surface to compare has no triangle with area");
   SurfaceComparison result;

@@ -47,6 +47,12 @@ uint64_t hostMemoryBytes()
   return bytes;
 }
 
+bool addressSpaceUnlimited()
+{
+  rlimit limit{};
+  return getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur == RLIM_INFINITY;
+}
+
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power)
 {
   const double allowed = double(hostMemoryBytes());

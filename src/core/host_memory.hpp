@@ -20,6 +20,9 @@ uint64_t hostMemoryBytes();
 // its side to the power `power`).
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power);
 
+// Whether the process may map memory without limit (no `ulimit -v`).
+bool addressSpaceUnlimited();
+
 // Gives the pages that the heap holds free back to the system. glibc keeps
 // what a stage freed in its arenas for later allocations (arrays of a few
 // MiB too, once a larger block was freed: its mmap threshold grows up to

@@ -42,15 +42,20 @@ void ComputeDevice::finishWarmUp() const
 void ComputeDevice::warmUpForTheBand() const
 {
   if (isReference() || gpu_ || warmUp_.valid()) return;
-  // The Vulkan loader and driver are loaded here, on the caller's thread.
-  // Loaded on the warm-up's, a library constructor that throws (out of
-  // memory under an address-space limit) leaves the dynamic loader's lock
-  // held by a thread that then ends, and the next dlopen of the process
-  // waits forever (a morph under `ulimit -v 150000` hung one run in two).
-  try {
-    description();
-  } catch (...) {
-    return;  // the first real use meets the same failure
+  // Under an address-space limit the Vulkan loader and driver are loaded
+  // here, on the caller's thread: loaded on the warm-up's, a library
+  // constructor that throws (out of memory) leaves the dynamic loader's
+  // lock held by a thread that then ends, and the next dlopen of the
+  // process waits forever (a morph under `ulimit -v 150000` hung one run in
+  // two). Without one they load on the warm-up's thread too, beside the
+  // distances (lavapipe and its LLVM: 0.2 s of one core, which was the
+  // first 0.2 s of a morph at 128^3).
+  if (!addressSpaceUnlimited()) {
+    try {
+      description();
+    } catch (...) {
+      return;  // the first real use meets the same failure
+    }
   }
   try {
     warmUp_ = std::async(std::launch::async, [this] {

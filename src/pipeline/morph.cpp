@@ -423,6 +423,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const int steps = currentStep;  // the last frame's (a converged morph may have run one more)
   const double updates = double(lattice->cells()) * solver.stepsTaken();
   const nlohmann::json latticeDescription = lattice->describe();
+  std::shared_ptr<const TriangleBvh> targetTree = lattice->targetTree();
   current = FrameField();
   lattice->finish();
   returnFreedHeapMemory();  // the lattice's and the fields' memory, before the animation's peak
@@ -462,10 +463,13 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                  "a little off it; a larger " +
                  nameOf(Parameter::Tolerance) + " accepts that");
 
-  const SurfaceComparison final = compareSurfaces(meshes.back(), target, ComparisonOptions{20000, 0.0, false});
+  if (!targetTree) targetTree = std::make_shared<const TriangleBvh>(target, TriangleBvh::Queries::ClosestOnly);
+  const TriangleBvh lastTree(meshes.back(), TriangleBvh::Queries::ClosestOnly);
+  const SurfaceComparison final =
+      compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false});
   // Against what the grid can hold of the target, every vertex included: how
   // far the morph is from arriving.
-  const SurfaceComparison arrival = frameReport.compareWithTargetLevel(meshes.back());
+  const SurfaceComparison arrival = frameReport.compareWithTargetLevel(meshes.back(), lastTree);
   const MeshTopology last = analyzeTopology(meshes.back());
   return {
       {"command", "morph"},

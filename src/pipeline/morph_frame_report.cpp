@@ -110,9 +110,10 @@ void MorphFrameReport::surface(int frame, const FrameField& field, const Triangl
   f.genus = measured.genus;
 }
 
-SurfaceComparison MorphFrameReport::compareWithTargetLevel(const TriangleMesh& mesh) const
+SurfaceComparison MorphFrameReport::compareWithTargetLevel(const TriangleMesh& mesh, const TriangleBvh& meshTree) const
 {
-  return compareSurfaces(mesh, targetLevel_, ComparisonOptions{20000, 0.0, true});
+  const TriangleBvh levelTree(targetLevel_, TriangleBvh::Queries::ClosestOnly);
+  return compareSurfaces(mesh, meshTree, targetLevel_, levelTree, ComparisonOptions{20000, 0.0, true});
 }
 
 nlohmann::json MorphFrameReport::toJson() const

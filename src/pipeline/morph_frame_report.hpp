@@ -47,8 +47,9 @@ public:
   // last five null for a frame whose surface() was not measured.
   nlohmann::json toJson() const;
 
-  // A mesh against the target level, densely (every vertex too).
-  SurfaceComparison compareWithTargetLevel(const TriangleMesh& mesh) const;
+  // A mesh (whose tree is `meshTree`) against the target level, densely
+  // (every vertex too).
+  SurfaceComparison compareWithTargetLevel(const TriangleMesh& mesh, const TriangleBvh& meshTree) const;
 
 private:
   struct Frame {

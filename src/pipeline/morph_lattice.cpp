@@ -159,7 +159,9 @@ public:
       device.warmUpForTheBand();  // the device opens while the distances are computed
       // Each mesh's hierarchy, built once for its bricks, the bricks between
       // and its distances (46 ms each time for the armadillo).
-      const TriangleBvh sourceTree(source), targetTree(target);
+      const TriangleBvh sourceTree(source);
+      targetTree_ = std::make_shared<const TriangleBvh>(target);
+      const TriangleBvh& targetTree = *targetTree_;
       const double reach = halfWidth_ + 2.0;
       auto bricks = bricksNearSurface(source, sourceTree, frame, reach);
       const auto targetBricks = bricksNearSurface(target, targetTree, frame, reach);
@@ -200,6 +202,7 @@ public:
     return front_->sameUntil(step);
   }
 
+  std::shared_ptr<const TriangleBvh> targetTree() const override { return targetTree_; }
   size_t cells() const override { return bricks_->storedCells(); }
   nlohmann::json describe() const override
   {
@@ -287,6 +290,7 @@ private:
   }
 
   double halfWidth_ = 0.0;
+  std::shared_ptr<const TriangleBvh> targetTree_;
   std::shared_ptr<const BrickSet> bricks_;  // the band's, kept past the fields
   std::optional<MorphFront> front_;
   std::vector<uint8_t> held_;  // the held bricks set on the solver

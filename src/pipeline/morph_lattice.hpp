@@ -16,6 +16,7 @@
 #include "pipeline/frame_writer.hpp"
 #include "pipeline/morph.hpp"
 #include "pipeline/morph_schedule.hpp"
+#include "sdf/triangle_bvh.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "sdf/grid_frame.hpp"
 
@@ -64,6 +65,9 @@ public:
   // memory go before the animation is assembled. Nothing may be called
   // after.
   virtual void finish() = 0;
+  // The target mesh's tree, where the distances built one (the band's),
+  // else null: the last frame is compared with the target through it.
+  virtual std::shared_ptr<const TriangleBvh> targetTree() const { return nullptr; }
   // Cells the lattice updates per step, and a description for the report.
   virtual size_t cells() const = 0;
   virtual nlohmann::json describe() const = 0;

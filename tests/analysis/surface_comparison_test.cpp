@@ -87,6 +87,22 @@ TEST(SurfaceComparison, NormalAngleIsOrientedAndInDegrees)
   EXPECT_NEAR(c.bToA.max, 0.5, 1e-12);
 }
 
+// With trees built beforehand (a morph's target's, built with winding
+// numbers for its distances) the figures are the same to the bit.
+TEST(SurfaceComparison, TreesBuiltBeforeGiveTheSameFigures)
+{
+  const TriangleMesh inner = testing::icosphere(3, 1.0), outer = testing::icosphere(2, 1.1, {0.05, 0.0, 0.0});
+  const ComparisonOptions options{20000, 0.0, true};
+  const SurfaceComparison plain = compareSurfaces(inner, outer, options);
+  const TriangleBvh innerTree(inner), outerTree(outer, TriangleBvh::Queries::ClosestOnly);
+  const SurfaceComparison withTrees = compareSurfaces(inner, innerTree, outer, outerTree, options);
+  EXPECT_GT(plain.mean, 0.01);
+  EXPECT_EQ(withTrees.mean, plain.mean);
+  EXPECT_EQ(withTrees.hausdorff, plain.hausdorff);
+  EXPECT_EQ(withTrees.aToB.rms, plain.aToB.rms);
+  EXPECT_EQ(withTrees.bToA.meanNormalAngle, plain.bToA.meanNormalAngle);
+}
+
 TEST(SurfaceComparison, ResultDoesNotDependOnTheThreadCount)
 {
   const TriangleMesh a = testing::torusMesh(3.0, 1.0, 40, 20);

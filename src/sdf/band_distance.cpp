@@ -13,28 +13,55 @@ namespace lbmshape {
 
 namespace {
 
+// A block of cells that may hold one within the band, with a triangle near
+// it (the first hint of its cells' searches).
+struct NearBlock {
+  size_t block;
+  uint32_t triangle;
+};
+
+// The blocks with a cell within `bandVoxels` of the surface, and maybe a few
+// more. Every cell of a block is within halfDiagonal of its centre, so when
+// no triangle is within band + halfDiagonal of the centre, no cell of the
+// block is within band of the surface: most blocks of a grid, and of a
+// morph's band the bricks near the other mesh alone, end here.
 template <class Cells>
-size_t exactBandDistancesIn(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels,
-                            float* distance, uint32_t* nearest, Progress* progress, double progressWeight)
+std::vector<NearBlock> blocksNearSurface(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame,
+                                         double bandVoxels)
 {
-  if (progress) progress->beginPart("exact band", double(cells.blockCount()), progressWeight);
   const double band = bandVoxels * frame.voxel;
-  size_t written = 0;
-#pragma omp parallel for schedule(dynamic, 4) reduction(+ : written)
+  std::vector<uint32_t> found(cells.blockCount(), TriangleBvh::kNoTriangle);
+#pragma omp parallel for schedule(dynamic, 16)
   for (size_t b = 0; b < cells.blockCount(); ++b) {
-    if (interrupt::requested()) continue;  // the caller stops after the loop
+    if (b % 256 == 0 && interrupt::requested()) continue;  // the caller stops after the loop
     glm::ivec3 lo, hi;
     cells.blockRange(b, lo, hi);
-    if (progress) progress->advance();
-    // Every cell of the block is within halfDiagonal of its centre, so when
-    // no triangle is within band + halfDiagonal of the centre, no cell of the
-    // block is within band of the surface. Most blocks end here.
     const glm::dvec3 first(lo), last(hi - 1);
     const glm::dvec3 centre = frame.toWorld(0.5 * (first + last));
     const double halfDiagonal = 0.5 * frame.voxel * glm::length(last - first);
-    uint32_t hint = bvh.closest(centre, band + halfDiagonal).triangle;
-    if (hint == TriangleBvh::kNoTriangle) continue;
-    cells.forEachCellOf(b, [&](size_t i, const glm::ivec3& c) {
+    found[b] = bvh.closest(centre, band + halfDiagonal).triangle;
+  }
+  std::vector<NearBlock> near;
+  for (size_t b = 0; b < found.size(); ++b)
+    if (found[b] != TriangleBvh::kNoTriangle) near.push_back({b, found[b]});
+  return near;
+}
+
+// Cell by cell in the blocks near the surface, asking the hierarchy.
+template <class Cells>
+size_t exactBandDistancesIn(const Cells& cells, const std::vector<NearBlock>& near, const TriangleBvh& bvh,
+                            const GridFrame& frame, double bandVoxels, float* distance, uint32_t* nearest,
+                            Progress* progress, double progressWeight)
+{
+  if (progress) progress->beginPart("exact band", double(near.size()), progressWeight);
+  const double band = bandVoxels * frame.voxel;
+  size_t written = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : written)
+  for (size_t k = 0; k < near.size(); ++k) {
+    if (interrupt::requested()) continue;  // the caller stops after the loop
+    if (progress) progress->advance();
+    uint32_t hint = near[k].triangle;
+    cells.forEachCellOf(near[k].block, [&](size_t i, const glm::ivec3& c) {
       // The previous cell's triangle is usually this cell's too, or
       // nearly as close: its distance is a tight bound that lets the
       // search prune almost everything else.
@@ -56,8 +83,9 @@ size_t exactBandDistancesIn(const Cells& cells, const TriangleBvh& bvh, const Gr
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, double bandVoxels, Volume& distance,
                           std::vector<uint32_t>& nearest, Progress* progress, double progressWeight)
 {
-  return exactBandDistancesIn(GridCells(frame.extent, 8), bvh, frame, bandVoxels, distance.data(), nearest.data(),
-                              progress, progressWeight);
+  const GridCells cells(frame.extent, 8);
+  return exactBandDistancesIn(cells, blocksNearSurface(cells, bvh, frame, bandVoxels), bvh, frame, bandVoxels,
+                              distance.data(), nearest.data(), progress, progressWeight);
 }
 
 namespace {
@@ -193,20 +221,27 @@ double triangleNeighbourhoods(const TriangleBvh& bvh, const GridFrame& frame, do
 }  // namespace
 
 // On the band, the cheaper of two ways. Asking the hierarchy cell by cell
-// asks about every cell of every band brick, most of them farther than the
-// band; going triangle by triangle visits each triangle's neighbourhood,
-// which on a fine grid holds little but the cells that matter, and on a
-// coarse one (triangles of a voxel or less) overlaps its neighbours' many
-// times. A hierarchy query cost about twelve point-triangle distances on the
-// armadillo (measured at --res 128, 256, 512).
+// asks about every cell of the bricks near the surface, most of them
+// farther than the band; going triangle by triangle visits each triangle's
+// neighbourhood, which on a fine grid holds little but the cells that
+// matter, and on a coarse one (triangles of a voxel or less) overlaps its
+// neighbours' many times. A hierarchy query cost about twelve
+// point-triangle distances on the armadillo (measured at --res 128, 256,
+// 512). Only the bricks near the surface count: a morph's band holds both
+// meshes' and those between, and for the armadillo beside a sphere that
+// encloses it (--res 128) the queries took 48 ms where the triangles took
+// 155, counted against every brick of the band.
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
                           std::vector<float>& distance, std::vector<uint32_t>& nearest, Progress* progress,
                           double progressWeight)
 {
   constexpr double distancesPerQuery = 12.0;
-  if (triangleNeighbourhoods(bvh, frame, bandVoxels) < distancesPerQuery * double(cells.count()))
+  const std::vector<NearBlock> near = blocksNearSurface(cells, bvh, frame, bandVoxels);
+  interrupt::check("nothing was written");
+  if (triangleNeighbourhoods(bvh, frame, bandVoxels) < distancesPerQuery * double(near.size()) * brickCells)
     return exactBandByTriangles(bvh, frame, cells, bandVoxels, distance, nearest, progress, progressWeight);
-  return exactBandDistancesIn(cells, bvh, frame, bandVoxels, distance.data(), nearest.data(), progress, progressWeight);
+  return exactBandDistancesIn(cells, near, bvh, frame, bandVoxels, distance.data(), nearest.data(), progress,
+                              progressWeight);
 }
 
 size_t exactFaceDistances(const TriangleBvh& bvh, const GridFrame& frame, Volume& distance,

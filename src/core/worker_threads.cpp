@@ -1,5 +1,6 @@
 #include "core/worker_threads.hpp"
 
+#include <future>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -33,6 +34,47 @@ int prepareParallelRegions()
     started = omp_get_num_threads();
   }
   return started;
+}
+
+namespace {
+
+// This thread's parallel regions on one thread until the end of the scope.
+class OneThreadRegions {
+public:
+  OneThreadRegions() : threads_(omp_get_max_threads()) { omp_set_num_threads(1); }
+  ~OneThreadRegions() { omp_set_num_threads(threads_); }
+  OneThreadRegions(const OneThreadRegions&) = delete;
+  OneThreadRegions& operator=(const OneThreadRegions&) = delete;
+
+private:
+  int threads_;
+};
+
+}  // namespace
+
+void runSideBySide(const std::function<void()>& here, const std::function<void()>& there)
+{
+  std::future<void> other;
+  try {
+    other = std::async(std::launch::async, [&] {
+      const OneThreadRegions one;
+      there();
+    });
+  } catch (const std::system_error&) {
+    here();
+    there();
+    return;
+  }
+  {
+    const OneThreadRegions one;
+    try {
+      here();
+    } catch (...) {
+      other.wait();  // `there` uses what the caller lends both
+      throw;
+    }
+  }
+  other.get();
 }
 
 }  // namespace lbmshape

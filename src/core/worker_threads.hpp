@@ -8,9 +8,20 @@
 // pool for this thread at once, which OpenMP keeps for every later region.
 #pragma once
 
+#include <functional>
+
 namespace lbmshape {
 
 // Returns the number of threads this thread's parallel regions will use.
 int prepareParallelRegions();
+
+// Runs `here` on this thread and `there` on another at the same time, the
+// parallel regions of each on one thread: two jobs of about the same size
+// that parallelise less than perfectly (memory-bound loops, serial parts)
+// end sooner side by side than one after the other with every thread each
+// (a morph's two distance fields at 128^3: 824 -> 658 ms on two cores).
+// Where no thread can be started, runs them one after the other as they
+// are. An exception from either reaches the caller once both have ended.
+void runSideBySide(const std::function<void()>& here, const std::function<void()>& there);
 
 }  // namespace lbmshape

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/worker_threads.hpp"
 #include "lbm/band_width.hpp"
 #include "pipeline/morph_front.hpp"
 #include "pipeline/field_noise.hpp"
@@ -158,13 +159,21 @@ public:
     clock.time("sdf", [&](Progress& progress) {
       device.warmUpForTheBand();  // the device opens while the distances are computed
       // Each mesh's hierarchy, built once for its bricks, the bricks between
-      // and its distances (46 ms each time for the armadillo).
-      const TriangleBvh sourceTree(source);
-      targetTree_ = std::make_shared<const TriangleBvh>(target);
-      const TriangleBvh& targetTree = *targetTree_;
+      // and its distances (46 ms each time for the armadillo); the two
+      // meshes' side by side.
+      std::optional<TriangleBvh> sourceTreeMade;
+      std::shared_ptr<BrickSet> bricks, targetBricks;
       const double reach = halfWidth_ + 2.0;
-      auto bricks = bricksNearSurface(source, sourceTree, frame, reach);
-      const auto targetBricks = bricksNearSurface(target, targetTree, frame, reach);
+      runSideBySide(
+          [&] {
+            sourceTreeMade.emplace(source);
+            bricks = bricksNearSurface(source, *sourceTreeMade, frame, reach);
+          },
+          [&] {
+            targetTree_ = std::make_shared<const TriangleBvh>(target);
+            targetBricks = bricksNearSurface(target, *targetTree_, frame, reach);
+          });
+      const TriangleBvh &sourceTree = *sourceTreeMade, &targetTree = *targetTree_;
       for (size_t s = 0; s < targetBricks->activeCount(); ++s) {
         const glm::ivec3 b = targetBricks->brick(int32_t(s));
         bricks->activate(b.x, b.y, b.z);
@@ -272,9 +281,13 @@ private:
   {
     // The cells between the two surfaces need their true distances: the
     // force moves each from one to the other at its own pace.
+    // The two side by side, each on one thread (the progress is the
+    // source's).
     const BandDistanceOptions options{.halfWidth = halfWidth_, .clampBeyondHalfWidth = false, .progress = &progress};
-    source_ = signedDistanceOn(source.mesh, source.tree, frame_, bricks, options);
-    target_ = signedDistanceOn(target.mesh, target.tree, frame_, bricks, options);
+    BandDistanceOptions quiet = options;
+    quiet.progress = nullptr;
+    runSideBySide([&] { source_ = signedDistanceOn(source.mesh, source.tree, frame_, bricks, options); },
+                  [&] { target_ = signedDistanceOn(target.mesh, target.tree, frame_, bricks, quiet); });
   }
 
   std::vector<uint8_t> streams() const

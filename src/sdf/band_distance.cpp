@@ -25,14 +25,15 @@ struct NearBlock {
 // no triangle is within band + halfDiagonal of the centre, no cell of the
 // block is within band of the surface: most blocks of a grid, and of a
 // morph's band the bricks near the other mesh alone, end here.
+// With `stride` > 1, of every stride-th block only.
 template <class Cells>
 std::vector<NearBlock> blocksNearSurface(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame,
-                                         double bandVoxels)
+                                         double bandVoxels, size_t stride = 1)
 {
   const double band = bandVoxels * frame.voxel;
   std::vector<uint32_t> found(cells.blockCount(), TriangleBvh::kNoTriangle);
 #pragma omp parallel for schedule(dynamic, 16)
-  for (size_t b = 0; b < cells.blockCount(); ++b) {
+  for (size_t b = 0; b < cells.blockCount(); b += stride) {
     if (b % 256 == 0 && interrupt::requested()) continue;  // the caller stops after the loop
     glm::ivec3 lo, hi;
     cells.blockRange(b, lo, hi);
@@ -225,21 +226,30 @@ double triangleNeighbourhoods(const TriangleBvh& bvh, const GridFrame& frame, do
 // farther than the band; going triangle by triangle visits each triangle's
 // neighbourhood, which on a fine grid holds little but the cells that
 // matter, and on a coarse one (triangles of a voxel or less) overlaps its
-// neighbours' many times. A hierarchy query cost about twelve
-// point-triangle distances on the armadillo (measured at --res 128, 256,
-// 512). Only the bricks near the surface count: a morph's band holds both
-// meshes' and those between, and for the armadillo beside a sphere that
-// encloses it (--res 128) the queries took 48 ms where the triangles took
-// 155, counted against every brick of the band.
+// neighbours' many times. Only the bricks near the surface count: a
+// morph's band holds both meshes' and those between. Measured on the
+// armadillo and the sphere, a query of a cell near the surface cost 13 to
+// 52 point-triangle distances (denoise at 256^3, the sphere and the
+// armadillo of a morph at 128^3 and 256^3); 24 picks the faster way in all
+// five (the armadillo of the morph at 128^3: 48 ms where the triangles
+// took 155).
 size_t exactBandDistances(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells, double bandVoxels,
                           std::vector<float>& distance, std::vector<uint32_t>& nearest, Progress* progress,
                           double progressWeight)
 {
-  constexpr double distancesPerQuery = 12.0;
+  constexpr double distancesPerQuery = 24.0;
+  // How many bricks are near, from every 16th: a denoise's band is near its
+  // surface throughout, and counting them all would cost it a query a brick
+  // when it goes by triangles.
+  constexpr size_t stride = 16;
+  const size_t sampled = (cells.blockCount() + stride - 1) / stride;
+  const double nearFraction =
+      double(blocksNearSurface(cells, bvh, frame, bandVoxels, stride).size()) / double(std::max<size_t>(sampled, 1));
+  interrupt::check("nothing was written");
+  if (triangleNeighbourhoods(bvh, frame, bandVoxels) < distancesPerQuery * nearFraction * double(cells.count()))
+    return exactBandByTriangles(bvh, frame, cells, bandVoxels, distance, nearest, progress, progressWeight);
   const std::vector<NearBlock> near = blocksNearSurface(cells, bvh, frame, bandVoxels);
   interrupt::check("nothing was written");
-  if (triangleNeighbourhoods(bvh, frame, bandVoxels) < distancesPerQuery * double(near.size()) * brickCells)
-    return exactBandByTriangles(bvh, frame, cells, bandVoxels, distance, nearest, progress, progressWeight);
   return exactBandDistancesIn(cells, near, bvh, frame, bandVoxels, distance.data(), nearest.data(), progress,
                               progressWeight);
 }

@@ -7,6 +7,7 @@
 
 #include <omp.h>
 
+#include "core/host_memory.hpp"
 #include "core/log.hpp"
 
 namespace lbmshape {
@@ -54,6 +55,16 @@ private:
 
 void runSideBySide(const std::function<void()>& here, const std::function<void()>& there)
 {
+  // Under an address-space limit, one after the other: a thread of its own
+  // costs `there` a malloc arena, 64 MB of address space reserved, and
+  // what is left then runs out inside lavapipe, which does not check every
+  // allocation (a morph under `ulimit -v 800000` died of SIGSEGV in its
+  // shader threads one run in five, against none one after the other).
+  if (!addressSpaceUnlimited()) {
+    here();
+    there();
+    return;
+  }
   std::future<void> other;
   try {
     other = std::async(std::launch::async, [&] {

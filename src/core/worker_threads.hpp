@@ -20,8 +20,9 @@ int prepareParallelRegions();
 // that parallelise less than perfectly (memory-bound loops, serial parts)
 // end sooner side by side than one after the other with every thread each
 // (a morph's two distance fields at 128^3: 824 -> 658 ms on two cores).
-// Where no thread can be started, runs them one after the other as they
-// are. An exception from either reaches the caller once both have ended.
+// Under an address-space limit (`ulimit -v`), or where no thread can be
+// started, runs them one after the other as they are. An exception from
+// either reaches the caller once both have ended.
 void runSideBySide(const std::function<void()>& here, const std::function<void()>& there);
 
 }  // namespace lbmshape

@@ -196,8 +196,22 @@ void GpuContext::recordInto(vk::raii::CommandBuffer& cmd, vk::CommandBufferUsage
 void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd)
 {
   queue.submit(vk::SubmitInfo({}, {}, cmd), *fence_);
-  if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
-    throw DeviceError("timed out waiting for the Vulkan device");
+  try {
+    if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+      throw DeviceError("timed out waiting for the Vulkan device");
+  } catch (...) {
+    // The wait failed (out of host memory, under an address-space limit),
+    // not the work: it may still run, and the exception is about to unwind
+    // whoever owns the buffers it uses. They may go only once it ends (a
+    // morph under `ulimit -v 800000` died of SIGSEGV in lavapipe's shader
+    // threads, its buffers freed under them).
+    try {
+      queue.waitIdle();
+    } catch (...) {
+      device_.waitIdle();
+    }
+    throw;
+  }
   device_.resetFences(*fence_);
 }
 

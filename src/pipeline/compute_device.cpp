@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/host_memory.hpp"
+#include "core/memory_sizes.hpp"
 #include "gpu/gpu_context.hpp"
 #include "gpu/vulkan_instance.hpp"
 #include "lbm/band_reference_solver.hpp"
@@ -142,16 +143,40 @@ void ComputeDevice::checkFits(const Extent3& extent) const
                   "the reference solver's " + extent.toString() + " grid", extent, 3.0);
 }
 
+namespace {
+
+// Lavapipe allocates as it runs a dispatch (the frames of its shader
+// threads) and does not check those allocations: under an address-space
+// limit that leaves it less than this, a morph at `ulimit -v 800000` had 11
+// MB left once its solver was made and died of SIGSEGV in the driver one
+// run in ten. A solver that leaves less is refused, with exit 5, as any
+// other allocation that fails.
+constexpr uint64_t driverHeadroomBytes = uint64_t(64) << 20;
+
+template <class Solver>
+std::unique_ptr<Solver> withDriverHeadroom(std::unique_ptr<Solver> solver)
+{
+  const uint64_t left = hostMemoryBytes();
+  if (left < driverHeadroomBytes)
+    throw DeviceError("out of memory: " + mebibytes(left) + " of address space is left once the lattice is made, and " +
+                      "the Vulkan driver needs about " + mebibytes(driverHeadroomBytes) +
+                      " more to run it; raise the limit (ulimit -v) or use a coarser grid (--res)");
+  return solver;
+}
+
+}  // namespace
+
 std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) const
 {
   if (!isReference()) checkFitsDevice(latticeLayout(extent), description());
-  if (!isReference()) return std::make_unique<VulkanSolver>(*gpu(), extent);
+  if (!isReference()) return withDriverHeadroom<LatticeSolver>(std::make_unique<VulkanSolver>(*gpu(), extent));
   return std::make_unique<ReferenceSolver>(extent);
 }
 
 std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const BrickSet> bricks) const
 {
-  if (!isReference()) return std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks));
+  if (!isReference())
+    return withDriverHeadroom<BandSolver>(std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks)));
   return std::make_unique<BandReferenceSolver>(std::move(bricks));
 }
 

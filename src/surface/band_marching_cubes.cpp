@@ -1,6 +1,7 @@
 #include "surface/band_marching_cubes.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <array>
 #include <bitset>
 #include <cmath>
@@ -203,8 +204,22 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
     allFinite = allFinite && finite;
   }
   if (!allFinite) throw NumericalError("the field holds a value that is not a finite number");
+  // The triangles' lists grow as they are made: an allocation that fails
+  // (under an address-space limit) must not leave the parallel loop, which
+  // ends the process at once, beside the device's threads (a morph under
+  // `ulimit -v 800000` died of SIGSEGV one run in twenty): the first
+  // failure is kept and thrown after the loop.
+  std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 4)
-  for (size_t s = 0; s < slots; ++s) cubes.triangulate(int32_t(s), sides, perBrick[s]);
+  for (size_t s = 0; s < slots; ++s) {
+    try {
+      cubes.triangulate(int32_t(s), sides, perBrick[s]);
+    } catch (...) {
+#pragma omp critical(lbmshape_band_marching_cubes_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
 
   // Where each brick's triangles start in the mesh.
   std::vector<size_t> firstTriangle(slots + 1, 0);

@@ -7,6 +7,7 @@
 #endif
 
 #include <algorithm>
+#include <optional>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -33,25 +34,28 @@ uint64_t mappedBytes()
   return pages * uint64_t(sysconf(_SC_PAGE_SIZE));
 }
 
+// The process's address-space limit (`ulimit -v`), if one is set.
+std::optional<uint64_t> addressSpaceLimit()
+{
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  return uint64_t(limit.rlim_cur);
+}
+
 }  // namespace
 
 uint64_t hostMemoryBytes()
 {
   uint64_t bytes = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
   bytes = std::min(bytes, cgroupLimit());
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+  if (const std::optional<uint64_t> limit = addressSpaceLimit()) {
     const uint64_t mapped = mappedBytes();
-    bytes = std::min<uint64_t>(bytes, limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 0);
+    bytes = std::min<uint64_t>(bytes, *limit > mapped ? *limit - mapped : 0);
   }
   return bytes;
 }
 
-bool addressSpaceUnlimited()
-{
-  rlimit limit{};
-  return getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur == RLIM_INFINITY;
-}
+bool addressSpaceUnlimited() { return !addressSpaceLimit(); }
 
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power)
 {

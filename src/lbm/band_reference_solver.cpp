@@ -109,14 +109,17 @@ void BandReferenceSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
   heldSlots_ = std::move(heldPerSlot);
 }
 
+BandReferenceSolver::Sourced BandReferenceSolver::withSource(float sum, size_t i, float decay, float scale) const
+{
+  if (!source_) return {sum, 0.0f};
+  const float a = scale * source_->base.values()[i];
+  const float X = (sum + 0.5f * a) / (1.0f + 0.5f * decay);
+  return {X, a - decay * X};
+}
+
 glm::vec4 BandReferenceSolver::heldStep(glm::vec4 own, size_t i, float c, float omega) const
 {
-  float X = own.x, S = 0.0f;
-  if (source_) {
-    const float a = c * source_->base.values()[i];
-    X = (X + 0.5f * a) / (1.0f + 0.5f * c);
-    S = a - c * X;
-  }
+  const auto [X, S] = withSource(own.x, i, c, c);
   return glm::vec4(X + 0.5f * S, (1.0f - omega) * glm::vec3(own.y, own.z, own.w));
 }
 
@@ -130,11 +133,8 @@ void BandReferenceSolver::freezeBeforeSteps(int count)
   // X of the state they freeze with, as a field pass (sweep<false>) makes it.
   if (frozenField_.empty()) frozenField_.assign(current_.size(), 0.0f);
   for (int32_t s : freezing)
-    for (size_t i = size_t(s) * brickCells; i < size_t(s + 1) * brickCells; ++i) {
-      float X = current_[i].x;
-      if (source_) X = (X + 0.5f * source_->scale * source_->base.values()[i]) / (1.0f + 0.5f * source_->decay);
-      frozenField_[i] = X;
-    }
+    for (size_t i = size_t(s) * brickCells; i < size_t(s + 1) * brickCells; ++i)
+      frozenField_[i] = withSource(current_[i].x, i, p.decay, p.scale).X;
 }
 
 void BandReferenceSolver::initialize(BandField field, std::vector<uint8_t> streams)
@@ -239,7 +239,6 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
   const std::vector<int32_t>& work = Collide ? work_ : all;
   const glm::vec4* current = current_.data();
   glm::vec4* next = next_.data();
-  const float* A = source_ ? source_->base.values().data() : nullptr;
   const float decay = source_ ? source_->decay : 0.0f;
   const float scale = source_ ? source_->scale : 1.0f;
 #pragma omp parallel for schedule(static)
@@ -265,14 +264,9 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
       const glm::vec4 own = current[i];
       // A held brick's cells pull from themselves: f_i = w_i (rho* + 3 e_i . j*)
       // sum to rho* with flux j*, no f formed (as band_hold.comp).
-      auto [X, J] =
+      const auto [sum, J] =
           held ? Pulled{own.x, glm::vec3(own.y, own.z, own.w)} : pull(current, around, e, c, l, own, streams_[i] != 0);
-      float S = 0.0f;
-      if (A) {
-        const float a = scale * A[i];
-        X = (X + 0.5f * a) / (1.0f + 0.5f * decay);
-        S = a - decay * X;
-      }
+      const auto [X, S] = withSource(sum, i, decay, scale);
       if constexpr (!Collide) {
         (*fieldOut)[i] = X;
       } else {

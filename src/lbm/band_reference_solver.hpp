@@ -42,7 +42,14 @@ private:
   void applyPaperRule();
   // The bricks that freeze before the next `count` steps: their field kept.
   void freezeBeforeSteps(int count);
-  // A held step of cell i from `from` into current_ under decay (and
+  // X from the sum of cell i's pulled f under the source at decay and
+  // scale (solved exactly for S = scale base - decay X), and S; without a
+  // source X is the sum and S 0 (band_step.glsl's fieldFromSum).
+  struct Sourced {
+    float X, S;
+  };
+  Sourced withSource(float sum, size_t i, float decay, float scale) const;
+  // A held step of a cell whose moments are `own` (cell i) under decay (and
   // scale) c and omega (FrozenBricks::CatchUp).
   glm::vec4 heldStep(glm::vec4 own, size_t i, float c, float omega) const;
   std::vector<glm::vec4>& copy(int k) { return k == currentCopy_ ? current_ : next_; }

@@ -456,12 +456,9 @@ struct BandVulkanSolver::Resources {
     const WorkRange range = extraList(freezing);
     push.workOffset = range.offset;
     push.works = range.count;
-    context.runAndWait([&](vk::CommandBuffer cmd) {
-      dispatch(cmd, context.program(holdProgram()), current, push);
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
-                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderWrite), {},
-                          {});
-    });
+    // Its own submission: the next one's first barrier (GpuContext::recordInto)
+    // makes what it wrote visible.
+    context.runAndWait([&](vk::CommandBuffer cmd) { dispatch(cmd, context.program(holdProgram()), current, push); });
     uploadWork();
   }
 
@@ -488,7 +485,8 @@ struct BandVulkanSolver::Resources {
   }
 
   // A dispatch over `push.works` bricks through descriptor set `set` (0 or
-  // 1: reading that copy and writing the other).
+  // 1: reading that copy and writing the other; 2 or 3: reading and writing
+  // copy set - 2).
   void dispatch(vk::CommandBuffer cmd, const gpu::ComputeProgram& program, int set,
                 const band_shader::StepParameters& push) const
   {
@@ -699,13 +697,8 @@ void BandVulkanSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
     push.omega = group.omega;
     push.perCellOmega = push.paperRule = 0;
     const int set = group.copy == r_->current ? 2 + r_->current : group.copy;
-    r_->context.runAndWait([&](vk::CommandBuffer cmd) {
-      r_->dispatch(cmd, r_->context.program(r_->holdProgram()), set, push);
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
-                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite,
-                                            vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
-                          {}, {});
-    });
+    r_->context.runAndWait(
+        [&](vk::CommandBuffer cmd) { r_->dispatch(cmd, r_->context.program(r_->holdProgram()), set, push); });
   }
   r_->heldSlots = std::move(heldPerSlot);
   if (!r_->stepSlots.empty()) r_->uploadWork();

@@ -26,8 +26,8 @@ GlbChunks glbChunks(std::string_view glb)
 
 std::string glbHead(std::string json, size_t binaryBytes)
 {
-  json.resize((json.size() + 3) / 4 * 4, ' ');
-  const size_t binaryChunk = (binaryBytes + 3) / 4 * 4;
+  json.resize(glbPadded(json.size()), ' ');
+  const size_t binaryChunk = glbPadded(binaryBytes);
   const size_t total = 12 + 8 + json.size() + (binaryBytes == 0 ? 0 : 8 + binaryChunk);
   std::string out;
   out.reserve(28 + json.size());
@@ -44,18 +44,12 @@ std::string glbHead(std::string json, size_t binaryBytes)
   return out;
 }
 
-namespace {
-
-size_t binaryPadding(size_t binaryBytes) { return (4 - binaryBytes % 4) % 4; }
-
-}  // namespace
-
 std::string glbFile(std::string json, std::string binary)
 {
   std::string out = glbHead(std::move(json), binary.size());
   out.reserve(out.size() + binary.size() + 3);
   out += binary;
-  out.append(binaryPadding(binary.size()), '\0');
+  out.append(glbPadded(binary.size()) - binary.size(), '\0');
   return out;
 }
 
@@ -63,7 +57,7 @@ void writeGlb(std::ostream& out, std::string json, std::string_view binary)
 {
   out << glbHead(std::move(json), binary.size());
   out.write(binary.data(), std::streamsize(binary.size()));
-  out.write("\0\0\0", std::streamsize(binaryPadding(binary.size())));
+  out.write("\0\0\0", std::streamsize(glbPadded(binary.size()) - binary.size()));
 }
 
 }  // namespace lbmshape

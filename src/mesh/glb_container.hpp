@@ -12,6 +12,9 @@ namespace lbmshape {
 // The little-endian word at `at` (the caller has checked that it is there).
 uint32_t glbWord(std::string_view bytes, size_t at);
 
+// `bytes` rounded up to the 4-byte alignment of a GLB chunk.
+inline size_t glbPadded(size_t bytes) { return (bytes + 3) / 4 * 4; }
+
 // The JSON and binary chunks (the binary one empty when there is none) of
 // a GLB whose layout is known to be sound: one lbmshape wrote, or one the
 // reader has checked.

@@ -7,14 +7,9 @@
 #include "mesh/glb_container.hpp"
 
 namespace lbmshape {
-namespace {
-
-size_t paddedToFour(size_t bytes) { return (bytes + 3) / 4 * 4; }
-
-}  // namespace
 
 GlbStream::GlbStream(std::filesystem::path target, size_t jsonRoom)
-    : file_(std::move(target)), out_(file_.open()), jsonRoom_(paddedToFour(jsonRoom))
+    : file_(std::move(target)), out_(file_.open()), jsonRoom_(glbPadded(jsonRoom))
 {
   // The head of the file (glbHead), the JSON chunk's room and the binary
   // chunk's header included: all written again by finish().
@@ -40,7 +35,7 @@ void GlbStream::requireGood()
 void GlbStream::append(const std::vector<unsigned char>& bytes)
 {
   // A .glb states its length in 32 bits.
-  if (headBytes() + paddedToFour(binaryBytes_ + bytes.size()) > UINT32_MAX)
+  if (headBytes() + glbPadded(binaryBytes_ + bytes.size()) > UINT32_MAX)
     throw OutputError("cannot write " + file_.target().string() +
                       ": a .glb holds at most 4 GiB; give fewer frames, a coarser grid or --no-animation");
   out_.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
@@ -50,7 +45,7 @@ void GlbStream::append(const std::vector<unsigned char>& bytes)
 
 void GlbStream::finish(const std::string& json)
 {
-  const size_t binaryChunkBytes = paddedToFour(binaryBytes_);
+  const size_t binaryChunkBytes = glbPadded(binaryBytes_);
   out_ << std::string(binaryChunkBytes - binaryBytes_, '\0');
   if (json.size() > jsonRoom_) {
     // Longer than the room left for it: the file again, its binary chunk

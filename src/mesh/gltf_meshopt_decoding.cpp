@@ -138,7 +138,7 @@ std::optional<std::string> decodeMeshoptGlb(const MeshSource& source, std::strin
         buffer["extensions"].contains(meshoptExtension)) {
       buffer = {{"byteLength", 4}, {"uri", "data:application/octet-stream;base64,AAAAAA=="}};
     }
-  decodedBinary.resize((decodedBinary.size() + 3) / 4 * 4, '\0');
+  decodedBinary.resize(glbPadded(decodedBinary.size()), '\0');
   (*buffers)[0]["byteLength"] = decodedBinary.size();
   for (const char* list : {"extensionsUsed", "extensionsRequired"})
     if (json.contains(list) && json[list].is_array()) {

@@ -2,7 +2,7 @@
 # The trade-off of denoising, measured beside OpenVDB. For every mesh and
 # noise level: a noisy copy (Gaussian noise along the normals, sigma in
 # voxels of the grid), then lbmshape's denoise at its defaults (which
-# preserve features) and with
+# preserve features), with --twicing, and with
 # 1..10 steps (isotropic, --preserve-features, --anisotropic), and OpenVDB's
 # LevelSetFilter::meanCurvature with 1..6 iterations (3 is what users run)
 # at the same voxel size; each result compared with the clean mesh:
@@ -18,7 +18,8 @@
 #   (../shared/peers/openvdb/build.sh builds the peer; without VDB_PEER the
 #   OpenVDB rows are left out)
 # Environment: LBMSHAPE (build/lbmshape), RES (128), SIGMAS ("0.25 0.5 1"), STEPS ("1 2 ... 10"),
-#   ITERS ("1 2 3 4 5 6"), METHODS ("isotropic preserve-features anisotropic"),
+#   ITERS ("1 2 3 4 5 6"), METHODS ("isotropic preserve-features anisotropic"; "none": the
+#   default and --twicing rows alone),
 #   OUT (build/tradeoff), PLOT (docs/images/denoise-tradeoff.png; "" for none),
 #   REPLOT (1: draw PLOT again from OUT/tradeoff.csv, measuring nothing)
 set -euo pipefail
@@ -58,7 +59,10 @@ for mesh in "$@"; do
     row noisy 0 "$noisy"
     "$lbmshape" -q denoise "$noisy" "$out/result.obj" --res "$res" --force
     row lbmshape-default 0 "$out/result.obj"
+    "$lbmshape" -q denoise "$noisy" "$out/result.obj" --res "$res" --twicing --force
+    row lbmshape-twicing 0 "$out/result.obj"
     for method in "${methods[@]}"; do
+      [[ $method != none ]] || continue
       flag=(--"$method")
       for k in "${steps[@]}"; do
         "$lbmshape" -q denoise "$noisy" "$out/result.obj" --res "$res" --steps "$k" "${flag[@]}" --force
@@ -98,7 +102,7 @@ for f in "$out"/curve_*.dat; do sort -g -o "$f" "$f"; done
 panels=""
 for sigma in "${sigmas[@]}"; do
   curves=""
-  for method in "${methods[@]}" openvdb lbmshape-default; do
+  for method in "${methods[@]}" openvdb lbmshape-default lbmshape-twicing; do
     f=$out/curve_${sigma}_$method.dat
     [[ -f $f ]] || continue
     case $method in
@@ -107,8 +111,9 @@ for sigma in "${sigmas[@]}"; do
       anisotropic) style="lc rgb '#9467bd' pt 9" title="lbmshape --anisotropic (paper)" ;;
       openvdb) style="lc rgb '#d62728' pt 13" title="OpenVDB meanCurvature" ;;
       lbmshape-default) style="lc rgb 'black' pt 3 ps 2.5 lw 2" title="lbmshape, no options" ;;
+      lbmshape-twicing) style="lc rgb 'black' pt 6 ps 2.5 lw 2" title="lbmshape --twicing" ;;
     esac
-    with="linespoints"; [[ $method == lbmshape-default ]] && with="points"
+    with="linespoints"; [[ $method == lbmshape-default || $method == lbmshape-twicing ]] && with="points"
     curves+="'$f' using 3:2 with $with $style title \"$title\", "
     [[ $method == openvdb || $method == isotropic ]] &&
       curves+="'$f' using 3:2:(sprintf('%d', \$1)) with labels offset 0.8,0.6 font ',8' tc rgb 'gray30' notitle, "

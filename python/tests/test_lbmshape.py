@@ -72,6 +72,10 @@ class Denoise(unittest.TestCase):
         self.assertEqual(report["smoothing"], "preserve-features")  # the default
         self.assertEqual(report["grid"]["size"], [40, 40, 40])
         self.assertIn("lbm", report["ms"])
+        self.assertFalse(report["twicing"])  # the default
+        _, _, twiced = lbmshape.denoise(v, f, res=40, steps=3, twicing=True, report=True)
+        self.assertTrue(twiced["twicing"])
+        self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
 
     def test_bad_arrays_and_parameters_name_what_is_wrong(self):
         v, f = noisy_sphere()

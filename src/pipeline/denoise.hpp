@@ -43,6 +43,10 @@ struct DenoiseOptions {
   // volume the input did (surface/volume_keeping.hpp); off: the paper's
   // scheme, which shrinks the surface as mean-curvature flow does.
   bool keepVolume = true;
+  // The smoothing twiced, 2 S X - S^2 X (twicing.hpp): thin parts that
+  // mean curvature flow erodes kept, noise removed as well or better, at
+  // about twice the lattice steps (--twicing; docs/denoising.md).
+  bool twicing = false;
   FieldNoise noise;  // the paper's noise on the distance field, off by default
   // The lattice on the narrow band around the surface (band/), or on every
   // cell of the grid (the paper's, and the reference the band is tested

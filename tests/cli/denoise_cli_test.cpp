@@ -193,6 +193,25 @@ TEST(DenoiseCli, SmoothingPreservesFeaturesUnlessAskedOtherwise)
   }
 }
 
+// --twicing runs the smoothing twice (docs/denoising.md, "Twicing"); off
+// by default.
+TEST(DenoiseCli, TwicingIsAFlagThatDoublesTheSmoothingsSteps)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  for (const bool twicing : {false, true}) {
+    std::vector<std::string> args = {"denoise", input, output,        "--res",  "24",
+                                     "--steps", "3",   "--isotropic", "--json", "--force"};
+    if (twicing) args.push_back("--twicing");
+    testing::CliResult r = testing::runLbmshape(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["twicing"], twicing);
+    EXPECT_EQ(j["steps"], 3);
+    EXPECT_EQ(j["steps_run"], twicing ? 6 : 3);
+  }
+}
+
 TEST(DenoiseCli, WritesValidGltfAndReportsJson)
 {
   testing::ScratchFolder folder;

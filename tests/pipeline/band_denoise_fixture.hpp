@@ -18,6 +18,7 @@ struct BandCase {
   std::string name;
   Smoothing smoothing;
   int steps;
+  bool twicing = false;
 };
 
 inline void PrintTo(const BandCase& c, std::ostream* out) { *out << c.name; }
@@ -39,6 +40,7 @@ protected:
     options.grid.resolution = resolution;
     options.smoothing = GetParam().smoothing;
     options.steps = GetParam().steps;
+    options.twicing = GetParam().twicing;
     const DenoiseResult band = denoiseFile(input, folder / "band.glb", options, device);
     options.dense = true;
     const DenoiseResult grid = denoiseFile(input, folder / "grid.glb", options, device);
@@ -71,5 +73,6 @@ inline std::string bandCaseName(const ::testing::TestParamInfo<BandCase>& info) 
           ::lbmshape::testing::BandCase{"isotropic", ::lbmshape::Smoothing::Isotropic, 7},                \
           ::lbmshape::testing::BandCase{"isotropic_40_steps", ::lbmshape::Smoothing::Isotropic, 40},      \
           ::lbmshape::testing::BandCase{"preserve_features", ::lbmshape::Smoothing::PreserveFeatures, 7}, \
-          ::lbmshape::testing::BandCase{"anisotropic", ::lbmshape::Smoothing::Anisotropic, 7}),           \
+          ::lbmshape::testing::BandCase{"anisotropic", ::lbmshape::Smoothing::Anisotropic, 7},            \
+          ::lbmshape::testing::BandCase{"twiced", ::lbmshape::Smoothing::PreserveFeatures, 8, true}),     \
       ::lbmshape::testing::bandCaseName)

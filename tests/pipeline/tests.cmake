@@ -11,6 +11,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/morph_front_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recycled_fields_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/twicing_test.cpp
 )
 lbmshape_shared_asset_test(pipeline_shared_mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/shared_band_denoise_test.cpp

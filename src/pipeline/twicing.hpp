@@ -6,7 +6,8 @@
 // curvature flow's shrinking of thin parts is cancelled to first order).
 // The lattice runs S and then S again on its result, so the price is n
 // more steps and the field of step n held meanwhile.
-// docs/denoising.md ("Twicing") has the measurements that made it the default.
+// Opt-in (--twicing) for that price; docs/denoising.md ("Twicing") has the
+// measurements, against OpenVDB and the default.
 #pragma once
 
 #include <cstddef>
@@ -20,11 +21,11 @@ inline void twice(std::vector<float>& once, const std::vector<float>& twice)
   for (size_t i = 0; i < once.size(); ++i) once[i] = 2.0f * once[i] - twice[i];
 }
 
-// --steps auto with twicing: the smoothing's n steps from the step at which
-// plain smoothing's surface speed levelled off (smoothing_stop.hpp). The
-// twiced response at 2 m steps is below plain smoothing's at m for every
-// ripple that m plain steps halve or more (1 - (1 - e^(-2y))^2 < e^(-y)
-// exactly when e^(-y) < 1/2), and keeps the shape's slower curvature better.
+// --steps auto with twicing: S's steps, twice the step n at which plain
+// smoothing's surface speed levelled off (smoothing_stop.hpp). The twiced
+// response over 2n steps is below plain smoothing's over n for every ripple
+// that n plain steps halve or more (1 - (1 - e^(-2y))^2 < e^(-y) exactly
+// when e^(-y) < 1/2), and keeps the shape's slower curvature better.
 inline int twicedSteps(int levelledOffAt) { return 2 * levelledOffAt; }
 
 }  // namespace lbmshape

@@ -43,7 +43,8 @@ void featureRule()
   fieldRow(0, -1, backA, backB);
   fieldRow(0, 1, frontA, frontB);
   // Along x: the cells beside the row's ends from the bricks beside it.
-  const int leftSlot = neighbourSlot(-1, 0, 0), rightSlot = neighbourSlot(1, 0, 0);
+  const ivec3 bricks = rowBricks(0, 0);
+  const int leftSlot = bricks.x, rightSlot = bricks.z;
   const float left = origin.x > 0 && leftSlot >= 0 ? moment(momentAt(leftSlot, 0, y, z, 1)).w : ownA.x;
   const float right = rightSlot >= 0 ? moment(momentAt(rightSlot, 0, y, z, 0)).x : ownB.w;
   const vec4 leftA = vec4(left, ownA.xyz), leftB = vec4(ownA.w, ownB.xyz);

@@ -8,8 +8,9 @@
 //   field, omega, gamma, source base: [s][l / 4] (the order of BandField's values)
 // and as words:
 //   streams: uint [s][y + 8 z], bit x set when cell (x, y, z) streams
-//   neighbours: int [s][27]: slots of the brick's neighbours, (dx + 1) +
-//     3 (dy + 1) + 9 (dz + 1), -1 for none
+//   neighbours: ivec4 [s][(dy + 1) + 3 (dz + 1)]: the slots of the bricks
+//     at (-1, dy, dz), (0, dy, dz) and (1, dy, dz) from brick s, -1 for
+//     none, and a 0: a row's brick and the two beside it in one fetch
 //   origins: ivec4 [s]: the brick's first cell in the grid
 //   work: int [w]: the slot each workgroup updates, from workOffset on (a
 //     step skips the bricks that never change; the field pass reads all)
@@ -28,7 +29,7 @@
 // Bindings of set 0.
 #define BAND_BINDING_MOMENTS 0     // samplerBuffer, the current copy
 #define BAND_BINDING_STREAMS 1     // usamplerBuffer
-#define BAND_BINDING_NEIGHBOURS 2  // isamplerBuffer
+#define BAND_BINDING_NEIGHBOURS 2  // isamplerBuffer (RGBA32I)
 #define BAND_BINDING_ORIGINS 3     // isamplerBuffer (RGBA32I)
 #define BAND_BINDING_OMEGA 4       // samplerBuffer
 #define BAND_BINDING_SOURCE 5      // samplerBuffer
@@ -38,7 +39,7 @@
 #define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule, the feature rule's omega
 
 // What a dispatch of band_step.comp does (the push constant `pass`): one
-// pipeline for all of it, since lavapipe spends some 100 ms on each.
+// pipeline a run for all of it, since lavapipe spends some 100 ms on each.
 #define BAND_PASS_FIELD 0           // X of every stored cell to the field buffer
 #define BAND_PASS_STEP 1            // a lattice step
 // X into the copy of the moments that the next step would write, where its
@@ -50,6 +51,8 @@
 #define BAND_SPEC_W_REST 0
 #define BAND_SPEC_W_AXIAL 1
 #define BAND_SPEC_W_DIAGONAL 2
+#define BAND_SPEC_HAS_SOURCE 3  // the morph's source term
+#define BAND_SPEC_PAPER_RULE 4  // the paper's anisotropic rule
 
 // The push constants, as a list of (type, name) for both languages.
 #define BAND_STEP_PARAMETERS(FIELD) \
@@ -66,8 +69,6 @@
   FIELD(float, gamma0)              \
   FIELD(int, pass) /* BAND_PASS_*: what the dispatch does */               \
   FIELD(int, perCellOmega) /* 1: omega from the omega buffer */                  \
-  FIELD(int, hasSource)    /* 1: the morph's source term */                       \
-  FIELD(int, paperRule)    /* 1: the paper's anisotropic rule */                \
   FIELD(float, kappaEdge)  /* the feature rule's (band_feature_rule.comp) */      \
   FIELD(float, lowestGamma) /* its lowest gamma, min(ADAPTIVE_GAMMA_LOWEST, gamma0) */ \
   FIELD(int, writeField)   /* 1: a step also stores the X it pulled, as the field pass... */ \
@@ -94,7 +95,7 @@ namespace lbmshape::band_shader {
 struct StepParameters {
   BAND_STEP_PARAMETERS(BAND_DECLARE_FIELD)
 };
-static_assert(sizeof(StepParameters) == 20 * 4, "push constants: 20 words");
+static_assert(sizeof(StepParameters) == 18 * 4, "push constants: 18 words");
 struct SpeedParameters {
   BAND_SPEED_PARAMETERS(BAND_DECLARE_FIELD)
 };

@@ -18,26 +18,31 @@ ivec3 origin;    // the brick's first cell
 
 // vec4 index of moment `m` of row (yy, zz), half hh, of brick s.
 int momentAt(int s, int m, int yy, int zz, int hh) { return BAND_MOMENT_INDEX(s, m, zz * 8 + yy, hh); }
-int neighbourSlot(int dx, int dy, int dz) { return texelFetch(neighbours, slot * 27 + (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1)).x; }
+// The slots of the bricks at (-1, dy, dz), (0, dy, dz) and (1, dy, dz) from
+// this one (-1: none), in one fetch: on lavapipe a fetch per row and per row
+// end took a step a sixth of its time.
+ivec3 rowBricks(int dy, int dz) { return texelFetch(neighbours, slot * 9 + (dy + 1) + 3 * (dz + 1)).xyz; }
 vec4 moment(int index) { return texelFetch(moments, index); }
 
 bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 
 // Where row (yy, zz) of this brick's coordinates (-1 .. 8) lies: the slot
-// and the row within it, and the brick beside this one that holds it (by,
-// bz); `valid` false where it is beyond the grid's faces or in a brick
-// outside the band, and then the invocation's own row stands in for it.
+// and the row within it, and the slots of the bricks before and after that
+// one along x (-1: none); `valid` false where it is beyond the grid's faces
+// or in a brick outside the band, and then the invocation's own row stands
+// in for it.
 struct RowPlace {
-  int slot, ly, lz, by, bz;
+  int slot, ly, lz, left, right;
   bool valid;
 };
 
 RowPlace rowPlace(int yy, int zz)
 {
   RowPlace r;
-  r.by = yy < 0 ? -1 : (yy > 7 ? 1 : 0);
-  r.bz = zz < 0 ? -1 : (zz > 7 ? 1 : 0);
-  const int rowSlot = neighbourSlot(0, r.by, r.bz);
+  const ivec3 bricks = rowBricks(yy < 0 ? -1 : (yy > 7 ? 1 : 0), zz < 0 ? -1 : (zz > 7 ? 1 : 0));
+  const int rowSlot = bricks.y;
+  r.left = bricks.x;
+  r.right = bricks.z;
   r.valid = origin.y + yy >= 0 && origin.y + yy < p.ny && origin.z + zz >= 0 && origin.z + zz < p.nz && rowSlot >= 0;
   r.slot = r.valid ? rowSlot : slot;
   r.ly = r.valid ? yy & 7 : y;

@@ -15,7 +15,9 @@
 // of eight cells, as two vec4 per moment, so every fetch brings four cells
 // (on lavapipe a vec4 texel fetch is plain loads, other loads one lane at a
 // time) and only the cells beyond the row's ends come from the bricks
-// beside it.
+// beside it. On lavapipe a step's time is mostly its fetches, lane by lane:
+// each of the nine rows around is fetched once for the velocities that
+// pull from it, and the bricks a row and its ends lie in come in one fetch.
 //
 // band_step.comp compiles it as it is; band_hold.comp with BAND_HOLD_ONLY,
 // for the bricks held whole (BandSolver::setHeldBricks): every cell pulls
@@ -29,12 +31,18 @@ layout(constant_id = BAND_SPEC_W_REST) const float W_REST = 1.0 / 3.0;
 layout(constant_id = BAND_SPEC_W_AXIAL) const float W_AXIAL = 1.0 / 18.0;
 layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
 
-// The variants are push constants, not specialization constants: one
-// pipeline serves every kind of step and the field pass (lavapipe spends
-// about 100 ms compiling each pipeline), at the cost of uniform branches.
+// What changes within a run is a push constant: per-cell omega (a denoise
+// finds its edges with a uniform omega first), the pass and writeField. What
+// sets a run's kind, the morph's source and the paper's rule, is a
+// specialization constant: one pipeline a run (lavapipe spends about 100 ms
+// creating each), and lavapipe, which runs both sides of a branch on a push
+// constant (masked), no longer pays for the source's and the rule's fetches
+// and stores in every denoise step (7 % of a step at 512^3).
+layout(constant_id = BAND_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
+layout(constant_id = BAND_SPEC_PAPER_RULE) const bool PAPER_RULE = false;
 #define PER_CELL_OMEGA (p.perCellOmega != 0)
-#define HAS_SOURCE (p.hasSource != 0)
-#define PAPER_RULE (p.paperRule != 0)
+#define PASS p.pass
+#define WRITE_FIELD (p.writeField != 0)
 
 layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBits;
 layout(set = 0, binding = BAND_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;
@@ -55,52 +63,74 @@ vec4 ownA[4], ownB[4];  // the same cells' own moments
   (((EX) == 0 ? vec4(0.0) : float(EX) * (JX)) + ((EY) == 0 ? vec4(0.0) : float(EY) * (JY)) + \
    ((EZ) == 0 ? vec4(0.0) : float(EZ) * (JZ)))
 
-// fa[I], fb[I]: the row's eight cells pull from the cells at -e_I: the row
-// (y - EY, z - EZ), possibly in a neighbouring brick, shifted by one cell
-// along x for EX != 0 (the cell beyond the row's end from the neighbouring
-// brick). A cell whose upstream cell is outside the grid (or, never for a
-// streaming cell, outside the band) bounces back: f*_opposite of itself. A
-// held cell pulls from itself.
+// The row (y - EY, z - EZ) that some of the row's cells pull from, possibly
+// in a neighbouring brick, fetched once for all the velocities that pull
+// from it (nine rows for nineteen velocities: lavapipe does not merge the
+// repeated fetches itself): its moments ra (cells 0-3) and rb (4-7), and with
+// LEFT and RIGHT the moments of the cells beyond its ends, from the bricks
+// beside it. `valid` false where the row is beyond the grid's faces or in a
+// brick outside the band; then the invocation's own row stands in for it.
+#define FETCH_ROW(EY, EZ, LEFT, RIGHT)                                                       \
+  const RowPlace row = rowPlace(y - (EY), z - (EZ));                                         \
+  vec4 ra[4], rb[4];                                                                         \
+  for (int k = 0; k < 4; ++k) {                                                              \
+    ra[k] = moment(momentAt(row.slot, k, row.ly, row.lz, 0));                                \
+    rb[k] = moment(momentAt(row.slot, k, row.ly, row.lz, 1));                                \
+  }                                                                                          \
+  FETCH_ENDS(LEFT, RIGHT)
+
+// The row's own cells (the rest velocity and the two along x).
+#define OWN_ROW(LEFT, RIGHT)                                                                 \
+  RowPlace row;                                                                              \
+  const ivec3 bricks = rowBricks(0, 0);                                                      \
+  row.slot = slot, row.ly = y, row.lz = z, row.left = bricks.x, row.right = bricks.z;        \
+  row.valid = true;                                                                          \
+  vec4 ra[4] = ownA, rb[4] = ownB;                                                           \
+  FETCH_ENDS(LEFT, RIGHT)
+
+#define FETCH_ENDS(LEFT, RIGHT)                                                              \
+  float left[4], right[4];                                                                   \
+  bool leftValid = false, rightValid = false;                                                \
+  if (LEFT) {                                                                                \
+    leftValid = row.valid && origin.x > 0 && row.left >= 0;                                  \
+    for (int k = 0; k < 4; ++k) left[k] = moment(momentAt(leftValid ? row.left : row.slot, k, row.ly, row.lz, 1)).w; \
+  }                                                                                          \
+  if (RIGHT) {                                                                               \
+    rightValid = row.valid && row.right >= 0;                                                \
+    for (int k = 0; k < 4; ++k) right[k] = moment(momentAt(rightValid ? row.right : row.slot, k, row.ly, row.lz, 0)).x; \
+  }
+
+// fa[I], fb[I]: the row's eight cells pull from the cells at -e_I, in the
+// row fetched last (FETCH_ROW), shifted by one cell along x for EX != 0 (the
+// cell beyond the row's end from the neighbouring brick). A cell whose
+// upstream cell is outside the grid (or, never for a streaming cell,
+// outside the band) bounces back: f*_opposite of itself. (A cell that does
+// not stream pulls from itself: finish() drops what it pulled here.)
 #define PULL(I, EX, EY, EZ)                                                                                    \
   {                                                                                                            \
-    const RowPlace row = rowPlace(y - (EY), z - (EZ));                                                         \
-    const bool rowValid = row.valid;                                                                           \
-    const int rs = row.slot, ly = row.ly, lz = row.lz, by = row.by, bz = row.bz;                               \
-    vec4 a[4], b[4];                                                                                           \
-    for (int k = 0; k < 4; ++k) {                                                                              \
-      a[k] = moment(momentAt(rs, k, ly, lz, 0));                                                               \
-      b[k] = moment(momentAt(rs, k, ly, lz, 1));                                                               \
-    }                                                                                                          \
-    bvec4 validA = bvec4(rowValid), validB = bvec4(rowValid);                                                  \
+    vec4 a[4] = ra, b[4] = rb;                                                                                 \
+    bvec4 validA = bvec4(row.valid), validB = bvec4(row.valid);                                                \
     if ((EX) == 1) {                                                                                           \
-      const int side = neighbourSlot(-1, by, bz);                                                              \
-      const bool sideValid = rowValid && origin.x > 0 && side >= 0;                                            \
       for (int k = 0; k < 4; ++k) {                                                                            \
-        const float left = moment(momentAt(sideValid ? side : rs, k, ly, lz, 1)).w;                            \
-        b[k] = vec4(a[k].w, b[k].xyz);                                                                         \
-        a[k] = vec4(left, a[k].xyz);                                                                           \
+        b[k] = vec4(ra[k].w, rb[k].xyz);                                                                       \
+        a[k] = vec4(left[k], ra[k].xyz);                                                                       \
       }                                                                                                        \
-      validA.x = sideValid;                                                                                    \
+      validA.x = leftValid;                                                                                    \
     } else if ((EX) == -1) {                                                                                   \
-      const int side = neighbourSlot(1, by, bz);                                                               \
-      const bool sideValid = rowValid && side >= 0;                                                            \
       for (int k = 0; k < 4; ++k) {                                                                            \
-        const float right = moment(momentAt(sideValid ? side : rs, k, ly, lz, 0)).x;                           \
-        a[k] = vec4(a[k].yzw, b[k].x);                                                                         \
-        b[k] = vec4(b[k].yzw, right);                                                                          \
+        a[k] = vec4(ra[k].yzw, rb[k].x);                                                                       \
+        b[k] = vec4(rb[k].yzw, right[k]);                                                                      \
       }                                                                                                        \
       validA = both(validA, lessThan(origin.x + ivec4(1, 2, 3, 4), ivec4(p.nx)));                              \
       validB = both(validB, lessThan(origin.x + ivec4(5, 6, 7, 8), ivec4(p.nx)));                              \
-      validB.w = validB.w && sideValid;                                                                        \
+      validB.w = validB.w && rightValid;                                                                       \
     }                                                                                                          \
     const float w = WEIGHT(EX, EY, EZ);                                                                        \
-    const vec4 ownDotA = E_DOT(EX, EY, EZ, ownA[1], ownA[2], ownA[3]);                                         \
-    const vec4 ownDotB = E_DOT(EX, EY, EZ, ownB[1], ownB[2], ownB[3]);                                         \
-    /* held cells pull from themselves (+e), streaming cells at a wall bounce back (-e) */                    \
-    fa[I] = mix(w * (ownA[0] + 3.0 * mix(ownDotA, -ownDotA, streamsA)),                                        \
-                w * (a[0] + 3.0 * E_DOT(EX, EY, EZ, a[1], a[2], a[3])), both(validA, streamsA));               \
-    fb[I] = mix(w * (ownB[0] + 3.0 * mix(ownDotB, -ownDotB, streamsB)),                                        \
-                w * (b[0] + 3.0 * E_DOT(EX, EY, EZ, b[1], b[2], b[3])), both(validB, streamsB));               \
+    /* at a wall: the cell's own f*_opposite, w (rho* - 3 e . j*) */                                         \
+    fa[I] = mix(w * (ownA[0] - 3.0 * E_DOT(EX, EY, EZ, ownA[1], ownA[2], ownA[3])),                            \
+                w * (a[0] + 3.0 * E_DOT(EX, EY, EZ, a[1], a[2], a[3])), validA);                               \
+    fb[I] = mix(w * (ownB[0] - 3.0 * E_DOT(EX, EY, EZ, ownB[1], ownB[2], ownB[3])),                            \
+                w * (b[0] + 3.0 * E_DOT(EX, EY, EZ, b[1], b[2], b[3])), validB);                               \
   }
 
 // X from the sum of the pulled f under a source of decay c and scale k:
@@ -117,17 +147,21 @@ vec4 fieldFromSum(vec4 sum, float decay, float baseScale, int cells, out vec4 S)
 }
 
 // X = sum f, J = sum e f (in index order, as the CPU reference sums), the
-// source, then the collision or the field, for one half of the row.
+// source, then the collision or the field, for one half of the row. A cell
+// that does not stream pulls from itself, f_i = w_i (rho* + 3 e_i . j*):
+// those sum to rho* and their flux is j*, taken as they are (the f it
+// pulled from its neighbours are dropped).
 void collide(vec4 sum, vec4 Jx, vec4 Jy, vec4 Jz, vec4 rhoBefore, int part);
 
-void finish(vec4 f[19], vec4 rhoBefore, int part)
+void finish(vec4 f[19], vec4 own[4], bvec4 streams, int part)
 {
   const vec4 sum = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] + f[10] + f[11] + f[12] +
                    f[13] + f[14] + f[15] + f[16] + f[17] + f[18];
   const vec4 Jx = f[1] - f[2] + f[7] - f[8] + f[9] - f[10] + f[11] - f[12] + f[13] - f[14];
   const vec4 Jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
   const vec4 Jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
-  collide(sum, Jx, Jy, Jz, rhoBefore, part);
+  collide(mix(own[0], sum, streams), mix(own[1], Jx, streams), mix(own[2], Jy, streams), mix(own[3], Jz, streams),
+          own[0], part);
 }
 
 // The rest of a step (or the field) for one half of the row, from the sum of
@@ -139,18 +173,18 @@ void collide(vec4 sum, vec4 Jx, vec4 Jy, vec4 Jz, vec4 rhoBefore, int part)
   const vec4 X = fieldFromSum(sum, p.decay, p.baseScale, cells, S);
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
-  if (p.pass == BAND_PASS_FIELD || p.writeField != 0) {
+  if (PASS == BAND_PASS_FIELD || WRITE_FIELD) {
     // A step's own field, for a frame, is that of the state it starts from
     // under the source of the steps before (a morph may raise Cs from this
     // step on): what the field pass would store.
     vec4 unused;
-    const vec4 field = p.writeField != 0 ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
+    const vec4 field = WRITE_FIELD ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = field;
-    if (p.pass == BAND_PASS_FIELD) return;
+    if (PASS == BAND_PASS_FIELD) return;
   }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
-  if (p.pass == BAND_PASS_FIELD_TO_OLDER) {
+  if (PASS == BAND_PASS_FIELD_TO_OLDER) {
     nextPools[pool].v[momentAt(first, 0, y, z, part)] = X;
     return;
   }
@@ -183,17 +217,18 @@ void main()
   collide(ownB[0], ownB[1], ownB[2], ownB[3], ownB[0], 1);
 #else
   const uint rowBits = texelFetch(streamBits, slot * 64 + z * 8 + y).x;
-  const vec4 streamsA = vec4(notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0)));
-  const vec4 streamsB = vec4(notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0)));
-  const bvec4 streamsAb = notEqual(streamsA, vec4(0.0)), streamsBb = notEqual(streamsB, vec4(0.0));
-#define streamsA streamsAb
-#define streamsB streamsBb
-  PULL(0, 0, 0, 0)
-  PULL(1, 1, 0, 0) PULL(2, -1, 0, 0) PULL(3, 0, 1, 0) PULL(4, 0, -1, 0) PULL(5, 0, 0, 1) PULL(6, 0, 0, -1)
-  PULL(7, 1, 1, 0) PULL(8, -1, -1, 0) PULL(9, 1, -1, 0) PULL(10, -1, 1, 0)
-  PULL(11, 1, 0, 1) PULL(12, -1, 0, -1) PULL(13, 1, 0, -1) PULL(14, -1, 0, 1)
-  PULL(15, 0, 1, 1) PULL(16, 0, -1, -1) PULL(17, 0, 1, -1) PULL(18, 0, -1, 1)
-  finish(fa, ownA[0], 0);
-  finish(fb, ownB[0], 1);
+  const bvec4 streamsA = notEqual(uvec4(rowBits) & uvec4(1, 2, 4, 8), uvec4(0));
+  const bvec4 streamsB = notEqual(uvec4(rowBits) & uvec4(16, 32, 64, 128), uvec4(0));
+  { OWN_ROW(true, true) PULL(0, 0, 0, 0) PULL(1, 1, 0, 0) PULL(2, -1, 0, 0) }
+  { FETCH_ROW(1, 0, true, true) PULL(3, 0, 1, 0) PULL(7, 1, 1, 0) PULL(10, -1, 1, 0) }
+  { FETCH_ROW(-1, 0, true, true) PULL(4, 0, -1, 0) PULL(8, -1, -1, 0) PULL(9, 1, -1, 0) }
+  { FETCH_ROW(0, 1, true, true) PULL(5, 0, 0, 1) PULL(11, 1, 0, 1) PULL(14, -1, 0, 1) }
+  { FETCH_ROW(0, -1, true, true) PULL(6, 0, 0, -1) PULL(12, -1, 0, -1) PULL(13, 1, 0, -1) }
+  { FETCH_ROW(1, 1, false, false) PULL(15, 0, 1, 1) }
+  { FETCH_ROW(-1, -1, false, false) PULL(16, 0, -1, -1) }
+  { FETCH_ROW(1, -1, false, false) PULL(17, 0, 1, -1) }
+  { FETCH_ROW(-1, 1, false, false) PULL(18, 0, -1, 1) }
+  finish(fa, ownA, streamsA, 0);
+  finish(fb, ownB, streamsB, 1);
 #endif
 }

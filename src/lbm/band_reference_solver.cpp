@@ -19,11 +19,11 @@ struct Pulled {
   glm::vec3 J;
 };
 
-// The f cell `c` (at `l` in its brick, whose neighbours are `around`) pulls:
-// a streaming cell from the cells upstream, or bouncing back at a wall (or,
-// never for a streaming cell, the band's edge), a held cell from itself.
+// The f streaming cell `c` (at `l` in its brick, whose neighbours are
+// `around`) pulls: from the cells upstream, or bouncing back at a wall (or,
+// never for a streaming cell, the band's edge).
 Pulled pull(const glm::vec4* current, const int32_t* around, const Extent3& e, glm::ivec3 c, glm::ivec3 l,
-            glm::vec4 own, bool streams)
+            glm::vec4 own)
 {
   float f[Q];
   for (int q = 0; q < Q; ++q) {
@@ -31,15 +31,13 @@ Pulled pull(const glm::vec4* current, const int32_t* around, const Extent3& e, g
     const glm::vec3 ev(float(v.x), float(v.y), float(v.z));
     glm::vec4 from = own;
     float sign = 1.0f;
-    if (streams) {
-      const glm::ivec3 up = c - glm::ivec3(v.x, v.y, v.z);
-      const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
-      const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
-      if (e.contains(up.x, up.y, up.z) && slot != noBrick)
-        from = current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
-      else
-        sign = -1.0f;  // bounce-back: f*_opposite(x)
-    }
+    const glm::ivec3 up = c - glm::ivec3(v.x, v.y, v.z);
+    const glm::ivec3 shifted = l - glm::ivec3(v.x, v.y, v.z);
+    const int32_t slot = around[((shifted.x >> 3) + 1) + 3 * ((shifted.y >> 3) + 1) + 9 * ((shifted.z >> 3) + 1)];
+    if (e.contains(up.x, up.y, up.z) && slot != noBrick)
+      from = current[size_t(slot) * brickCells + size_t(cellInBrick(shifted.x & 7, shifted.y & 7, shifted.z & 7))];
+    else
+      sign = -1.0f;  // bounce-back: f*_opposite(x)
     f[q] = d3q19::weight(q) * (from.x + sign * 3.0f * (ev.x * from.y + ev.y * from.z + ev.z * from.w));
   }
   Pulled out{0.0f, glm::vec3(0.0f)};
@@ -262,10 +260,11 @@ void BandReferenceSolver::sweep(std::vector<float>* fieldOut)
       const glm::ivec3 c = origin + l;
       if (!e.contains(c.x, c.y, c.z)) continue;
       const glm::vec4 own = current[i];
-      // A held brick's cells pull from themselves: f_i = w_i (rho* + 3 e_i . j*)
-      // sum to rho* with flux j*, no f formed (as band_hold.comp).
-      const auto [sum, J] =
-          held ? Pulled{own.x, glm::vec3(own.y, own.z, own.w)} : pull(current, around, e, c, l, own, streams_[i] != 0);
+      // A held brick's cells, and cells that do not stream, pull from
+      // themselves: f_i = w_i (rho* + 3 e_i . j*) sum to rho* with flux j*,
+      // no f formed (as band_step.glsl).
+      const auto [sum, J] = held || streams_[i] == 0 ? Pulled{own.x, glm::vec3(own.y, own.z, own.w)}
+                                                     : pull(current, around, e, c, l, own);
       const auto [X, S] = withSource(sum, i, decay, scale);
       if constexpr (!Collide) {
         (*fieldOut)[i] = X;

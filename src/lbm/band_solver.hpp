@@ -38,6 +38,14 @@ struct BandSource {
   float scale = 1.0f;
 };
 
+// The kind of run a band solver is made for: a device solver prepares its
+// pipeline at set-up (BandVulkanSolver: one per kind), and prepares
+// another kind's at its first use.
+struct BandRunKind {
+  bool source = false;     // a morph's source term (setSource)
+  bool paperRule = false;  // the paper's anisotropic rule (setPaperRule)
+};
+
 // 1 for each stored cell inside the grid with |X| < halfWidth, else 0.
 std::vector<uint8_t> streamingCells(const BandField& field, double halfWidth);
 

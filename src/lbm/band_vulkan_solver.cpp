@@ -42,6 +42,17 @@ constexpr auto perCell = texels | vk::BufferUsageFlagBits::eStorageTexelBuffer;
 constexpr auto storage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                          vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
 
+// The neighbours' table as the shaders read it (band_interface.h): for each
+// slot and each (dy, dz), the bricks at dx = -1, 0 and 1, and a 0.
+std::vector<glm::ivec4> rowNeighbourTable(const BrickSet& bricks)
+{
+  const std::vector<int32_t> around = bricks.neighbourTable();  // (dx + 1) + 3 (dy + 1) + 9 (dz + 1)
+  std::vector<glm::ivec4> table(around.size() / 3);
+  for (size_t i = 0; i < table.size(); ++i)
+    table[i] = glm::ivec4(around[3 * i], around[3 * i + 1], around[3 * i + 2], 0);
+  return table;
+}
+
 std::vector<vk::DescriptorSetLayoutBinding> bindings()
 {
   using T = vk::DescriptorType;
@@ -93,7 +104,7 @@ struct BandVulkanSolver::Resources {
         pools(c.description(), bricks->activeCount()), moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device),
                                                                GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
         field(c, 16, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
-        neighbours(c, 4 * 27 * bricks->activeCount(), texels, MemoryUse::Device),
+        neighbours(c, 16 * 9 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 3 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
         source(c, 16, texels, MemoryUse::Device),
@@ -108,7 +119,9 @@ struct BandVulkanSolver::Resources {
         vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4 * 2 * BAND_MAX_POOLS)};
     descriptorPool = vk::raii::DescriptorPool(
         c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 4, sizes));
-    const auto& setLayout = c.program(program()).setLayout;
+    // The feature rule's layout is the steps' (the same bindings): whichever
+    // kind of step the run makes, no other pipeline is made for it.
+    const auto& setLayout = c.program(featureRuleProgram()).setLayout;
     std::vector<vk::DescriptorSetLayout> layouts(4, *setLayout);
     sets = vk::raii::DescriptorSets(c.device(), vk::DescriptorSetAllocateInfo(*descriptorPool, layouts));
     writeDescriptors();
@@ -190,7 +203,7 @@ struct BandVulkanSolver::Resources {
     const vk::BufferView copyViews[2] = {view(moments[0], vk::Format::eR32G32B32A32Sfloat),
                                          view(moments[1], vk::Format::eR32G32B32A32Sfloat)};
     const vk::BufferView streamView = view(streams, vk::Format::eR32Uint),
-                         neighbourView = view(neighbours, vk::Format::eR32Sint),
+                         neighbourView = view(neighbours, vk::Format::eR32G32B32A32Sint),
                          originView = view(origins, vk::Format::eR32G32B32A32Sint),
                          omegaView = view(omega, vk::Format::eR32G32B32A32Sfloat),
                          sourceView = view(source, vk::Format::eR32G32B32A32Sfloat),
@@ -384,18 +397,26 @@ struct BandVulkanSolver::Resources {
     writeDescriptors();
   }
 
-  // The one pipeline of every kind of step and of the field pass: what
-  // differs between them is in the push constants (parameters()).
-  static gpu::ProgramSpec program() { return withTheWeights("band_step"); }
+  // The one pipeline of every step and field pass of the run's kind: the
+  // source and the paper's rule are specialization constants
+  // (band_step.glsl), what differs within a run push constants
+  // (parameters()).
+  gpu::ProgramSpec program() const { return program({sourceHost.has_value(), paperRuleGamma0.has_value()}); }
+  static gpu::ProgramSpec program(BandRunKind kind) { return ofKind("band_step", kind); }
   // The held bricks' pipeline: band_step.comp's arithmetic, no fetch from
   // any other cell.
-  static gpu::ProgramSpec holdProgram() { return withTheWeights("band_hold"); }
-  static gpu::ProgramSpec withTheWeights(const char* shader)
+  gpu::ProgramSpec holdProgram() const
   {
+    return ofKind("band_hold", {sourceHost.has_value(), paperRuleGamma0.has_value()});
+  }
+  static gpu::ProgramSpec ofKind(const char* shader, BandRunKind kind)
+  {
+    using gpu::specBool;
     using gpu::specFloat;
     return {shader,
             bindings(),
-            {specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight)},
+            {specFloat(d3q19::restWeight), specFloat(d3q19::axialWeight), specFloat(d3q19::diagonalWeight),
+             specBool(kind.source), specBool(kind.paperRule)},
             sizeof(band_shader::StepParameters)};
   }
 
@@ -479,8 +500,6 @@ struct BandVulkanSolver::Resources {
     p.gamma0 = float(paperRuleGamma0.value_or(0.0));
     p.pass = everySlot ? BAND_PASS_FIELD : BAND_PASS_STEP;
     p.perCellOmega = perCellOmega ? 1 : 0;
-    p.hasSource = sourceHost ? 1 : 0;
-    p.paperRule = paperRuleGamma0 ? 1 : 0;
     return p;
   }
 
@@ -519,26 +538,28 @@ struct BandVulkanSolver::Resources {
 };
 
 BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
-                                   uint64_t stagingBytes)
+                                   uint64_t stagingBytes, BandRunKind kind)
 {
   const gpu::TraceLabel label("band set-up");
   if (bricks->activeCount() == 0) throw std::invalid_argument("a narrow band without bricks");
   r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes);
   const BrickSet& b = *r_->bricks;
-  const std::vector<int32_t> table = b.neighbourTable();
-  r_->upload(table.data(), table.size() * 4, r_->neighbours);
+  const std::vector<glm::ivec4> table = rowNeighbourTable(b);
+  r_->upload(table.data(), table.size() * 16, r_->neighbours);
   std::vector<glm::ivec4> origins(b.activeCount());
   for (size_t s = 0; s < origins.size(); ++s) origins[s] = glm::ivec4(brickEdge * b.brick(int32_t(s)), 0);
   r_->upload(origins.data(), origins.size() * 16, r_->origins);
   // Lavapipe turns a pipeline into machine code at its first dispatch (some
   // 250 ms on the 2-core host, where pipeline creation took 100): one
   // dispatch of no work here puts that in the set-up, where a real GPU's
-  // driver compiles, rather than in the first step. The feature rule's
-  // pipeline too: small, and the default denoise needs it.
+  // driver compiles, rather than in the first step: the steps of the
+  // run's kind, and the feature rule's (small, and the default denoise needs
+  // it) or, for a morph, the held bricks'.
   band_shader::StepParameters idle = r_->parameters(false);
   idle.works = 0;
+  const gpu::ProgramSpec second = kind.source ? Resources::ofKind("band_hold", kind) : r_->featureRuleProgram();
   context.runAndWait([&](vk::CommandBuffer cmd) {
-    for (const gpu::ProgramSpec& spec : {r_->program(), r_->featureRuleProgram()}) {
+    for (const gpu::ProgramSpec& spec : {Resources::program(kind), second}) {
       auto& program = context.program(spec);
       cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
       cmd.pushConstants<band_shader::StepParameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, idle);
@@ -559,8 +580,8 @@ BandVulkanSolver::~BandVulkanSolver() = default;
 
 double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
 {
-  // Per brick: streaming bits, 27 neighbours, origin, work lists.
-  const double tables = double(4 * 64 + 4 * 27 + 16 + 4 * 2) / brickCells;
+  // Per brick: streaming bits, neighbours, origin, work lists.
+  const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 2) / brickCells;
   return 2 * 16 + 4 + tables + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field
 }
 
@@ -695,10 +716,11 @@ void BandVulkanSolver::setHeldBricks(std::vector<uint8_t> heldPerSlot)
     push.works = range.count;
     push.decay = push.baseScale = group.decay;
     push.omega = group.omega;
-    push.perCellOmega = push.paperRule = 0;
+    push.perCellOmega = 0;
     const int set = group.copy == r_->current ? 2 + r_->current : group.copy;
-    r_->context.runAndWait(
-        [&](vk::CommandBuffer cmd) { r_->dispatch(cmd, r_->context.program(r_->holdProgram()), set, push); });
+    // Held steps of a uniform omega, without the paper's rule.
+    const gpu::ProgramSpec hold = Resources::ofKind("band_hold", {.source = r_->sourceHost.has_value()});
+    r_->context.runAndWait([&](vk::CommandBuffer cmd) { r_->dispatch(cmd, r_->context.program(hold), set, push); });
   }
   r_->heldSlots = std::move(heldPerSlot);
   if (!r_->stepSlots.empty()) r_->uploadWork();
@@ -800,11 +822,11 @@ void BandVulkanSolver::step(int count)
   }
   if (count <= 0) return;
   r_->freezeBeforeSteps(count);
-  auto& program = r_->context.program(r_->program());
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
     const int first = r_->current;
     const band_shader::StepParameters push = r_->parameters(false);
+    auto& program = r_->context.program(r_->program());
     const std::string key = gpu::keyOf(batch, first, r_->heldRange.offset, r_->heldRange.count, push,
                                        static_cast<VkPipeline>(*program.pipeline));
     r_->context.replayAndWait(r_->recordedSteps.get(r_->context, key, [&](vk::CommandBuffer cmd) {

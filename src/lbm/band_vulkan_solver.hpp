@@ -24,7 +24,7 @@ public:
   static constexpr uint64_t defaultStagingBytes = uint64_t(16) << 20;
 
   BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
-                   uint64_t stagingBytes = defaultStagingBytes);
+                   uint64_t stagingBytes = defaultStagingBytes, BandRunKind kind = {});
   ~BandVulkanSolver() override;
 
   std::string backendName() const override;

@@ -40,7 +40,7 @@ void ComputeDevice::finishWarmUp() const
   }
 }
 
-void ComputeDevice::warmUpForTheBand() const
+void ComputeDevice::warmUpForTheBand(BandRunKind kind) const
 {
   if (isReference() || gpu_ || warmUp_.valid()) return;
   // Under an address-space limit the Vulkan loader and driver are loaded
@@ -59,14 +59,14 @@ void ComputeDevice::warmUpForTheBand() const
     }
   }
   try {
-    warmUp_ = std::async(std::launch::async, [this] {
+    warmUp_ = std::async(std::launch::async, [this, kind] {
       // A band of one brick: its solver compiles the band's pipeline and runs
       // it once (lavapipe turns it into machine code then), for the GpuContext
       // to keep.
       const gpu::TraceLabel label("warm-up: the band's pipelines");
       auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
       brick->activate(0, 0, 0);
-      BandVulkanSolver warm(openContext(), std::move(brick));
+      BandVulkanSolver warm(openContext(), std::move(brick), BandVulkanSolver::defaultStagingBytes, kind);
     });
   } catch (const std::system_error&) {
     // No thread to spare (an address-space limit leaves no room for its
@@ -173,10 +173,12 @@ std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) 
   return std::make_unique<ReferenceSolver>(extent);
 }
 
-std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const BrickSet> bricks) const
+std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const BrickSet> bricks,
+                                                          BandRunKind kind) const
 {
   if (!isReference())
-    return withDriverHeadroom<BandSolver>(std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks)));
+    return withDriverHeadroom<BandSolver>(
+        std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks), BandVulkanSolver::defaultStagingBytes, kind));
   return std::make_unique<BandReferenceSolver>(std::move(bricks));
 }
 

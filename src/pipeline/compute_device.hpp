@@ -52,15 +52,15 @@ public:
   void checkFits(const Extent3& extent) const;
 
   // A solver for the narrow band on these bricks.
-  std::unique_ptr<BandSolver> makeBandSolver(std::shared_ptr<const BrickSet> bricks) const;
+  std::unique_ptr<BandSolver> makeBandSolver(std::shared_ptr<const BrickSet> bricks, BandRunKind kind = {}) const;
   // Throws DeviceError, saying what it needs and what grid would fit, when a
   // band on these bricks (with per-cell omega, a source) would not fit the
   // device: called as soon as the bricks are known, before their distances
   // are computed or anything is allocated for them.
   void checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const;
 
-  // Opens the Vulkan device and prepares the narrow band's pipeline on a
-  // thread of its own, so that a job's set-up overlaps its signed distance
+  // Opens the Vulkan device and prepares the narrow band's pipelines for a
+  // run of `kind` (makeBandSolver's) on a thread of its own, so that a job's set-up overlaps its signed distance
   // (lavapipe compiles the pipeline in some 150 ms; a real GPU's driver
   // takes long to start: `lbmshape info` alone took 0.59 s on the H100).
   // Does nothing for the reference or once the device is open. A failure
@@ -68,7 +68,7 @@ public:
   // without the warm-up, so errors stay what and where they were. Every
   // use of the device but description() (which a band's size check needs
   // while the distances are computed) waits for it to end.
-  void warmUpForTheBand() const;
+  void warmUpForTheBand(BandRunKind kind) const;
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;

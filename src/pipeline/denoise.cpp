@@ -333,8 +333,9 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
                          const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
 {
   const double halfWidth = bandHalfWidth(o);
+  const BandRunKind kind{.paperRule = o.smoothing == Smoothing::Anisotropic};
   BandField field = clock.time("sdf", [&](Progress& progress) {
-    device.warmUpForTheBand();  // the device opens while the distances are computed
+    device.warmUpForTheBand(kind);  // the device opens while the distances are computed
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
     return signedDistanceBand(mesh, frame,
                               {.halfWidth = halfWidth, .progress = &progress, .checkBricks = [&](const BrickSet& b) {
@@ -346,7 +347,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   const std::shared_ptr<const BrickSet> shared = field.sharedBricks();
   const BrickSet& bricks = *shared;
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;
-  auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared); });
+  auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared, kind); });
   SmoothedField<BandField> smoothed =
       clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
   solver.reset();  // its memory goes before marching cubes takes its own

@@ -19,6 +19,9 @@
 namespace lbmshape {
 namespace {
 
+// A morph's lattice runs under its source term (BandRunKind).
+constexpr BandRunKind morphRun{.source = true};
+
 // max |X - T| over the cells where |T| <= band (the same cells of one grid
 // or one band).
 double maxDifferenceNear(const std::vector<float>& X, const std::vector<float>& T, float band)
@@ -157,7 +160,7 @@ public:
   {
     halfWidth_ = streamingHalfWidth(longest.totalDiffusion() / longest.totalSteps(), longest.totalSteps());
     clock.time("sdf", [&](Progress& progress) {
-      device.warmUpForTheBand();  // the device opens while the distances are computed
+      device.warmUpForTheBand(morphRun);  // the device opens while the distances are computed
       // Each mesh's hierarchy, built once for its bricks, the bricks between
       // and its distances (46 ms each time for the armadillo); the two
       // meshes' side by side.
@@ -190,7 +193,7 @@ public:
              StageClock& clock) override
   {
     solver_ = clock.time("setup", [&] {
-      auto s = device.makeBandSolver(source_.sharedBricks());
+      auto s = device.makeBandSolver(source_.sharedBricks(), morphRun);
       s->setUniformGamma(o.gamma);
       s->setSource(morphForce(o.cs));
       std::vector<uint8_t> flags = streams();

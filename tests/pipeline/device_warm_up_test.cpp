@@ -16,7 +16,7 @@ namespace {
 TEST(DeviceWarmUp, ADeviceThatCannotOpenFailsAtItsFirstUse)
 {
   ComputeDevice device{"no device is called this", true};
-  device.warmUpForTheBand();  // fails on its thread, silently
+  device.warmUpForTheBand({});  // fails on its thread, silently
   EXPECT_THROW(device.name(), UsageError);
   EXPECT_THROW(device.gpu(), UsageError);
 }
@@ -24,12 +24,12 @@ TEST(DeviceWarmUp, ADeviceThatCannotOpenFailsAtItsFirstUse)
 TEST(DeviceWarmUp, ADeviceIsUsableAtOnceWhileItWarmsUp)
 {
   ComputeDevice device{"", true};
-  device.warmUpForTheBand();
+  device.warmUpForTheBand({});
   EXPECT_FALSE(device.name().empty());  // the description, while the thread may still compile
   EXPECT_NE(device.gpu(), nullptr);     // waits for the thread
   EXPECT_GE(device.deviceBusyMs(), 0.0);
   ComputeDevice leaving{"", true};
-  leaving.warmUpForTheBand();  // goes while it warms up: its destructor waits for the thread
+  leaving.warmUpForTheBand({});  // goes while it warms up: its destructor waits for the thread
 }
 
 TEST(DeviceWarmUp, AWarmedUpDeviceDenoisesAsOneOpenedBefore)

@@ -76,6 +76,8 @@ public:
   // Time spent creating pipelines so far (ms): the start-up cost the
   // pipeline cache is there to cut.
   double pipelineCreationMs() const { return pipelineCreationMs_; }
+  // The programs built so far (program() builds each once).
+  size_t programsBuilt() const { return programs_.size(); }
   // Time the device spent on runAndWait's submissions so far (ms), from
   // timestamps written at their start and end; 0 where the queue has no
   // timestamps. Against the wall time of the same work it shows how long

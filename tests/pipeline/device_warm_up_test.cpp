@@ -8,6 +8,8 @@
 #include "mesh/mesh_noise.hpp"
 #include "pipeline/compute_device.hpp"
 #include "pipeline/denoise.hpp"
+#include "support/band_fields.hpp"
+#include "support/fields.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {
@@ -30,6 +32,31 @@ TEST(DeviceWarmUp, ADeviceIsUsableAtOnceWhileItWarmsUp)
   EXPECT_GE(device.deviceBusyMs(), 0.0);
   ComputeDevice leaving{"", true};
   leaving.warmUpForTheBand({});  // goes while it warms up: its destructor waits for the thread
+}
+
+// The warm-up builds the pipelines of the kind of run it is told of (a
+// morph's steps run with a source, --anisotropic's with the paper's rule,
+// each a pipeline of its own: lavapipe takes some 100 ms a pipeline), so
+// the run builds none of its own.
+TEST(DeviceWarmUp, ARunBuildsNoPipelineItsWarmUpDidNot)
+{
+  const Extent3 extent{20, 20, 20};
+  const Volume sphere = testing::sphereDistance(extent, 10.0, 10.0, 10.0, 6.0);
+  const auto bricks = testing::bricksNear(sphere, 4.0);
+  const BandRunKind kinds[] = {{}, {.source = true}, {.paperRule = true}};
+  for (const BandRunKind& kind : kinds) {
+    ComputeDevice device{"", true};
+    device.warmUpForTheBand(kind);
+    const size_t built = device.gpu()->programsBuilt();  // gpu() waits for the warm-up
+    auto solver = device.makeBandSolver(bricks, kind);
+    solver->setUniformGamma(0.2);
+    if (kind.paperRule) solver->setPaperRule(0.2);
+    if (kind.source) solver->setSource(BandSource{testing::bandOf(sphere, bricks), 0.1f});
+    solver->initialize(testing::bandOf(sphere, bricks), 3.0);
+    solver->step(3);
+    const BandField field = solver->field();
+    EXPECT_EQ(device.gpu()->programsBuilt(), built) << "source " << kind.source << ", paper's rule " << kind.paperRule;
+  }
 }
 
 TEST(DeviceWarmUp, AWarmedUpDeviceDenoisesAsOneOpenedBefore)

@@ -401,14 +401,12 @@ struct BandVulkanSolver::Resources {
   // source and the paper's rule are specialization constants
   // (band_step.glsl), what differs within a run push constants
   // (parameters()).
-  gpu::ProgramSpec program() const { return program({sourceHost.has_value(), paperRuleGamma0.has_value()}); }
+  gpu::ProgramSpec program() const { return program(kindOfRun()); }
   static gpu::ProgramSpec program(BandRunKind kind) { return ofKind("band_step", kind); }
   // The held bricks' pipeline: band_step.comp's arithmetic, no fetch from
   // any other cell.
-  gpu::ProgramSpec holdProgram() const
-  {
-    return ofKind("band_hold", {sourceHost.has_value(), paperRuleGamma0.has_value()});
-  }
+  gpu::ProgramSpec holdProgram() const { return ofKind("band_hold", kindOfRun()); }
+  BandRunKind kindOfRun() const { return {sourceHost.has_value(), paperRuleGamma0.has_value()}; }
   static gpu::ProgramSpec ofKind(const char* shader, BandRunKind kind)
   {
     using gpu::specBool;

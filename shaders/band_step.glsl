@@ -41,8 +41,6 @@ layout(constant_id = BAND_SPEC_W_DIAGONAL) const float W_DIAGONAL = 1.0 / 36.0;
 layout(constant_id = BAND_SPEC_HAS_SOURCE) const bool HAS_SOURCE = false;
 layout(constant_id = BAND_SPEC_PAPER_RULE) const bool PAPER_RULE = false;
 #define PER_CELL_OMEGA (p.perCellOmega != 0)
-#define PASS p.pass
-#define WRITE_FIELD (p.writeField != 0)
 
 layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBits;
 layout(set = 0, binding = BAND_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;
@@ -173,18 +171,18 @@ void collide(vec4 sum, vec4 Jx, vec4 Jy, vec4 Jz, vec4 rhoBefore, int part)
   const vec4 X = fieldFromSum(sum, p.decay, p.baseScale, cells, S);
   // Every pool holds whole bricks, so a workgroup writes to one pool: the
   // pool index is the same across it (dynamically uniform).
-  if (PASS == BAND_PASS_FIELD || WRITE_FIELD) {
+  if (p.pass == BAND_PASS_FIELD || p.writeField != 0) {
     // A step's own field, for a frame, is that of the state it starts from
     // under the source of the steps before (a morph may raise Cs from this
     // step on): what the field pass would store.
     vec4 unused;
-    const vec4 field = WRITE_FIELD ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
+    const vec4 field = p.writeField != 0 ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
     const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
     fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = field;
-    if (PASS == BAND_PASS_FIELD) return;
+    if (p.pass == BAND_PASS_FIELD) return;
   }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;
-  if (PASS == BAND_PASS_FIELD_TO_OLDER) {
+  if (p.pass == BAND_PASS_FIELD_TO_OLDER) {
     nextPools[pool].v[momentAt(first, 0, y, z, part)] = X;
     return;
   }

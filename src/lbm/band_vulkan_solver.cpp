@@ -820,11 +820,11 @@ void BandVulkanSolver::step(int count)
   }
   if (count <= 0) return;
   r_->freezeBeforeSteps(count);
+  auto& program = r_->context.program(r_->program());
   while (count > 0) {
     const int batch = std::min(count, stepsPerSubmit);
     const int first = r_->current;
     const band_shader::StepParameters push = r_->parameters(false);
-    auto& program = r_->context.program(r_->program());
     const std::string key = gpu::keyOf(batch, first, r_->heldRange.offset, r_->heldRange.count, push,
                                        static_cast<VkPipeline>(*program.pipeline));
     r_->context.replayAndWait(r_->recordedSteps.get(r_->context, key, [&](vk::CommandBuffer cmd) {

@@ -60,9 +60,10 @@ public:
   void checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const;
 
   // Opens the Vulkan device and prepares the narrow band's pipelines for a
-  // run of `kind` (makeBandSolver's) on a thread of its own, so that a job's set-up overlaps its signed distance
-  // (lavapipe compiles the pipeline in some 150 ms; a real GPU's driver
-  // takes long to start: `lbmshape info` alone took 0.59 s on the H100).
+  // run of `kind` (makeBandSolver's) on a thread of its own, so that a
+  // job's set-up overlaps its signed distance (lavapipe compiles a
+  // pipeline in some 150 ms; a real GPU's driver takes long to start:
+  // `lbmshape info` alone took 0.59 s on the H100).
   // Does nothing for the reference or once the device is open. A failure
   // there is left for the first real use to meet, where it would have come
   // without the warm-up, so errors stay what and where they were. Every

@@ -57,6 +57,9 @@ for res in 128 256 512; do
     >"$results/denoise$res.json" 2>"$results/denoise$res.err"
   timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json --isotropic \
     >"$results/denoise$res-isotropic.json" 2>"$results/denoise$res-isotropic.err"
+  # The distances on the host's cores, against the device's (--sdf auto on a GPU) above.
+  timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json --sdf cpu \
+    >"$results/denoise$res-sdf-cpu.json" 2>"$results/denoise$res-sdf-cpu.err"
 done
 python3 scripts/make-sphere.py /tmp/sphere.obj
 # Every compute submission of a denoise at 512 and of the morph at 256,

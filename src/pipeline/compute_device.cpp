@@ -12,10 +12,12 @@
 #include "lbm/lattice_memory.hpp"
 #include "lbm/reference_solver.hpp"
 #include "lbm/vulkan_solver.hpp"
+#include "sdf/device_band_distances.hpp"
 
 namespace lbmshape {
 
-ComputeDevice::ComputeDevice(const std::string& request, bool validation) : request_(request), validation_(validation)
+ComputeDevice::ComputeDevice(const std::string& request, bool validation, DistancesOn distances)
+    : request_(request), validation_(validation), distances_(distances)
 {}
 
 ComputeDevice::~ComputeDevice() { finishWarmUp(); }
@@ -25,6 +27,8 @@ ComputeDevice::ComputeDevice(ComputeDevice&& other) noexcept
   other.finishWarmUp();  // its thread works on `other`
   request_ = std::move(other.request_);
   validation_ = other.validation_;
+  distances_ = other.distances_;
+  distancesTurn_ = other.distancesTurn_;
   instance_ = std::move(other.instance_);
   chosen_ = other.chosen_;
   gpu_ = std::move(other.gpu_);
@@ -64,6 +68,9 @@ void ComputeDevice::warmUpForTheBand(BandRunKind kind) const
       // it once (lavapipe turns it into machine code then), for the GpuContext
       // to keep.
       const gpu::TraceLabel label("warm-up: the band's pipelines");
+      // The distances' pipeline first: they come before the lattice.
+      if (distances_ == DistancesOn::Device || (distances_ == DistancesOn::Auto && description().type != "cpu"))
+        prepareDeviceBandDistances(openContext());
       auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
       brick->activate(0, 0, 0);
       BandVulkanSolver warm(openContext(), std::move(brick), BandVulkanSolver::defaultStagingBytes, kind);
@@ -105,6 +112,37 @@ gpu::GpuContext& ComputeDevice::openContext() const
     gpu_ = std::make_unique<gpu::GpuContext>(instance_, chosen_);
   }
   return *gpu_;
+}
+
+bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
+{
+  if (distances_ == DistancesOn::Cpu) return false;
+  if (isReference()) {
+    if (distances_ == DistancesOn::Device)
+      throw UsageError("--sdf device needs a Vulkan device, not the reference (--device reference)");
+    return false;
+  }
+  const gpu::DeviceDescription& d = description();
+  const bool holds = deviceHoldsTree(d.maxStorageBufferRange, tree);
+  if (distances_ == DistancesOn::Device) {
+    if (!holds)
+      throw DeviceError("the mesh's " + std::to_string(tree.triangleCount()) + " triangles do not fit one buffer of " +
+                        d.name + " for the distances on the device; use --sdf cpu");
+    return true;
+  }
+  return holds && d.type != "cpu";
+}
+
+UnsignedBandDistances ComputeDevice::bandDistances(const TriangleBvh& tree) const
+{
+  if (!distancesOnTheDevice(tree)) return {};
+  return [this, turn = distancesTurn_](const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
+                                       double maxVoxels) {
+    const std::lock_guard lock(*turn);  // before gpu(), whose wait for the warm-up is one thread's
+    gpu::GpuContext& context = *gpu();
+    const gpu::TraceLabel label("the band's distances");
+    return deviceBandDistances(context, bvh, frame, cells, maxVoxels);
+  };
 }
 
 gpu::GpuContext& ComputeDevice::drawingContext() const

@@ -14,6 +14,8 @@
 #include "core/extent.hpp"
 #include "lbm/band_solver.hpp"
 #include "lbm/lattice_solver.hpp"
+#include "sdf/band_signed_distance.hpp"
+#include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 
@@ -23,12 +25,16 @@ class VulkanInstance;
 struct DeviceDescription;
 }  // namespace gpu
 
+// Where the band's unsigned distances are computed (--sdf): Auto lets the
+// device's type decide (bandDistances()).
+enum class DistancesOn { Auto, Cpu, Device };
+
 class ComputeDevice {
 public:
   // `request`: empty (the best device), an index, part of a device name, or
   // "reference". Opening it later throws UsageError when nothing matches,
   // DeviceError when Vulkan is unusable.
-  ComputeDevice(const std::string& request, bool validation);
+  ComputeDevice(const std::string& request, bool validation, DistancesOn distances = DistancesOn::Auto);
   ~ComputeDevice();
   ComputeDevice(ComputeDevice&&) noexcept;
 
@@ -71,6 +77,19 @@ public:
   // while the distances are computed) waits for it to end.
   void warmUpForTheBand(BandRunKind kind) const;
 
+  // Where a band's distances from this tree are computed: empty for the
+  // CPU (band_distance.hpp), else the device's (device_band_distances.hpp),
+  // one caller at a time. Auto picks the device on a GPU (discrete,
+  // integrated or virtual), whose thousands of lanes walk the tree for
+  // every cell faster than the host's cores, and the CPU for a CPU device
+  // (lavapipe runs the same walk on the same cores, slower than the
+  // native code with its shared hints) and for the reference; and the CPU
+  // when the device cannot hold the tree. DistancesOn::Device on the
+  // reference is a UsageError, on a tree the device cannot hold a
+  // DeviceError.
+  UnsignedBandDistances bandDistances(const TriangleBvh& tree) const;
+  bool distancesOnTheDevice(const TriangleBvh& tree) const;
+
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;
   // Destroys the Vulkan device (the instance stays, so that what the layer
@@ -86,6 +105,8 @@ private:
 
   std::string request_;
   bool validation_ = false;
+  DistancesOn distances_ = DistancesOn::Auto;
+  mutable std::shared_ptr<std::mutex> distancesTurn_ = std::make_shared<std::mutex>();  // bandDistances' callers
   mutable std::mutex instanceMutex_;  // instance_ and chosen_, which the warm-up's thread sets too
   mutable std::shared_ptr<gpu::VulkanInstance> instance_;
   mutable size_t chosen_ = 0;

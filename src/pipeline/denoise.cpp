@@ -283,11 +283,12 @@ double bandHalfWidth(const DenoiseOptions& o)
 // The lattice stages of a denoise: signed distance, smoothing, surface.
 struct Smoothed {
   TriangleMesh mesh;
-  nlohmann::json lattice;  // what the lattice held: cells, bytes
-  size_t cells = 0;        // cells updated per step
-  int steps = 0;           // the steps whose field was kept (the last start's)
-  int stepsRun = 0;        // the steps the lattice ran for it
-  double volumeShift = 0;  // voxels the field was shifted by to keep the volume
+  nlohmann::json lattice;          // what the lattice held: cells, bytes
+  size_t cells = 0;                // cells updated per step
+  int steps = 0;                   // the steps whose field was kept (the last start's)
+  int stepsRun = 0;                // the steps the lattice ran for it
+  double volumeShift = 0;          // voxels the field was shifted by to keep the volume
+  bool distancesOnDevice = false;  // where the signed distance's distances were computed (--sdf)
 };
 
 // The largest level-set shift that keeping the volume may apply, in voxels:
@@ -334,13 +335,16 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
 {
   const double halfWidth = bandHalfWidth(o);
   const BandRunKind kind{.paperRule = o.smoothing == Smoothing::Anisotropic};
+  SignedDistanceStats distanceStats;
   BandField field = clock.time("sdf", [&](Progress& progress) {
     device.warmUpForTheBand(kind);  // the device opens while the distances are computed
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
     return signedDistanceBand(mesh, frame,
-                              {.halfWidth = halfWidth, .progress = &progress, .checkBricks = [&](const BrickSet& b) {
-                                 device.checkBandFits(b, perCellOmega, false);
-                               }});
+                              {.halfWidth = halfWidth,
+                               .progress = &progress,
+                               .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); },
+                               .distancesFrom = [&](const TriangleBvh& tree) { return device.bandDistances(tree); }},
+                              &distanceStats);
   });
   requireEnclosedVolume(field, input);
   returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak
@@ -361,7 +365,8 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
           bricks.storedCells(),
           smoothed.steps,
           smoothed.stepsRun,
-          shift};
+          shift,
+          distanceStats.onDevice};
 }
 
 }  // namespace
@@ -449,6 +454,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"keep_volume", o.keepVolume},
       {"volume_shift_voxels", smoothed.volumeShift},
       {"noise", o.noise.amplitude},
+      {"sdf_on", smoothed.distancesOnDevice ? "device" : "cpu"},
       {"lattice", smoothed.lattice},
       {"mlups", lbmMs > 0 && smoothed.stepsRun > 0 ? nlohmann::json(updates / (lbmMs * 1e3)) : nlohmann::json(nullptr)},
       {"curvature_scale", curvatureScale ? nlohmann::json(*curvatureScale) : nlohmann::json(nullptr)}};

@@ -185,7 +185,8 @@ public:
       addBricksBetween(sourceTree, targetTree, frame, *bricks);
       device.checkBandFits(*bricks, false, true);
       beforeDistances();
-      computeFields({source, sourceTree}, {target, targetTree}, bricks, progress);
+      computeFields({source, sourceTree}, {target, targetTree}, bricks, progress,
+                    [&device](const TriangleBvh& tree) { return device.bandDistances(tree); });
     });
   }
 
@@ -280,13 +281,14 @@ private:
   };
 
   void computeFields(const MeshWithTree& source, const MeshWithTree& target, std::shared_ptr<const BrickSet> bricks,
-                     Progress& progress)
+                     Progress& progress, const std::function<UnsignedBandDistances(const TriangleBvh&)>& distancesFrom)
   {
     // The cells between the two surfaces need their true distances: the
     // force moves each from one to the other at its own pace.
     // The two side by side, each on one thread (the progress is the
     // source's).
-    const BandDistanceOptions options{.halfWidth = halfWidth_, .clampBeyondHalfWidth = false, .progress = &progress};
+    const BandDistanceOptions options{
+        .halfWidth = halfWidth_, .clampBeyondHalfWidth = false, .progress = &progress, .distancesFrom = distancesFrom};
     BandDistanceOptions quiet = options;
     quiet.progress = nullptr;
     runSideBySide([&] { source_ = signedDistanceOn(source.mesh, source.tree, frame_, bricks, options); },

@@ -1,5 +1,6 @@
 #include "sdf/band_signed_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -170,7 +171,18 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
   // value halfWidth + 1 on their side.
   const double clamped =
       options.clampBeyondHalfWidth ? options.halfWidth + 1.0 : std::numeric_limits<double>::infinity();
-  std::vector<float> distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
+  std::vector<float> distance;
+  const UnsignedBandDistances elsewhere = options.distancesFrom ? options.distancesFrom(bvh) : UnsignedBandDistances{};
+  if (elsewhere) {
+    if (options.progress) options.progress->beginPart("distances on the device", 1.0, 0.7);
+    distance = elsewhere(bvh, frame, cells, clamped);
+    interrupt::check("nothing was written");
+    s.bandCells = size_t(std::count_if(distance.begin(), distance.end(), [](float d) { return std::isfinite(d); }));
+    s.bandMs = stage.ms();
+    s.onDevice = true;
+  } else {
+    distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
+  }
 
   stage.restart();
   beginPart("winding-number sign", 0.2);
@@ -196,9 +208,10 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
   s.totalMs = treeMs + total.ms();
   log::verbose("band distances: " + std::to_string(bricks->activeCount()) + " bricks; hierarchy and bricks " +
                std::to_string(int(s.bvhMs)) + " ms, " + std::to_string(s.bandCells) + " exact distances " +
-               std::to_string(int(s.bandMs)) + " ms, " + std::to_string(s.farCells) + " propagated " +
-               std::to_string(int(s.farFieldMs)) + " ms, sign " + std::to_string(int(s.signMs)) + " ms (" +
-               std::to_string(s.windingEvaluations) + " evaluations), all " + std::to_string(int(s.totalMs)) + " ms");
+               (s.onDevice ? "on the device " : "") + std::to_string(int(s.bandMs)) + " ms, " +
+               std::to_string(s.farCells) + " propagated " + std::to_string(int(s.farFieldMs)) + " ms, sign " +
+               std::to_string(int(s.signMs)) + " ms (" + std::to_string(s.windingEvaluations) + " evaluations), all " +
+               std::to_string(int(s.totalMs)) + " ms");
   return band;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "band/band_field.hpp"
 #include "core/progress.hpp"
@@ -20,6 +21,13 @@
 #include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
+
+class BandCells;
+// Unsigned distances (voxels) of every stored cell, exact up to maxVoxels
+// and +inf beyond it and beyond the grid: deviceBandDistances()'s contract
+// (device_band_distances.hpp).
+using UnsignedBandDistances =
+    std::function<std::vector<float>(const TriangleBvh&, const GridFrame&, const BandCells&, double maxVoxels)>;
 
 struct BandDistanceOptions {
   double halfWidth = 9.0;  // voxels; at least 1
@@ -33,6 +41,11 @@ struct BandDistanceOptions {
   // computed or allocated for their cells: a caller that cannot hold them
   // throws here (ComputeDevice::checkBandFits).
   std::function<void(const BrickSet&)> checkBricks = {};
+  // Where the unsigned distances from the mesh's tree come from: when this
+  // is empty or gives an empty function, the CPU's exact band and far-field
+  // propagation; else the function it gives (the device's, as
+  // ComputeDevice::bandDistances chooses). The sign is the CPU's either way.
+  std::function<UnsignedBandDistances(const TriangleBvh&)> distancesFrom = {};
 };
 
 // Throws like signedDistance(); UsageError for a half width under 1 voxel.

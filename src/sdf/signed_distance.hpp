@@ -38,6 +38,7 @@ struct SignedDistanceStats {
   size_t farCells = 0;            // cells farther than the band
   size_t windingEvaluations = 0;  // fast winding-number queries made by the sign stage
   size_t openEdges = 0;           // uncancelled directed edges (hole rims), where w may vary off the surface
+  bool onDevice = false;          // the distances computed on the device (BandDistanceOptions::distancesFrom)
 };
 
 // The checks both signed distances make first: InputError for a mesh

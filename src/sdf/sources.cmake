@@ -1,6 +1,7 @@
 target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/band_distance.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_signed_distance.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/device_band_distances.cpp
   ${CMAKE_CURRENT_LIST_DIR}/enclosed_volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/far_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame.cpp

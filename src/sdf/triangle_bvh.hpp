@@ -78,15 +78,25 @@ public:
   // Closest point of one triangle (mesh index) to p, by the same arithmetic as closest().
   Closest closestOnTriangle(const glm::dvec3& p, uint32_t triangle) const;
 
-private:
-  // Deeper than any tree build() makes (see there), so fixed-size traversal stacks suffice.
-  static constexpr int kMaxDepth = 128;
-
+  // The tree as it is laid out, for a copy of it on the device
+  // (device_band_distances.cpp): nodes depth first from the root, their
+  // triangles by slot (the leaves' order).
   struct Node {
     glm::dvec3 lo, hi;  // bounds of the node's triangles
     uint32_t first;     // leaf: first triangle slot; inner: index of the second child (the first is next)
     uint32_t count;     // leaf: number of triangles; 0 for an inner node
   };
+  const std::vector<Node>& nodes() const { return nodes_; }
+  void slotCorners(uint32_t slot, glm::dvec3& a, glm::dvec3& b, glm::dvec3& c) const
+  {
+    const Triangle& t = triangles_[slot];
+    a = t.a, b = t.b, c = t.c;
+  }
+
+private:
+  // Deeper than any tree build() makes (see there), so fixed-size traversal stacks suffice.
+  static constexpr int kMaxDepth = 128;
+
   // Barill et al.'s per-node data: the node's triangles seen from afar, as
   // moments of their area-weighted normals about the area centroid.
   struct Expansion {

@@ -3,6 +3,7 @@
 // write meshes that the Khronos glTF-Validator accepts.
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <sstream>
 
@@ -236,6 +237,57 @@ TEST(DenoiseCli, WritesValidGltfAndReportsJson)
     const auto validation = testing::validateGltf(output);
     EXPECT_TRUE(validation.passed()) << validation;
   }
+}
+
+// --sdf: the band's distances on the CPU or on the device give the same
+// mesh. Within 3 voxels of the surface the two distances agree to float
+// rounding; beyond, the CPU's are propagated and up to 0.08 voxel longer
+// than the exact ones the device computes (the sphere's and torus's
+// medial regions: tests/sdf/device_band_distances_test.cpp), which three
+// lattice steps carry some way towards the surface. So the meshes agree to
+// a small fraction of a voxel at worst and to 1e-4 voxel on average.
+// auto takes the CPU on a CPU device (lavapipe), the device on a GPU.
+TEST(DenoiseCli, TheDistancesOnTheDeviceGiveTheSameMesh)
+{
+  testing::ScratchFolder folder;
+  const std::string input = (folder / "torus.obj").string();
+  writeMesh(testing::torusMesh(1.0, 0.3, 96, 32), input);
+  std::map<std::string, nlohmann::json> reports;
+  for (const std::string where : {"cpu", "device", "auto"}) {
+    const std::string output = (folder / (where + ".glb")).string();
+    testing::CliResult r =
+        testing::runLbmshape({"denoise", input, output, "--res", "48", "--steps", "3", "--sdf", where, "--json"});
+    ASSERT_EQ(r.exitCode, 0) << where << ": " << r.err;
+    reports[where] = nlohmann::json::parse(r.out);
+  }
+  EXPECT_EQ(reports["cpu"]["sdf_on"], "cpu");
+  EXPECT_EQ(reports["device"]["sdf_on"], "device");
+  EXPECT_EQ(reports["auto"]["sdf_on"],
+            reports["auto"]["device"].get<std::string>().find("llvmpipe") == 0 ? "cpu" : "device");
+  testing::CliResult compared =
+      testing::runLbmshape({"compare", (folder / "cpu.glb").string(), (folder / "device.glb").string(), "--json"});
+  ASSERT_EQ(compared.exitCode, 0) << compared.err;
+  const auto c = nlohmann::json::parse(compared.out);
+  const double voxel = reports["cpu"]["grid"]["voxel"].get<double>();
+  EXPECT_LT(c["hausdorff"].get<double>(), 0.05 * voxel) << c;
+  EXPECT_LT(c["mean"].get<double>(), 1e-3 * voxel) << c;
+  EXPECT_EQ(reports["cpu"]["output"]["triangles"], reports["device"]["output"]["triangles"]);
+}
+
+TEST(DenoiseCli, SdfIsCpuDeviceOrAuto)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  testing::CliResult r = testing::runLbmshape({"denoise", input, output, "--sdf", "gpu"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  const auto lines = testing::nonEmptyLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_NE(lines[0].find("--sdf"), std::string::npos) << lines[0];
+  EXPECT_FALSE(fs::exists(output));
+  r = testing::runLbmshape({"denoise", input, output, "--sdf", "device", "--device", "reference"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--sdf device"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(output));
 }
 
 // A band larger than the device is refused as soon as its bricks are known,

@@ -112,6 +112,30 @@ TEST_F(MorphCli, RunsOnTheBandUnlessDense)
   EXPECT_FALSE(fs::exists(folder / "both"));
 }
 
+// --sdf device: the two meshes' distances computed on the device, one
+// after the other (the morph computes them side by side on the CPU), give
+// the frames of the CPU's distances (within what the CPU's propagated
+// distances add: tests/cli/denoise_cli_test.cpp,
+// TheDistancesOnTheDeviceGiveTheSameMesh).
+TEST_F(MorphCli, TheDistancesOnTheDeviceGiveTheSameFrames)
+{
+  double voxel = 0.0;
+  for (const std::string where : {"cpu", "device"}) {
+    testing::CliResult r = testing::runLbmshape({"morph", sphere, torus, (folder / where).string(), "--res", "32",
+                                                 "--frames", "3", "--no-animation", "--sdf", where, "--json"});
+    ASSERT_EQ(r.exitCode, 0) << where << ": " << r.err;
+    voxel = nlohmann::json::parse(r.out)["grid"]["voxel"].get<double>();
+  }
+  for (const char* frame : {"frame_0001.glb", "frame_0002.glb"}) {
+    testing::CliResult compared = testing::runLbmshape(
+        {"compare", (folder / "cpu" / frame).string(), (folder / "device" / frame).string(), "--json"});
+    ASSERT_EQ(compared.exitCode, 0) << compared.err;
+    const auto c = nlohmann::json::parse(compared.out);
+    EXPECT_LT(c["hausdorff"].get<double>(), 0.05 * voxel) << frame << ": " << c;
+    EXPECT_LT(c["mean"].get<double>(), 1e-3 * voxel) << frame << ": " << c;
+  }
+}
+
 TEST_F(MorphCli, OtherFrameFormats)
 {
   for (const char* format : {"obj", "ply"}) {

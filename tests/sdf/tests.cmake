@@ -2,12 +2,14 @@ lbmshape_test(sdf_tests
   ${CMAKE_CURRENT_LIST_DIR}/band_sdf_checks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_signed_distance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/clear_regions_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/device_band_distances_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sdf_fixtures.cpp
   ${CMAKE_CURRENT_LIST_DIR}/triangle_bvh_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/winding_gradient_bound_test.cpp
+  DEVICE_SUITES DeviceBandDistances DeviceBandDistancesInterrupted DistancesOnTheDevice
 )
 lbmshape_shared_asset_test(sdf_shared_asset_tests
   ${CMAKE_CURRENT_LIST_DIR}/band_sdf_checks.cpp

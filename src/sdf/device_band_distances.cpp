@@ -1,0 +1,157 @@
+#include "sdf/device_band_distances.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "band_distance_interface.h"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "gpu/gpu_buffer.hpp"
+#include "gpu/gpu_context.hpp"
+#include "sdf/cell_space.hpp"
+
+namespace lbmshape {
+namespace {
+
+namespace shader = band_distance_shader;
+using Usage = vk::BufferUsageFlagBits;
+
+constexpr uint64_t kTriangleBytes = 4 * 4 * sizeof(float);  // four vec4: a, b, c, unit normal
+// Bricks a submission: 2 M cells, a few ms on a GPU; between submissions
+// the host checks for Ctrl-C.
+constexpr int kSlotsPerChunk = 4096;
+static_assert(kSlotsPerChunk * brickCells / BAND_DISTANCE_WORKGROUP_SIZE <= 65535, "one dispatch a chunk");
+
+// A bound of a box in grid coordinates as a float that still holds it:
+// rounded outwards, so no triangle's float corner lies outside its node.
+float lower(double v) { return std::nextafter(float(v), -std::numeric_limits<float>::infinity()); }
+float upper(double v) { return std::nextafter(float(v), std::numeric_limits<float>::infinity()); }
+
+std::vector<shader::Node> packNodes(const TriangleBvh& bvh, const GridFrame& frame)
+{
+  std::vector<shader::Node> packed(bvh.nodes().size());
+  for (size_t i = 0; i < packed.size(); ++i) {
+    const TriangleBvh::Node& n = bvh.nodes()[i];
+    const glm::dvec3 lo = frame.toGrid(n.lo), hi = frame.toGrid(n.hi);
+    packed[i] = {{lower(lo.x), lower(lo.y), lower(lo.z)}, n.first, {upper(hi.x), upper(hi.y), upper(hi.z)}, n.count};
+  }
+  return packed;
+}
+
+std::vector<glm::vec4> packTriangles(const TriangleBvh& bvh, const GridFrame& frame)
+{
+  const size_t count = bvh.triangleCount();
+  std::vector<glm::vec4> packed(4 * count);
+#pragma omp parallel for schedule(static)
+  for (size_t slot = 0; slot < count; ++slot) {
+    glm::dvec3 a, b, c;
+    bvh.slotCorners(uint32_t(slot), a, b, c);
+    a = frame.toGrid(a), b = frame.toGrid(b), c = frame.toGrid(c);
+    // PreparedTriangle's test for a triangle that is its edges.
+    const glm::dvec3 ab = b - a, ac = c - a, normal = glm::cross(ab, ac);
+    const double normal2 = glm::dot(normal, normal);
+    const bool sliver = !(normal2 > 1e-12 * glm::dot(ab, ab) * glm::dot(ac, ac));
+    packed[4 * slot] = glm::vec4(glm::vec3(a), sliver ? 1.0f : 0.0f);
+    packed[4 * slot + 1] = glm::vec4(glm::vec3(b), 0.0f);
+    packed[4 * slot + 2] = glm::vec4(glm::vec3(c), 0.0f);
+    packed[4 * slot + 3] = glm::vec4(sliver ? glm::vec3(0.0f) : glm::vec3(normal / std::sqrt(normal2)), 0.0f);
+  }
+  return packed;
+}
+
+// A device-local buffer holding `bytes` from host memory (through a staging buffer).
+gpu::GpuBuffer uploaded(gpu::GpuContext& context, const void* data, uint64_t bytes)
+{
+  gpu::GpuBuffer staging(context, bytes, Usage::eTransferSrc, gpu::MemoryUse::Upload);
+  std::memcpy(staging.mapped(), data, bytes);
+  gpu::GpuBuffer target(context, bytes, Usage::eStorageBuffer | Usage::eTransferDst, gpu::MemoryUse::Device);
+  context.runAndWait(
+      [&](vk::CommandBuffer cmd) { cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, bytes)); });
+  return target;
+}
+
+gpu::ComputeProgram& distanceProgram(gpu::GpuContext& context)
+{
+  using T = vk::DescriptorType;
+  return context.program({"band_distance",
+                          {{BAND_DISTANCE_BINDING_NODES, T::eStorageBuffer, 1, {}},
+                           {BAND_DISTANCE_BINDING_TRIANGLES, T::eStorageBuffer, 1, {}},
+                           {BAND_DISTANCE_BINDING_ORIGINS, T::eStorageBuffer, 1, {}},
+                           {BAND_DISTANCE_BINDING_DISTANCES, T::eStorageBuffer, 1, {}}},
+                          {},
+                          sizeof(shader::Parameters)});
+}
+
+}  // namespace
+
+void prepareDeviceBandDistances(gpu::GpuContext& context) { distanceProgram(context); }
+
+bool deviceHoldsTree(uint64_t range, const TriangleBvh& bvh)
+{
+  return bvh.nodes().size() * sizeof(shader::Node) <= range && bvh.triangleCount() * kTriangleBytes <= range;
+}
+
+std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleBvh& bvh, const GridFrame& frame,
+                                       const BandCells& cells, double maxVoxels)
+{
+  constexpr float infinity = std::numeric_limits<float>::infinity();
+  std::vector<float> distance(cells.count(), infinity);
+  const BrickSet& bricks = cells.bricks();
+  const int slots = int(bricks.activeCount());
+  if (slots == 0 || bvh.nodes().empty()) return distance;
+  if (!deviceHoldsTree(context.limits().maxStorageBufferRange, bvh))
+    throw DeviceError("the mesh's " + std::to_string(bvh.triangleCount()) + " triangles do not fit one buffer of " +
+                      context.description().name + " for the distances on the device; use --sdf cpu");
+
+  const std::vector<shader::Node> nodeData = packNodes(bvh, frame);
+  const std::vector<glm::vec4> triangleData = packTriangles(bvh, frame);
+  std::vector<glm::ivec4> originData(static_cast<size_t>(slots));
+  for (int s = 0; s < slots; ++s) originData[size_t(s)] = glm::ivec4(bricks.brick(s) * brickEdge, 0);
+  const gpu::GpuBuffer nodes = uploaded(context, nodeData.data(), nodeData.size() * sizeof(shader::Node));
+  const gpu::GpuBuffer triangles = uploaded(context, triangleData.data(), triangleData.size() * sizeof(glm::vec4));
+  const gpu::GpuBuffer origins = uploaded(context, originData.data(), originData.size() * sizeof(glm::ivec4));
+  const uint64_t chunkCells = uint64_t(std::min(slots, kSlotsPerChunk)) * brickCells;
+  const gpu::GpuBuffer out(context, chunkCells * sizeof(float), Usage::eStorageBuffer, gpu::MemoryUse::Readback);
+
+  using T = vk::DescriptorType;
+  gpu::ComputeProgram& program = distanceProgram(context);
+  const vk::DescriptorPoolSize poolSize(T::eStorageBuffer, 4);
+  vk::raii::DescriptorPool pool(
+      context.device(),
+      vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSize));
+  vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo(*pool, *program.setLayout));
+  const vk::DescriptorBufferInfo nodeInfo(nodes.handle(), 0, VK_WHOLE_SIZE),
+      triangleInfo(triangles.handle(), 0, VK_WHOLE_SIZE), originInfo(origins.handle(), 0, VK_WHOLE_SIZE),
+      outInfo(out.handle(), 0, VK_WHOLE_SIZE);
+  context.device().updateDescriptorSets(
+      {vk::WriteDescriptorSet(*sets[0], BAND_DISTANCE_BINDING_NODES, 0, T::eStorageBuffer, {}, nodeInfo),
+       vk::WriteDescriptorSet(*sets[0], BAND_DISTANCE_BINDING_TRIANGLES, 0, T::eStorageBuffer, {}, triangleInfo),
+       vk::WriteDescriptorSet(*sets[0], BAND_DISTANCE_BINDING_ORIGINS, 0, T::eStorageBuffer, {}, originInfo),
+       vk::WriteDescriptorSet(*sets[0], BAND_DISTANCE_BINDING_DISTANCES, 0, T::eStorageBuffer, {}, outInfo)},
+      {});
+
+  const Extent3& e = bricks.cells();
+  const double bound = std::min(maxVoxels, 1e18);  // squared, still a finite float; +inf beyond
+  shader::Parameters push{0, 0, e.nx, e.ny, e.nz, std::isfinite(maxVoxels) ? float(bound * bound) : infinity};
+  for (int first = 0; first < slots; first += kSlotsPerChunk) {
+    interrupt::check("nothing was written");
+    push.firstSlot = first, push.slots = std::min(kSlotsPerChunk, slots - first);
+    const uint32_t groups = uint32_t(push.slots) * brickCells / BAND_DISTANCE_WORKGROUP_SIZE;
+    context.runAndWait([&](vk::CommandBuffer cmd) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[0], {});
+      cmd.pushConstants<shader::Parameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+      cmd.dispatch(groups, 1, 1);
+      const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, toHost, {},
+                          {});
+    });
+    std::memcpy(distance.data() + size_t(first) * brickCells, out.mapped(),
+                size_t(push.slots) * brickCells * sizeof(float));
+  }
+  return distance;
+}
+
+}  // namespace lbmshape

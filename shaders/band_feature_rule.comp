@@ -13,8 +13,6 @@
 #include "band_rows.glsl"
 #include "feature_rule.glsl"
 
-layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform writeonly imageBuffer omegaPerCell;
-
 // Row (y + dy, z + dz) of X from moment 0 of the copy this dispatch reads
 // (where BAND_PASS_FIELD_TO_OLDER put it), as cells 0-3 and 4-7, placed by
 // rowPlace(): the own row beyond the grid's faces (zero flux: a neighbour
@@ -58,9 +56,8 @@ void featureRule()
   const bvec4 insideA = both(bvec4(rowInGrid), lessThan(origin.x + ivec4(0, 1, 2, 3), ivec4(p.nx)));
   const bvec4 insideB = both(bvec4(rowInGrid), lessThan(origin.x + ivec4(4, 5, 6, 7), ivec4(p.nx)));
   const int cells = (slot * 64 + z * 8 + y) * 2;  // vec4 index in the per-cell arrays
-  imageStore(omegaPerCell, cells, featurePreservingOmega(kappaA, not(insideA), p.gamma0, p.kappaEdge, p.lowestGamma));
-  imageStore(omegaPerCell, cells + 1,
-             featurePreservingOmega(kappaB, not(insideB), p.gamma0, p.kappaEdge, p.lowestGamma));
+  storePerCell(cells, featurePreservingOmega(kappaA, not(insideA), p.gamma0, p.kappaEdge, p.lowestGamma));
+  storePerCell(cells + 1, featurePreservingOmega(kappaB, not(insideB), p.gamma0, p.kappaEdge, p.lowestGamma));
 }
 
 void main()

@@ -25,6 +25,11 @@
 #define BAND_WORKGROUP_SIZE 64  // one brick: its 64 rows of eight cells
 #define BAND_MAX_WORKGROUPS_X 65535
 #define BAND_MAX_POOLS 16
+// The field's and the omega buffer's pools: a float a cell, so a pool holds
+// four times a moment pool's bricks, and four reach as far as the moments'
+// sixteen. (Every storage-buffer binding counts against the device's
+// per-stage limit: 32 on lavapipe.)
+#define BAND_MAX_FIELD_POOLS (BAND_MAX_POOLS / 4)
 
 // Bindings of set 0.
 #define BAND_BINDING_MOMENTS 0     // samplerBuffer, the current copy
@@ -36,7 +41,12 @@
 #define BAND_BINDING_NEXT 6        // storage buffers [BAND_MAX_POOLS]: the next copy
 #define BAND_BINDING_FIELD 7       // storage buffers [BAND_MAX_POOLS]: the field
 #define BAND_BINDING_WORK 8        // isamplerBuffer
-#define BAND_BINDING_GAMMA 9       // imageBuffer (RGBA32F), the omega buffer: gamma per cell under the paper's rule, the feature rule's omega
+// Storage buffers [BAND_MAX_POOLS], pooled as the field: the omega buffer
+// written (gamma per cell under the paper's rule, the feature rule's
+// omega), which BAND_BINDING_OMEGA reads. Not a storage texel buffer: on
+// lavapipe the feature rule's two image stores an invocation took its pass
+// from 7 to 17 ms at --res 128.
+#define BAND_BINDING_OMEGA_OUT 9
 
 // What a dispatch of band_step.comp does (the push constant `pass`): one
 // pipeline a run for all of it, since lavapipe spends some 100 ms on each.
@@ -79,13 +89,13 @@
 // 0-3 or 4-7) of brick slot s, in a copy of the moments.
 #define BAND_MOMENT_INDEX(s, m, row, half) ((((s) * 4 + (m)) * 64 + (row)) * 2 + (half))
 
-// The surface-speed pass (band_speed.comp): for every brick slot s, over its
-// cells with |X older| < 1, the sum of |X newer - X older| and their number,
+// The surface-speed pass (band_speed.comp): for every row of every brick
+// slot s, over its cells with |X older| < 1, the sum of |X newer - X older| and their number,
 // from rho* of the two copies (the fields of the last two steps when there
 // is no source: BandSolver::storedField).
 #define BAND_SPEED_BINDING_NEWER 0     // samplerBuffer: the newer copy of the moments
 #define BAND_SPEED_BINDING_OLDER 1     // samplerBuffer: the older copy
-#define BAND_SPEED_BINDING_PARTIALS 2  // storage buffer, vec2 [s]: (sum, count)
+#define BAND_SPEED_BINDING_PARTIALS 2  // storage buffer, vec2 [s][row]: (sum, count)
 #define BAND_SPEED_PARAMETERS(FIELD) FIELD(int, slots)
 
 #define BAND_DECLARE_FIELD(type, name) type name;

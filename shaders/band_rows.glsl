@@ -12,6 +12,7 @@ layout(set = 0, binding = BAND_BINDING_MOMENTS) uniform samplerBuffer moments;
 layout(set = 0, binding = BAND_BINDING_NEIGHBOURS) uniform isamplerBuffer neighbours;
 layout(set = 0, binding = BAND_BINDING_ORIGINS) uniform isamplerBuffer origins;
 layout(set = 0, binding = BAND_BINDING_WORK) uniform isamplerBuffer work;
+layout(set = 0, binding = BAND_BINDING_OMEGA_OUT, std430) writeonly buffer OmegaPool { vec4 v[]; } omegaPools[BAND_MAX_FIELD_POOLS];
 
 int slot, y, z;  // this invocation's brick and row
 ivec3 origin;    // the brick's first cell
@@ -25,6 +26,14 @@ ivec3 rowBricks(int dy, int dz) { return texelFetch(neighbours, slot * 9 + (dy +
 vec4 moment(int index) { return texelFetch(moments, index); }
 
 bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
+
+// Stores vec4 `cells` (the index in the per-cell arrays) of this brick in
+// the omega buffer, through its pools (which split it as the field's).
+void storePerCell(int cells, vec4 value)
+{
+  const int pool = slot / p.slotsPerFieldPool;
+  omegaPools[pool].v[cells - pool * p.slotsPerFieldPool * 128] = value;
+}
 
 // Where row (yy, zz) of this brick's coordinates (-1 .. 8) lies: the slot
 // and the row within it, and the slots of the bricks before and after that

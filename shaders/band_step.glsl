@@ -46,9 +46,7 @@ layout(set = 0, binding = BAND_BINDING_STREAMS) uniform usamplerBuffer streamBit
 layout(set = 0, binding = BAND_BINDING_OMEGA) uniform samplerBuffer omegaPerCell;
 layout(set = 0, binding = BAND_BINDING_SOURCE) uniform samplerBuffer sourceBase;
 layout(set = 0, binding = BAND_BINDING_NEXT, std430) writeonly buffer NextPool { vec4 v[]; } nextPools[BAND_MAX_POOLS];
-layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_POOLS];
-// Used only with PAPER_RULE: each invocation reads and writes its own cells.
-layout(set = 0, binding = BAND_BINDING_GAMMA, rgba32f) uniform imageBuffer gammaPerCell;
+layout(set = 0, binding = BAND_BINDING_FIELD, std430) writeonly buffer FieldPool { vec4 v[]; } fieldPools[BAND_MAX_FIELD_POOLS];
 
 vec4 fa[19], fb[19];  // the row's cells 0-3 and 4-7, pulled
 vec4 ownA[4], ownB[4];  // the same cells' own moments
@@ -189,9 +187,11 @@ void collide(vec4 sum, vec4 Jx, vec4 Jy, vec4 Jz, vec4 rhoBefore, int part)
   vec4 omega = PER_CELL_OMEGA ? texelFetch(omegaPerCell, cells) : vec4(p.omega);
   if (PAPER_RULE) {
     // precise: no fused multiply-add, as the CPU reference computes it.
-    precise vec4 gamma = clamp(p.gamma0 + (X - rhoBefore) / imageLoad(gammaPerCell, cells),
+    // Gamma per cell is in the omega buffer: each invocation reads and
+    // writes its own cells.
+    precise vec4 gamma = clamp(p.gamma0 + (X - rhoBefore) / texelFetch(omegaPerCell, cells),
                                vec4(ADAPTIVE_GAMMA_LOWEST), vec4(ADAPTIVE_GAMMA_HIGHEST));
-    imageStore(gammaPerCell, cells, gamma);
+    storePerCell(cells, gamma);
     precise vec4 tau = 3.0 * gamma + 0.5;
     omega = 1.0 / tau;
   }

@@ -38,7 +38,9 @@ constexpr auto texels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::Buffe
 // rule read and written as a storage texel buffer (one view spans the whole
 // band, and it leaves the storage-buffer bindings, 32 a stage on lavapipe,
 // to the pools).
-constexpr auto perCell = texels | vk::BufferUsageFlagBits::eStorageTexelBuffer;
+constexpr auto perCell = texels | vk::BufferUsageFlagBits::eStorageBuffer;
+constexpr auto speedPartials = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc |
+                               vk::BufferUsageFlagBits::eTransferDst;
 constexpr auto storage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                          vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc;
 
@@ -63,9 +65,9 @@ std::vector<vk::DescriptorSetLayoutBinding> bindings()
           {BAND_BINDING_OMEGA, T::eUniformTexelBuffer, 1, {}},
           {BAND_BINDING_SOURCE, T::eUniformTexelBuffer, 1, {}},
           {BAND_BINDING_NEXT, T::eStorageBuffer, BAND_MAX_POOLS, {}},
-          {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_POOLS, {}},
+          {BAND_BINDING_FIELD, T::eStorageBuffer, BAND_MAX_FIELD_POOLS, {}},
           {BAND_BINDING_WORK, T::eUniformTexelBuffer, 1, {}},
-          {BAND_BINDING_GAMMA, T::eStorageTexelBuffer, 1, {}}};
+          {BAND_BINDING_OMEGA_OUT, T::eStorageBuffer, BAND_MAX_FIELD_POOLS, {}}};
 }
 
 gpu::ProgramSpec speedProgram()
@@ -107,16 +109,13 @@ struct BandVulkanSolver::Resources {
         neighbours(c, 16 * 9 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 3 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
-        source(c, 16, texels, MemoryUse::Device),
-        partials(c, 8 * bricks->activeCount(),
-                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Device),
+        source(c, 16, texels, MemoryUse::Device), partials(c, 16, speedPartials, MemoryUse::Device),
         staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
                 vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
   {
-    std::array<vk::DescriptorPoolSize, 3> sizes = {
+    std::array<vk::DescriptorPoolSize, 2> sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 4 * 7),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageTexelBuffer, 4),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4 * 2 * BAND_MAX_POOLS)};
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 4 * (BAND_MAX_POOLS + 2 * BAND_MAX_FIELD_POOLS))};
     descriptorPool = vk::raii::DescriptorPool(
         c.device(), vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 4, sizes));
     // The feature rule's layout is the steps' (the same bindings): whichever
@@ -154,7 +153,7 @@ struct BandVulkanSolver::Resources {
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
   GpuBuffer omega, source;
-  GpuBuffer partials;  // the surface-speed pass's (sum, count) per slot
+  GpuBuffer partials;  // the surface-speed pass's (sum, count) per row; its size once it is used
   GpuBuffer staging;
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
@@ -208,20 +207,21 @@ struct BandVulkanSolver::Resources {
                          omegaView = view(omega, vk::Format::eR32G32B32A32Sfloat),
                          sourceView = view(source, vk::Format::eR32G32B32A32Sfloat),
                          workView = view(work, vk::Format::eR32Sint);
-    auto poolRanges = [&](const GpuBuffer& buffer, uint64_t bytesPerSlot, uint64_t slotsPerPool) {
-      std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS> ranges;
+    auto poolRanges = [&](const GpuBuffer& buffer, uint64_t bytesPerSlot, uint64_t slotsPerPool, uint64_t count) {
+      std::vector<vk::DescriptorBufferInfo> ranges(count);
       const uint64_t poolBytes = bytesPerSlot * slotsPerPool;
-      for (uint64_t k = 0; k < BAND_MAX_POOLS; ++k) {
+      for (uint64_t k = 0; k < count; ++k) {
         // Pools past the last repeat it: every descriptor must be valid.
         const uint64_t offset = std::min(k * poolBytes, (buffer.bytes() - 1) / poolBytes * poolBytes);
         ranges[k] = vk::DescriptorBufferInfo(buffer.handle(), offset, std::min(poolBytes, buffer.bytes() - offset));
       }
       return ranges;
     };
-    std::array<std::array<vk::DescriptorBufferInfo, BAND_MAX_POOLS>, 2> copyRanges = {
-        poolRanges(moments[0], momentBytesPerSlot, pools.slotsPerMomentPool),
-        poolRanges(moments[1], momentBytesPerSlot, pools.slotsPerMomentPool)};
-    const auto fieldRanges = poolRanges(field, fieldBytesPerSlot, pools.slotsPerFieldPool);
+    const std::vector<vk::DescriptorBufferInfo> copyRanges[2] = {
+        poolRanges(moments[0], momentBytesPerSlot, pools.slotsPerMomentPool, BAND_MAX_POOLS),
+        poolRanges(moments[1], momentBytesPerSlot, pools.slotsPerMomentPool, BAND_MAX_POOLS)};
+    const auto fieldRanges = poolRanges(field, fieldBytesPerSlot, pools.slotsPerFieldPool, BAND_MAX_FIELD_POOLS);
+    const auto omegaRanges = poolRanges(omega, fieldBytesPerSlot, pools.slotsPerFieldPool, BAND_MAX_FIELD_POOLS);
     std::vector<vk::WriteDescriptorSet> writes;
     for (int k = 0; k < 4; ++k) {
       const vk::DescriptorSet set = *sets[size_t(k)];
@@ -235,17 +235,23 @@ struct BandVulkanSolver::Resources {
       writes.emplace_back(set, BAND_BINDING_WORK, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &workView);
       writes.emplace_back(set, BAND_BINDING_NEXT, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr,
                           copyRanges[size_t(writesTo)].data());
-      writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_POOLS, T::eStorageBuffer, nullptr, fieldRanges.data());
-      writes.emplace_back(set, BAND_BINDING_GAMMA, 0, 1, T::eStorageTexelBuffer, nullptr, nullptr, &omegaView);
+      writes.emplace_back(set, BAND_BINDING_FIELD, 0, BAND_MAX_FIELD_POOLS, T::eStorageBuffer, nullptr,
+                          fieldRanges.data());
+      writes.emplace_back(set, BAND_BINDING_OMEGA_OUT, 0, BAND_MAX_FIELD_POOLS, T::eStorageBuffer, nullptr,
+                          omegaRanges.data());
     }
     context.device().updateDescriptorSets(writes, {});
   }
 
   // Made on the first surfaceSpeed(): a morph never asks for it, and
-  // lavapipe compiles every pipeline it creates.
+  // lavapipe compiles every pipeline it creates. The partials' pages are
+  // touched by a fill, which is cheaper on lavapipe than the pass's first
+  // stores into them (as the omega buffer's: perCellBuffer()).
   void writeSpeedDescriptors()
   {
     if (!speedSets.empty()) return;
+    partials = GpuBuffer(context, 8 * 64 * bricks->activeCount(), speedPartials, MemoryUse::Device);
+    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(partials.handle(), 0, VK_WHOLE_SIZE, 0u); });
     using T = vk::DescriptorType;
     const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 2 * 2),
                                                          vk::DescriptorPoolSize(T::eStorageBuffer, 2)};
@@ -394,6 +400,10 @@ struct BandVulkanSolver::Resources {
   {
     if (omega.bytes() == 4 * cells) return;
     omega = GpuBuffer(context, 4 * cells, perCell, MemoryUse::Device);
+    // Its pages touched once, by a fill: on lavapipe the feature rule's
+    // stores into a new buffer took 8 ms more at --res 128 (the fill 1 ms),
+    // the first touch of each page from the shader's threads.
+    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(omega.handle(), 0, VK_WHOLE_SIZE, 0u); });
     writeDescriptors();
   }
 
@@ -579,7 +589,8 @@ BandVulkanSolver::~BandVulkanSolver() = default;
 double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
 {
   // Per brick: streaming bits, neighbours, origin, work lists.
-  const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 2) / brickCells;
+  // streams, neighbours, origins, work, the speed's partials (a vec2 a row)
+  const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 3 + 8 * 64) / brickCells;
   return 2 * 16 + 4 + tables + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field
 }
 
@@ -876,7 +887,7 @@ double BandVulkanSolver::surfaceSpeed()
   band_state::checkStoredField(2, r_->stepsStored(), r_->sourceHost.has_value());
   r_->writeSpeedDescriptors();
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
-  std::vector<glm::vec2> partials(slots);
+  std::vector<glm::vec2> partials(size_t(slots) * 64);
   auto& program = r_->context.program(speedProgram());
   r_->download(r_->partials, r_->partials.bytes(), partials.data(), [&](vk::CommandBuffer cmd) {
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},

@@ -86,25 +86,33 @@ gpu::ProgramSpec speedProgram()
 // How the band's buffers split into pools of whole bricks, each within the
 // device's storage-buffer range.
 struct BandPools {
-  BandPools(const gpu::DeviceDescription& device, size_t slots)
-      : slotsPerMomentPool(std::max<uint64_t>(1, device.maxStorageBufferRange / momentBytesPerSlot)),
-        slotsPerFieldPool(std::max<uint64_t>(1, device.maxStorageBufferRange / fieldBytesPerSlot))
+  BandPools(const gpu::DeviceDescription& device, size_t slots, uint64_t poolBytes)
+      : slotsPerMomentPool(std::max<uint64_t>(1, range(device, poolBytes) / momentBytesPerSlot)),
+        slotsPerFieldPool(std::max<uint64_t>(1, range(device, poolBytes) / fieldBytesPerSlot))
   {
     const uint64_t cells = uint64_t(slots) * brickCells;
-    const uint64_t most = BandVulkanSolver::maxCells(device, false, false);
+    const uint64_t most =
+        std::min(BandVulkanSolver::maxCells(device, false, false),
+                 std::min(BAND_MAX_POOLS * slotsPerMomentPool, BAND_MAX_FIELD_POOLS * slotsPerFieldPool) * brickCells);
     if (cells > most)
       throw DeviceError("the narrow band has " + std::to_string(cells) + " cells, but " + device.name +
                         " holds at most " + std::to_string(most) + " of them");
+  }
+  static uint64_t range(const gpu::DeviceDescription& device, uint64_t poolBytes)
+  {
+    return poolBytes ? std::min(poolBytes, device.maxStorageBufferRange) : device.maxStorageBufferRange;
   }
 
   uint64_t slotsPerMomentPool, slotsPerFieldPool;
 };
 
 struct BandVulkanSolver::Resources {
-  Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b, uint64_t stagingBytes)
+  Resources(gpu::GpuContext& c, std::shared_ptr<const BrickSet> b, uint64_t stagingBytes, uint64_t poolBytes)
       : context(c), bricks(std::move(b)), cells(bricks->storedCells()), frozen(bricks->activeCount()),
-        pools(c.description(), bricks->activeCount()), moments{GpuBuffer(c, 16 * cells, storage, MemoryUse::Device),
-                                                               GpuBuffer(c, 16 * cells, storage, MemoryUse::Device)},
+        pools(c.description(), bricks->activeCount(), poolBytes), moments{GpuBuffer(c, 16 * cells, storage,
+                                                                                    MemoryUse::Device),
+                                                                          GpuBuffer(c, 16 * cells, storage,
+                                                                                    MemoryUse::Device)},
         field(c, 16, storage, MemoryUse::Device), streams(c, 4 * 64 * bricks->activeCount(), texels, MemoryUse::Device),
         neighbours(c, 16 * 9 * bricks->activeCount(), texels, MemoryUse::Device),
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
@@ -546,11 +554,11 @@ struct BandVulkanSolver::Resources {
 };
 
 BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
-                                   uint64_t stagingBytes, BandRunKind kind)
+                                   uint64_t stagingBytes, BandRunKind kind, uint64_t poolBytes)
 {
   const gpu::TraceLabel label("band set-up");
   if (bricks->activeCount() == 0) throw std::invalid_argument("a narrow band without bricks");
-  r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes);
+  r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes, poolBytes);
   const BrickSet& b = *r_->bricks;
   const std::vector<glm::ivec4> table = rowNeighbourTable(b);
   r_->upload(table.data(), table.size() * 16, r_->neighbours);

@@ -23,8 +23,11 @@ public:
   // 4 M cells (a band of 256^3), so most fields come back in one go.
   static constexpr uint64_t defaultStagingBytes = uint64_t(16) << 20;
 
+  // Buffers written by the shaders split into pools of whole bricks of at
+  // most `poolBytes` each (0: the device's storage-buffer range), one
+  // binding a pool; the tests make them small to split a small band.
   BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<const BrickSet> bricks,
-                   uint64_t stagingBytes = defaultStagingBytes, BandRunKind kind = {});
+                   uint64_t stagingBytes = defaultStagingBytes, BandRunKind kind = {}, uint64_t poolBytes = 0);
   ~BandVulkanSolver() override;
 
   std::string backendName() const override;

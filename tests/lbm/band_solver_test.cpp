@@ -790,6 +790,55 @@ TEST_F(BandVulkanStaging, ChunkedCopiesGiveTheSameField)
   EXPECT_NE(whole.values(), testing::bandOf(field, bricks).values());  // the steps changed something
 }
 
+// The buffers the shaders write (the next moments, the field, omega or the
+// paper's gamma per cell) split into pools of a few bricks, one binding
+// each, as a band of tens of millions of cells is on a real device: the
+// same steps, bit for bit, as in one pool each.
+class BandVulkanPools : public testing::GpuTest {};
+
+TEST_F(BandVulkanPools, ManySmallPoolsGiveTheSameSteps)
+{
+  const Extent3 extent{37, 29, 45};
+  const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
+  auto bricks = testing::bricksNear(field, 8.0);
+  const uint64_t poolBytes = 64 << 10;  // 8 bricks of moments, 32 of field or omega a pool
+  ASSERT_GT(bricks->activeCount(), 32u) << "the band must span several pools of each kind";
+  BandField gamma = testing::bandOf(testing::randomField(extent, 0.02f, 0.6f, 5), bricks);
+  for (float& g : gamma.values()) g = std::clamp(g, 0.02f, 0.6f);
+  enum Rule { PerCell, Paper, Feature };
+  auto run = [&](Rule rule, uint64_t pools) {
+    BandVulkanSolver solver(testing::sharedGpu(), bricks, BandVulkanSolver::defaultStagingBytes,
+                            {.paperRule = rule == Paper}, pools);
+    if (rule == PerCell) solver.setGammaPerCell(gamma);
+    if (rule == Paper) solver.setPaperRule(0.2);
+    if (rule == Feature) solver.setUniformGamma(0.3);
+    solver.initialize(testing::bandOf(field, bricks), 6.0);
+    solver.step(3);
+    if (rule == Feature) {
+      solver.setFeaturePreservingGamma(0.2, 0.5);
+      solver.step(3);
+    }
+    return std::pair{solver.field(), solver.surfaceSpeed()};
+  };
+  for (Rule rule : {PerCell, Paper, Feature}) {
+    const auto [pooled, pooledSpeed] = run(rule, poolBytes);
+    const auto [whole, wholeSpeed] = run(rule, 0);
+    EXPECT_EQ(pooled.values(), whole.values()) << "rule " << int(rule);
+    EXPECT_EQ(pooledSpeed, wholeSpeed) << "rule " << int(rule);
+    EXPECT_NE(whole.values(), testing::bandOf(field, bricks).values());
+  }
+}
+
+TEST_F(BandVulkanPools, ABandBeyondItsPoolsIsRefused)
+{
+  const Extent3 extent{37, 29, 45};
+  auto bricks = testing::bricksNear(testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0), 8.0);
+  ASSERT_GT(bricks->activeCount(), 16u);
+  // A pool of one brick's moments: sixteen bricks at most.
+  EXPECT_THROW(BandVulkanSolver(testing::sharedGpu(), bricks, BandVulkanSolver::defaultStagingBytes, {}, 8 << 10),
+               DeviceError);
+}
+
 std::string variantName(const ::testing::TestParamInfo<int>& info)
 {
   static const char* names[] = {"plain",        "source",       "gamma_per_cell",          "source_and_gamma_per_cell",

@@ -69,8 +69,7 @@ void ComputeDevice::warmUpForTheBand(BandRunKind kind) const
       // to keep.
       const gpu::TraceLabel label("warm-up: the band's pipelines");
       // The distances' pipeline first: they come before the lattice.
-      if (distances_ == DistancesOn::Device || (distances_ == DistancesOn::Auto && description().type != "cpu"))
-        prepareDeviceBandDistances(openContext());
+      if (distancesGoToTheDevice()) prepareDeviceBandDistances(openContext());
       auto brick = std::make_shared<BrickSet>(Extent3{brickEdge, brickEdge, brickEdge});
       brick->activate(0, 0, 0);
       BandVulkanSolver warm(openContext(), std::move(brick), BandVulkanSolver::defaultStagingBytes, kind);
@@ -114,23 +113,19 @@ gpu::GpuContext& ComputeDevice::openContext() const
   return *gpu_;
 }
 
+bool ComputeDevice::distancesGoToTheDevice() const
+{
+  if (distances_ == DistancesOn::Cpu || isReference()) return false;
+  return distances_ == DistancesOn::Device || description().type != "cpu";
+}
+
 bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
 {
-  if (distances_ == DistancesOn::Cpu) return false;
-  if (isReference()) {
-    if (distances_ == DistancesOn::Device)
-      throw UsageError("--sdf device needs a Vulkan device, not the reference (--device reference)");
-    return false;
-  }
-  const gpu::DeviceDescription& d = description();
-  const bool holds = deviceHoldsTree(d.maxStorageBufferRange, tree);
-  if (distances_ == DistancesOn::Device) {
-    if (!holds)
-      throw DeviceError("the mesh's " + std::to_string(tree.triangleCount()) + " triangles do not fit one buffer of " +
-                        d.name + " for the distances on the device; use --sdf cpu");
-    return true;
-  }
-  return holds && d.type != "cpu";
+  if (distances_ == DistancesOn::Device && isReference())
+    throw UsageError("--sdf device needs a Vulkan device, not the reference (--device reference)");
+  if (!distancesGoToTheDevice()) return false;
+  // Forced, a tree too large is deviceBandDistances()'s DeviceError.
+  return distances_ == DistancesOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
 }
 
 UnsignedBandDistances ComputeDevice::bandDistances(const TriangleBvh& tree) const

@@ -86,7 +86,7 @@ public:
   // native code with its shared hints) and for the reference; and the CPU
   // when the device cannot hold the tree. DistancesOn::Device on the
   // reference is a UsageError, on a tree the device cannot hold a
-  // DeviceError.
+  // DeviceError (when the distances are computed).
   UnsignedBandDistances bandDistances(const TriangleBvh& tree) const;
   bool distancesOnTheDevice(const TriangleBvh& tree) const;
 
@@ -101,7 +101,8 @@ private:
   // The chosen Vulkan device's context, opened if it is not yet: gpu()'s,
   // without waiting for the warm-up, whose thread calls it.
   gpu::GpuContext& openContext() const;
-  void finishWarmUp() const;  // waits for warmUpForTheBand()'s thread, if any
+  void finishWarmUp() const;            // waits for warmUpForTheBand()'s thread, if any
+  bool distancesGoToTheDevice() const;  // the rule of bandDistances(), the tree aside
 
   std::string request_;
   bool validation_ = false;

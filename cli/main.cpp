@@ -82,8 +82,11 @@ int main(int argc, char** argv)
   app.add_option("--sdf", common.distances,
                  "Where the band's signed distances are computed: auto (the device on a GPU, the CPU on "
                  "lavapipe), cpu or device")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, DistancesOn>{
-          {"auto", DistancesOn::Auto}, {"cpu", DistancesOn::Cpu}, {"device", DistancesOn::Device}}));
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, DistancesOn>{
+              {"auto", DistancesOn::Auto}, {"cpu", DistancesOn::Cpu}, {"device", DistancesOn::Device}},
+          CLI::ignore_case))
+      ->default_str("auto");
   app.add_flag("--validate", common.validation, "Run with the Khronos validation layer; any message fails the run");
   app.parse_complete_callback([&common] {
     log::setLevel(common.quiet ? log::Level::Quiet : common.verbose ? log::Level::Verbose : log::Level::Normal);

@@ -118,6 +118,14 @@ py::object denoise(const Vertices& vertices, const Triangles& triangles, int res
   return py::make_tuple(arrays[0], arrays[1], figures);
 }
 
+DistancesOn distancesNamed(const std::string& name)
+{
+  if (name == "auto") return DistancesOn::Auto;
+  if (name == "cpu") return DistancesOn::Cpu;
+  if (name == "device") return DistancesOn::Device;
+  throw UsageError("sdf must be 'auto', 'cpu' or 'device', not '" + name + "'");
+}
+
 Alignment alignmentNamed(const std::string& name)
 {
   if (name == "none") return Alignment::None;
@@ -204,8 +212,13 @@ PYBIND11_MODULE(lbmshape, m)
 
   py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(
       m, "Device", "A Vulkan device, or the CPU reference solver ('reference')")
-      .def(py::init<const std::string&, bool>(), py::arg("name") = "", py::arg("validation") = false,
-           "name: empty for the best device, an index, part of a device's name, or 'reference'")
+      .def(py::init([](const std::string& name, bool validation, const std::string& sdf) {
+             return std::make_shared<ComputeDevice>(name, validation, distancesNamed(sdf));
+           }),
+           py::arg("name") = "", py::arg("validation") = false, py::arg("sdf") = "auto",
+           "name: empty for the best device, an index, part of a device's name, or 'reference'; sdf: where the "
+           "narrow band's distances are computed, 'auto' (the device on a GPU, the CPU on lavapipe), 'cpu' or "
+           "'device' (lbmshape --sdf)")
       .def_property_readonly("name", &ComputeDevice::name);
 
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,

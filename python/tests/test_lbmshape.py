@@ -77,6 +77,17 @@ class Denoise(unittest.TestCase):
         self.assertTrue(twiced["twicing"])
         self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
 
+    def test_the_distances_on_the_device_give_the_same_mesh(self):
+        v, f = noisy_sphere()
+        v_cpu, f_cpu, cpu = lbmshape.denoise(v, f, res=40, steps=3, report=True, device=lbmshape.Device(sdf="cpu"))
+        v_dev, f_dev, dev = lbmshape.denoise(v, f, res=40, steps=3, report=True, device=lbmshape.Device(sdf="device"))
+        self.assertEqual(cpu["sdf_on"], "cpu")
+        self.assertEqual(dev["sdf_on"], "device")
+        self.assertEqual(f_cpu.shape, f_dev.shape)
+        self.assertLess(np.abs(v_cpu - v_dev).max(), 0.05 * cpu["grid"]["voxel"])
+        with self.assertRaisesRegex(ValueError, "^sdf must be 'auto', 'cpu' or 'device'"):
+            lbmshape.Device(sdf="gpu")
+
     def test_bad_arrays_and_parameters_name_what_is_wrong(self):
         v, f = noisy_sphere()
         with self.assertRaisesRegex(lbmshape.UsageError, "vertices must be an array of shape"):

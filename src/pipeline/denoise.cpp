@@ -107,6 +107,7 @@ struct SmoothedField {
   Field field;
   int steps = 0;
   int stepsRun = 0;
+  std::vector<double> speeds;  // --steps auto's readings, voxels a step (smoothing_stop.hpp)
 };
 
 // What --steps auto reads from each kind of lattice. The grid computes the
@@ -151,9 +152,10 @@ BandReading readingOf(BandSolver& solver, const BandField& x0) { return {solver,
 
 // --steps auto: runs the lattice until the surface's speed after a step
 // has levelled off and returns that step (mostSteps + 1 if none did by
-// mostSteps); the lattice is then `reading.lag` steps past it.
+// mostSteps); the lattice is then `reading.lag` steps past it. The speeds
+// read go to `speeds`, one a step.
 template <class Solver, class Reading>
-int runUntilTheSpeedLevelsOff(Solver& solver, Reading& reading, Progress& progress)
+int runUntilTheSpeedLevelsOff(Solver& solver, Reading& reading, Progress& progress, std::vector<double>& speeds)
 {
   using namespace smoothing_stop;
   InterruptibleSteps stepper(solver);
@@ -161,6 +163,7 @@ int runUntilTheSpeedLevelsOff(Solver& solver, Reading& reading, Progress& progre
   for (int n = 1; n <= mostSteps; ++n) {
     stepper.advanceTo(n + reading.lag, stepsDone(solver), &progress);
     const double now = reading.speedOfTheStep();
+    speeds.push_back(now);
     if (levelledOff(n, previous, now)) return n;
     previous = now;
   }
@@ -174,10 +177,12 @@ SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& prog
 {
   auto reading = readingOf(solver, x0);
   x0 = Field();
-  const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress);
+  std::vector<double> speeds;
+  const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
   const int stepsRun = std::min(levelled, smoothing_stop::mostSteps) + reading.lag;
-  if (levelled > smoothing_stop::mostSteps) return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun};
-  return {reading.fieldBeforeIt(), levelled - 1, stepsRun};
+  if (levelled > smoothing_stop::mostSteps)
+    return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun, std::move(speeds)};
+  return {reading.fieldBeforeIt(), levelled - 1, stepsRun, std::move(speeds)};
 }
 
 // The smoothing S of `steps` steps twiced (twicing.hpp), the lattice at or
@@ -190,7 +195,7 @@ SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& prog
   Field once = solver.field();
   stepper.advanceTo(2 * steps, stepsDone(solver), &progress);
   twice(once.values(), solver.field().values());
-  return {std::move(once), steps, 2 * steps};
+  return {std::move(once), steps, 2 * steps, {}};
 }
 
 // --steps auto with twicing: S of twicedSteps(n) steps, n the step at which
@@ -200,8 +205,11 @@ SmoothedField<Field> twicedStepsTheNoiseNeeds(Solver& solver, Field x0, Progress
 {
   auto reading = readingOf(solver, x0);
   x0 = Field();
-  const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress);
-  return twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress);
+  std::vector<double> speeds;
+  const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
+  SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress);
+  twiced.speeds = std::move(speeds);
+  return twiced;
 }
 
 // The most steps of the smoothing S (twiced, the lattice runs twice as
@@ -224,7 +232,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
     x0 = Field();
     if (o.twicing) return twiceTheSmoothing<Solver, Field>(solver, *o.steps, progress);
     InterruptibleSteps(solver).advanceTo(*o.steps, stepsDone(solver), &progress);
-    return {solver.field(), *o.steps, *o.steps};
+    return {solver.field(), *o.steps, *o.steps, {}};
   }
   SmoothedField<Field> smoothed = o.twicing ? twicedStepsTheNoiseNeeds(solver, std::move(x0), progress)
                                             : stepsTheNoiseNeeds(solver, std::move(x0), progress);
@@ -289,6 +297,7 @@ struct Smoothed {
   int stepsRun = 0;                // the steps the lattice ran for it
   double volumeShift = 0;          // voxels the field was shifted by to keep the volume
   bool distancesOnDevice = false;  // where the signed distance's distances were computed (--sdf)
+  std::vector<double> speeds;      // --steps auto's readings (SmoothedField)
 };
 
 // The largest level-set shift that keeping the volume may apply, in voxels:
@@ -327,7 +336,9 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
           frame.extent.cells(),
           smoothed.steps,
           smoothed.stepsRun,
-          shift};
+          shift,
+          false,
+          std::move(smoothed.speeds)};
 }
 
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
@@ -366,7 +377,8 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
           smoothed.steps,
           smoothed.stepsRun,
           shift,
-          distanceStats.onDevice};
+          distanceStats.onDevice,
+          std::move(smoothed.speeds)};
 }
 
 }  // namespace
@@ -449,6 +461,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"steps", smoothed.steps},
       {"steps_chosen", o.steps ? "given" : "auto"},
       {"steps_run", smoothed.stepsRun},
+      {"surface_speeds", smoothed.speeds},
       {"smoothing", smoothingName(o.smoothing)},
       {"twicing", o.twicing},
       {"keep_volume", o.keepVolume},

@@ -18,7 +18,7 @@ namespace lbmshape::smoothing_stop {
 inline constexpr int fewestSteps = 2;
 // At most the old fixed default, for which the narrow band's width is chosen.
 inline constexpr int mostSteps = 7;
-inline constexpr double levelRatio = 0.85;
+inline constexpr double levelRatio = 0.88;
 
 // The surface's speed from one field to the next, for the grid (--dense),
 // which reads its fields back: the measure of lbm/surface_change.hpp (the

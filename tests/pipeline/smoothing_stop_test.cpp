@@ -82,8 +82,13 @@ TEST_F(AutoSteps, TheNoisierTheInputTheMoreSteps)
 }
 
 // The band reads its fields one step late from its two copies, the grid
-// each step as it is taken: the same rule, so the same steps.
-TEST_F(AutoSteps, TheBandAndTheGridChooseTheSameSteps)
+// each step as it is taken: the same rule on the same readings. Their first
+// readings agree to float rounding (a band that read a step early or late
+// would be off by a factor of two or more); later ones differ by up to 11 %
+// on this torus, as the two lattices' starts and edge-finding copies differ
+// a little (`StartUpTransient`), so a ratio near the rule's threshold can
+// take one a step further than the other, never more.
+TEST_F(AutoSteps, TheBandAndTheGridReadTheSameSpeeds)
 {
   const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 192, 96);
   const double voxel = frameWithResolution(bounds(torus), 64, 4.0).voxel, edge = meanEdgeLength(torus);
@@ -92,7 +97,17 @@ TEST_F(AutoSteps, TheBandAndTheGridChooseTheSameSteps)
     const nlohmann::json band = denoise(input), grid = denoise(input, {}, true);
     EXPECT_EQ(band["lattice"]["kind"], "band");
     EXPECT_EQ(grid["lattice"]["kind"], "grid");
-    EXPECT_EQ(band["steps"], grid["steps"]) << "sigma " << sigma;
+    const auto bandSpeeds = band["surface_speeds"].get<std::vector<double>>();
+    const auto gridSpeeds = grid["surface_speeds"].get<std::vector<double>>();
+    ASSERT_FALSE(bandSpeeds.empty());
+    ASSERT_FALSE(gridSpeeds.empty());
+    EXPECT_NEAR(bandSpeeds[0], gridSpeeds[0], 1e-4 * gridSpeeds[0]) << "sigma " << sigma;
+    for (size_t k = 1; k < std::min(bandSpeeds.size(), gridSpeeds.size()); ++k)
+      EXPECT_NEAR(bandSpeeds[k], gridSpeeds[k], 0.15 * gridSpeeds[k]) << "sigma " << sigma << ", reading " << k;
+    EXPECT_NEAR(band["steps"].get<int>(), grid["steps"].get<int>(), 1) << "sigma " << sigma;
+    // One reading a step the rule looked at: the kept step and the one
+    // that levelled off.
+    EXPECT_EQ(bandSpeeds.size(), size_t(band["steps"].get<int>() + 1)) << "sigma " << sigma;
   }
 }
 

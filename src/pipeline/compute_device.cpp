@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/host_memory.hpp"
+#include "core/log.hpp"
 #include "core/memory_sizes.hpp"
 #include "gpu/gpu_context.hpp"
 #include "gpu/vulkan_instance.hpp"
@@ -126,6 +127,12 @@ bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
   if (!distancesGoToTheDevice()) return false;
   // Forced, a tree too large is deviceBandDistances()'s DeviceError.
   return distances_ == DistancesOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
+}
+
+void ComputeDevice::warnThatTheGridsDistancesAreTheCpus() const
+{
+  if (distances_ == DistancesOn::Device)
+    log::warning("--sdf device computes the narrow band's distances; the grid's (--dense, --noise) are the CPU's");
 }
 
 UnsignedBandDistances ComputeDevice::bandDistances(const TriangleBvh& tree) const

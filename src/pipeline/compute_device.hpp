@@ -89,6 +89,10 @@ public:
   // DeviceError (when the distances are computed).
   UnsignedBandDistances bandDistances(const TriangleBvh& tree) const;
   bool distancesOnTheDevice(const TriangleBvh& tree) const;
+  // For a job on the grid, whose distances have no device path: a warning
+  // when --sdf device asked for one (a jobs file's other jobs may still
+  // use it, so not an error).
+  void warnThatTheGridsDistancesAreTheCpus() const;
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;

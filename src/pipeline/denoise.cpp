@@ -320,6 +320,7 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
                          const DenoiseOptions& o, const ComputeDevice& device, StageClock& clock)
 {
   device.checkFits(frame.extent);
+  device.warnThatTheGridsDistancesAreTheCpus();
   Volume field =
       clock.time("sdf", [&](Progress& progress) { return signedDistance(mesh, frame, {.progress = &progress}); });
   requireEnclosedVolume(field, input);  // else the empty result would be blamed on the smoothing

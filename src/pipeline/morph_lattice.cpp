@@ -321,8 +321,10 @@ std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const
                                                const MorphSchedule& longest, const ComputeDevice& device,
                                                StageClock& clock, const std::function<void()>& beforeDistances)
 {
-  if (!options.band || options.noise.amplitude > 0.0)
+  if (!options.band || options.noise.amplitude > 0.0) {
+    device.warnThatTheGridsDistancesAreTheCpus();
     return std::make_unique<GridMorph>(source, target, frame, clock, beforeDistances);
+  }
   return std::make_unique<BandMorph>(source, target, frame, longest, device, clock, beforeDistances);
 }
 

@@ -288,6 +288,11 @@ TEST(DenoiseCli, SdfIsCpuDeviceOrAuto)
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find("--sdf device"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(output));
+  // The grid has no distances on the device: it says so, and runs.
+  r = testing::runLbmshape({"denoise", input, output, "--sdf", "device", "--dense", "--res", "24", "--json"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --sdf device computes the narrow band's distances"), std::string::npos) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["sdf_on"], "cpu");
 }
 
 // A band larger than the device is refused as soon as its bricks are known,

@@ -16,8 +16,8 @@
 #define LBMSHAPE_BAND_DISTANCE_INTERFACE_H
 
 #define BAND_DISTANCE_WORKGROUP_SIZE 64
-// Deeper than any tree TriangleBvh builds (its kMaxDepth), so the
-// traversal's fixed stack suffices.
+// TriangleBvh::kMaxDepth + 2: a walk of any tree it builds fits the
+// traversal's fixed stack (device_band_distances.cpp asserts it).
 #define BAND_DISTANCE_STACK 130
 
 #define BAND_DISTANCE_BINDING_NODES 0

@@ -27,13 +27,16 @@ vec4 moment(int index) { return texelFetch(moments, index); }
 
 bvec4 both(bvec4 a, bvec4 b) { return bvec4(uvec4(a) & uvec4(b)); }
 
-// Stores vec4 `cells` (the index in the per-cell arrays) of this brick in
-// the omega buffer, through its pools (which split it as the field's).
-void storePerCell(int cells, vec4 value)
-{
-  const int pool = slot / p.slotsPerFieldPool;
-  omegaPools[pool].v[cells - pool * p.slotsPerFieldPool * 128] = value;
-}
+// The buffers of a float a cell that the shaders write through pools (the
+// field, the omega buffer): this brick's pool, and where vec4 `cells` (the
+// index in the per-cell arrays) lies in it. Every pool holds whole bricks,
+// so a workgroup writes to one pool (the index is dynamically uniform).
+const int VEC4S_PER_BRICK = 128;  // 512 cells, four a vec4
+int perCellPool() { return slot / p.slotsPerFieldPool; }
+int inPerCellPool(int cells) { return cells - perCellPool() * p.slotsPerFieldPool * VEC4S_PER_BRICK; }
+
+// Stores vec4 `cells` of this brick in the omega buffer.
+void storePerCell(int cells, vec4 value) { omegaPools[perCellPool()].v[inPerCellPool(cells)] = value; }
 
 // Where row (yy, zz) of this brick's coordinates (-1 .. 8) lies: the slot
 // and the row within it, and the slots of the bricks before and after that

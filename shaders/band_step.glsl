@@ -175,8 +175,7 @@ void collide(vec4 sum, vec4 Jx, vec4 Jy, vec4 Jz, vec4 rhoBefore, int part)
     // step on): what the field pass would store.
     vec4 unused;
     const vec4 field = p.writeField != 0 ? fieldFromSum(sum, p.fieldDecay, p.fieldBaseScale, cells, unused) : X;
-    const int pool = slot / p.slotsPerFieldPool, first = slot - pool * p.slotsPerFieldPool;
-    fieldPools[pool].v[(first * 64 + z * 8 + y) * 2 + part] = field;
+    fieldPools[perCellPool()].v[inPerCellPool(cells)] = field;
     if (p.pass == BAND_PASS_FIELD) return;
   }
   const int pool = slot / p.slotsPerMomentPool, first = slot - pool * p.slotsPerMomentPool;

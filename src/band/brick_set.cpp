@@ -18,6 +18,13 @@ int32_t BrickSet::activate(int bx, int by, int bz)
   return entry;
 }
 
+std::vector<glm::ivec4> BrickSet::originTable() const
+{
+  std::vector<glm::ivec4> table(activeCount());
+  for (size_t s = 0; s < activeCount(); ++s) table[s] = glm::ivec4(brickEdge * coordinates_[s], 0);
+  return table;
+}
+
 std::vector<int32_t> BrickSet::neighbourTable() const
 {
   std::vector<int32_t> table(activeCount() * 27);

@@ -65,6 +65,9 @@ public:
   // For every slot, the slots of its 27 neighbours (itself in the middle),
   // index (dx + 1) + 3 (dy + 1) + 9 (dz + 1); noBrick where there is none.
   std::vector<int32_t> neighbourTable() const;
+  // For every slot, its brick's first cell in the grid (w 0): the origins
+  // table the band's shaders read (band_interface.h, band_distance_interface.h).
+  std::vector<glm::ivec4> originTable() const;
 
   static int floorDiv(int c) { return c >= 0 ? c / brickEdge : -((-c + brickEdge - 1) / brickEdge); }
 

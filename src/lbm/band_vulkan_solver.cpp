@@ -34,10 +34,9 @@ constexpr int stepsPerSubmit = 256;
 constexpr uint64_t momentBytesPerSlot = 4 * brickCells * 4, fieldBytesPerSlot = brickCells * 4;
 
 constexpr auto texels = vk::BufferUsageFlagBits::eUniformTexelBuffer | vk::BufferUsageFlagBits::eTransferDst;
-// The omega buffer: read as a uniform texel buffer, or under the paper's
-// rule read and written as a storage texel buffer (one view spans the whole
-// band, and it leaves the storage-buffer bindings, 32 a stage on lavapipe,
-// to the pools).
+// The omega buffer: read as a uniform texel buffer (one view spans the
+// whole band), written (the feature rule, the paper's rule) through storage
+// buffers pooled as the field's (BAND_BINDING_OMEGA_OUT).
 constexpr auto perCell = texels | vk::BufferUsageFlagBits::eStorageBuffer;
 constexpr auto speedPartials = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc |
                                vk::BufferUsageFlagBits::eTransferDst;
@@ -251,15 +250,23 @@ struct BandVulkanSolver::Resources {
     context.device().updateDescriptorSets(writes, {});
   }
 
+  // A new device buffer, its pages touched by a fill: on lavapipe a
+  // shader's first stores into pages never touched cost several times a
+  // fill (the feature rule's pass at --res 128: 8 ms more; the fill of the
+  // same 2.7 MB, 1 ms).
+  GpuBuffer filledBuffer(uint64_t bytes, vk::BufferUsageFlags usage)
+  {
+    GpuBuffer buffer(context, bytes, usage, MemoryUse::Device);
+    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(buffer.handle(), 0, VK_WHOLE_SIZE, 0u); });
+    return buffer;
+  }
+
   // Made on the first surfaceSpeed(): a morph never asks for it, and
-  // lavapipe compiles every pipeline it creates. The partials' pages are
-  // touched by a fill, which is cheaper on lavapipe than the pass's first
-  // stores into them (as the omega buffer's: perCellBuffer()).
+  // lavapipe compiles every pipeline it creates.
   void writeSpeedDescriptors()
   {
     if (!speedSets.empty()) return;
-    partials = GpuBuffer(context, 8 * 64 * bricks->activeCount(), speedPartials, MemoryUse::Device);
-    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(partials.handle(), 0, VK_WHOLE_SIZE, 0u); });
+    partials = filledBuffer(8 * 64 * bricks->activeCount(), speedPartials);
     using T = vk::DescriptorType;
     const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 2 * 2),
                                                          vk::DescriptorPoolSize(T::eStorageBuffer, 2)};
@@ -407,11 +414,7 @@ struct BandVulkanSolver::Resources {
   void perCellBuffer()
   {
     if (omega.bytes() == 4 * cells) return;
-    omega = GpuBuffer(context, 4 * cells, perCell, MemoryUse::Device);
-    // Its pages touched once, by a fill: on lavapipe the feature rule's
-    // stores into a new buffer took 8 ms more at --res 128 (the fill 1 ms),
-    // the first touch of each page from the shader's threads.
-    context.runAndWait([&](vk::CommandBuffer cmd) { cmd.fillBuffer(omega.handle(), 0, VK_WHOLE_SIZE, 0u); });
+    omega = filledBuffer(4 * cells, perCell);
     writeDescriptors();
   }
 
@@ -562,8 +565,7 @@ BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<con
   const BrickSet& b = *r_->bricks;
   const std::vector<glm::ivec4> table = rowNeighbourTable(b);
   r_->upload(table.data(), table.size() * 16, r_->neighbours);
-  std::vector<glm::ivec4> origins(b.activeCount());
-  for (size_t s = 0; s < origins.size(); ++s) origins[s] = glm::ivec4(brickEdge * b.brick(int32_t(s)), 0);
+  const std::vector<glm::ivec4> origins = b.originTable();
   r_->upload(origins.data(), origins.size() * 16, r_->origins);
   // Lavapipe turns a pipeline into machine code at its first dispatch (some
   // 250 ms on the 2-core host, where pipeline creation took 100): one
@@ -596,8 +598,8 @@ BandVulkanSolver::~BandVulkanSolver() = default;
 
 double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
 {
-  // Per brick: streaming bits, neighbours, origin, work lists.
-  // streams, neighbours, origins, work, the speed's partials (a vec2 a row)
+  // Per brick: streaming bits, neighbours, origin, work lists, the speed's
+  // partials (a vec2 a row).
   const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 3 + 8 * 64) / brickCells;
   return 2 * 16 + 4 + tables + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field
 }

@@ -23,6 +23,7 @@ constexpr uint64_t kTriangleBytes = 4 * 4 * sizeof(float);  // four vec4: a, b, 
 // the host checks for Ctrl-C.
 constexpr int kSlotsPerChunk = 4096;
 static_assert(kSlotsPerChunk * brickCells / BAND_DISTANCE_WORKGROUP_SIZE <= 65535, "one dispatch a chunk");
+static_assert(BAND_DISTANCE_STACK == TriangleBvh::kMaxDepth + 2, "the shader's stack holds any walk of the tree");
 
 // A bound of a box in grid coordinates as a float that still holds it:
 // rounded outwards, so no triangle's float corner lies outside its node.
@@ -107,8 +108,7 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
 
   const std::vector<shader::Node> nodeData = packNodes(bvh, frame);
   const std::vector<glm::vec4> triangleData = packTriangles(bvh, frame);
-  std::vector<glm::ivec4> originData(static_cast<size_t>(slots));
-  for (int s = 0; s < slots; ++s) originData[size_t(s)] = glm::ivec4(bricks.brick(s) * brickEdge, 0);
+  const std::vector<glm::ivec4> originData = bricks.originTable();
   const gpu::GpuBuffer nodes = uploaded(context, nodeData.data(), nodeData.size() * sizeof(shader::Node));
   const gpu::GpuBuffer triangles = uploaded(context, triangleData.data(), triangleData.size() * sizeof(glm::vec4));
   const gpu::GpuBuffer origins = uploaded(context, originData.data(), originData.size() * sizeof(glm::ivec4));

@@ -93,10 +93,11 @@ public:
     a = t.a, b = t.b, c = t.c;
   }
 
-private:
-  // Deeper than any tree build() makes (see there), so fixed-size traversal stacks suffice.
+  // Deeper than any tree build() makes (see there), so fixed-size traversal
+  // stacks of kMaxDepth + 2 entries suffice (the device's too).
   static constexpr int kMaxDepth = 128;
 
+private:
   // Barill et al.'s per-node data: the node's triangles seen from afar, as
   // moments of their area-weighted normals about the area centroid.
   struct Expansion {

@@ -11,6 +11,7 @@
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
 #include "sdf/cell_space.hpp"
+#include "sdf/point_triangle.hpp"
 
 namespace lbmshape {
 namespace {
@@ -50,10 +51,9 @@ std::vector<glm::vec4> packTriangles(const TriangleBvh& bvh, const GridFrame& fr
     glm::dvec3 a, b, c;
     bvh.slotCorners(uint32_t(slot), a, b, c);
     a = frame.toGrid(a), b = frame.toGrid(b), c = frame.toGrid(c);
-    // PreparedTriangle's test for a triangle that is its edges.
-    const glm::dvec3 ab = b - a, ac = c - a, normal = glm::cross(ab, ac);
+    const bool sliver = PreparedTriangle(a, b, c).isSliver();
+    const glm::dvec3 normal = glm::cross(b - a, c - a);
     const double normal2 = glm::dot(normal, normal);
-    const bool sliver = !(normal2 > 1e-12 * glm::dot(ab, ab) * glm::dot(ac, ac));
     packed[4 * slot] = glm::vec4(glm::vec3(a), sliver ? 1.0f : 0.0f);
     packed[4 * slot + 1] = glm::vec4(glm::vec3(b), 0.0f);
     packed[4 * slot + 2] = glm::vec4(glm::vec3(c), 0.0f);

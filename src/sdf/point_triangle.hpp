@@ -81,6 +81,10 @@ public:
     return a_ + v * ab_ + w * ac_;
   }
 
+  // Whether the triangle counts as its three edges (the device's distances,
+  // device_band_distances.cpp, ask the same).
+  bool isSliver() const { return sliver_; }
+
   // The squared distance from p to the triangle.
   double distance2(const glm::dvec3& p) const
   {

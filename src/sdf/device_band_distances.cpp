@@ -62,16 +62,22 @@ std::vector<glm::vec4> packTriangles(const TriangleBvh& bvh, const GridFrame& fr
   return packed;
 }
 
-// A device-local buffer holding `bytes` from host memory (through a staging buffer).
-gpu::GpuBuffer uploaded(gpu::GpuContext& context, const void* data, uint64_t bytes)
-{
-  gpu::GpuBuffer staging(context, bytes, Usage::eTransferSrc, gpu::MemoryUse::Upload);
-  std::memcpy(staging.mapped(), data, bytes);
-  gpu::GpuBuffer target(context, bytes, Usage::eStorageBuffer | Usage::eTransferDst, gpu::MemoryUse::Device);
-  context.runAndWait(
-      [&](vk::CommandBuffer cmd) { cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, bytes)); });
-  return target;
-}
+// A device-local buffer and the host-visible copy of its contents that the
+// first submission copies into it: the uploads go out with the first chunk's
+// work, not with a wait each.
+struct StagedUpload {
+  gpu::GpuBuffer staging, target;
+  StagedUpload(gpu::GpuContext& context, const void* data, uint64_t bytes)
+      : staging(context, bytes, Usage::eTransferSrc, gpu::MemoryUse::Upload),
+        target(context, bytes, Usage::eStorageBuffer | Usage::eTransferDst, gpu::MemoryUse::Device)
+  {
+    std::memcpy(staging.mapped(), data, bytes);
+  }
+  void record(vk::CommandBuffer cmd) const
+  {
+    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, target.bytes()));
+  }
+};
 
 gpu::ComputeProgram& distanceProgram(gpu::GpuContext& context)
 {
@@ -109,9 +115,9 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
   const std::vector<shader::Node> nodeData = packNodes(bvh, frame);
   const std::vector<glm::vec4> triangleData = packTriangles(bvh, frame);
   const std::vector<glm::ivec4> originData = bricks.originTable();
-  const gpu::GpuBuffer nodes = uploaded(context, nodeData.data(), nodeData.size() * sizeof(shader::Node));
-  const gpu::GpuBuffer triangles = uploaded(context, triangleData.data(), triangleData.size() * sizeof(glm::vec4));
-  const gpu::GpuBuffer origins = uploaded(context, originData.data(), originData.size() * sizeof(glm::ivec4));
+  const StagedUpload nodes(context, nodeData.data(), nodeData.size() * sizeof(shader::Node));
+  const StagedUpload triangles(context, triangleData.data(), triangleData.size() * sizeof(glm::vec4));
+  const StagedUpload origins(context, originData.data(), originData.size() * sizeof(glm::ivec4));
   const uint64_t chunkCells = uint64_t(std::min(slots, kSlotsPerChunk)) * brickCells;
   const gpu::GpuBuffer out(context, chunkCells * sizeof(float), Usage::eStorageBuffer, gpu::MemoryUse::Readback);
 
@@ -122,8 +128,8 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
       context.device(),
       vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSize));
   vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo(*pool, *program.setLayout));
-  const vk::DescriptorBufferInfo nodeInfo(nodes.handle(), 0, VK_WHOLE_SIZE),
-      triangleInfo(triangles.handle(), 0, VK_WHOLE_SIZE), originInfo(origins.handle(), 0, VK_WHOLE_SIZE),
+  const vk::DescriptorBufferInfo nodeInfo(nodes.target.handle(), 0, VK_WHOLE_SIZE),
+      triangleInfo(triangles.target.handle(), 0, VK_WHOLE_SIZE), originInfo(origins.target.handle(), 0, VK_WHOLE_SIZE),
       outInfo(out.handle(), 0, VK_WHOLE_SIZE);
   context.device().updateDescriptorSets(
       {vk::WriteDescriptorSet(*sets[0], BAND_DISTANCE_BINDING_NODES, 0, T::eStorageBuffer, {}, nodeInfo),
@@ -140,6 +146,12 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
     push.firstSlot = first, push.slots = std::min(kSlotsPerChunk, slots - first);
     const uint32_t groups = uint32_t(push.slots) * brickCells / BAND_DISTANCE_WORKGROUP_SIZE;
     context.runAndWait([&](vk::CommandBuffer cmd) {
+      if (first == 0) {
+        for (const StagedUpload* upload : {&nodes, &triangles, &origins}) upload->record(cmd);
+        const vk::MemoryBarrier toShader(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eShaderRead);
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {},
+                            toShader, {}, {});
+      }
       cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *sets[0], {});
       cmd.pushConstants<shader::Parameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);

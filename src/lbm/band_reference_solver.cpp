@@ -211,7 +211,7 @@ double BandReferenceSolver::surfaceSpeed()
 {
   // storedField(1) against storedField(2), read where they are.
   band_state::checkStoredField(2, steps_, source_.has_value());
-  return meanSurfaceChangeOf(
+  return surfaceSpeedOf(
       current_.size(), [&](size_t i) { return current_[i].x; }, [&](size_t i) { return next_[i].x; });
 }
 

@@ -136,7 +136,7 @@ public:
   // How far the surface moved from storedField(2) to storedField(1)
   // (lbm/surface_change.hpp), under the same conditions, without reading
   // either back: the CPU reference reads its moments in place, the Vulkan
-  // solver sums on the device and reads back two floats a brick.
+  // solver sums on the device and reads back three sums a row of a brick.
   virtual double surfaceSpeed() = 0;
 };
 

@@ -19,6 +19,7 @@
 #include "lbm/frozen_bricks.hpp"
 #include "lbm/relaxation.hpp"
 #include "lbm/solver_state.hpp"
+#include "lbm/surface_change.hpp"
 
 namespace lbmshape {
 
@@ -160,7 +161,7 @@ struct BandVulkanSolver::Resources {
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
   GpuBuffer omega, source;
-  GpuBuffer partials;  // the surface-speed pass's (sum, count) per row; its size once it is used
+  GpuBuffer partials;  // the surface-speed pass's sums per row (SurfaceChangeSums); its size once it is used
   GpuBuffer staging;
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
@@ -266,7 +267,7 @@ struct BandVulkanSolver::Resources {
   void writeSpeedDescriptors()
   {
     if (!speedSets.empty()) return;
-    partials = filledBuffer(8 * 64 * bricks->activeCount(), speedPartials);
+    partials = filledBuffer(sizeof(glm::vec4) * 64 * bricks->activeCount(), speedPartials);
     using T = vk::DescriptorType;
     const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 2 * 2),
                                                          vk::DescriptorPoolSize(T::eStorageBuffer, 2)};
@@ -599,8 +600,8 @@ BandVulkanSolver::~BandVulkanSolver() = default;
 double BandVulkanSolver::deviceBytesPerCell(bool perCellOmega, bool source)
 {
   // Per brick: streaming bits, neighbours, origin, work lists, the speed's
-  // partials (a vec2 a row).
-  const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 3 + 8 * 64) / brickCells;
+  // partials (a vec4 a row).
+  const double tables = double(4 * 64 + 16 * 9 + 16 + 4 * 3 + 16 * 64) / brickCells;
   return 2 * 16 + 4 + tables + (perCellOmega ? 4 : 0) + (source ? 4 : 0);  // moments, field
 }
 
@@ -897,7 +898,7 @@ double BandVulkanSolver::surfaceSpeed()
   band_state::checkStoredField(2, r_->stepsStored(), r_->sourceHost.has_value());
   r_->writeSpeedDescriptors();
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
-  std::vector<glm::vec2> partials(size_t(slots) * 64);
+  std::vector<glm::vec4> partials(size_t(slots) * 64);
   auto& program = r_->context.program(speedProgram());
   r_->download(r_->partials, r_->partials.bytes(), partials.data(), [&](vk::CommandBuffer cmd) {
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
@@ -912,9 +913,9 @@ double BandVulkanSolver::surfaceSpeed()
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
   });
-  double sum = 0.0, count = 0.0;
-  for (const glm::vec2& brick : partials) sum += double(brick.x), count += double(brick.y);
-  return count > 0.0 ? sum / count : 0.0;
+  SurfaceChangeSums sums;
+  for (const glm::vec4& row : partials) sums += SurfaceChangeSums{double(row.x), double(row.y), double(row.z)};
+  return sums.speed();
 }
 
 BandField BandVulkanSolver::field()

@@ -4,10 +4,10 @@
 
 namespace lbmshape {
 
-double meanSurfaceChange(const std::vector<float>& after, const std::vector<float>& before)
+double surfaceSpeed(const std::vector<float>& after, const std::vector<float>& before)
 {
   if (after.size() != before.size()) throw std::invalid_argument("two fields of different sizes");
-  return meanSurfaceChangeOf(
+  return surfaceSpeedOf(
       before.size(), [&](size_t i) { return after[i]; }, [&](size_t i) { return before[i]; });
 }
 

@@ -199,7 +199,7 @@ SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& prog
 }
 
 // --steps auto with twicing: S of twicedSteps(n) steps, n the step at which
-// plain smoothing's speed levelled off.
+// plain smoothing's speed levelled off (twice the steps it keeps).
 template <class Solver, class Field>
 SmoothedField<Field> twicedStepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress)
 {

@@ -36,7 +36,7 @@ struct DenoiseOptions {
   std::optional<int> steps;
   double gamma = 0.2;  // voxels^2 per step
   // Feature-preserving by default: ahead of OpenVDB's mean-curvature filter
-  // more often than isotropic smoothing, which rounds sharp edges (25 of 33
+  // more often than isotropic smoothing, which rounds sharp edges (28 of 33
   // noisy cases; docs/denoising.md, "How good it is").
   Smoothing smoothing = Smoothing::PreserveFeatures;
   // The smoothed field shifted by a constant so that it encloses the

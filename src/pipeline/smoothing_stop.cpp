@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "lbm/surface_change.hpp"
+
 namespace lbmshape::smoothing_stop {
 
 void SurfaceSpeed::remember(const std::vector<float>& field)
@@ -18,13 +20,12 @@ void SurfaceSpeed::remember(const std::vector<float>& field)
 
 double SurfaceSpeed::advance(const std::vector<float>& field)
 {
-  double sum = 0.0;
+  SurfaceChangeSums sums;
   size_t k = 0;
   for (size_t i = 0; i < field.size(); ++i)
-    if (onSurface_[i]) sum += std::abs(double(field[i]) - double(surface_[k++]));
-  const double speed = surface_.empty() ? 0.0 : sum / double(surface_.size());
+    if (onSurface_[i]) sums.add(surface_[k++], field[i]);
   remember(field);
-  return speed;
+  return sums.speed();
 }
 
 }  // namespace lbmshape::smoothing_stop

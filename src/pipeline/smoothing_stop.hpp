@@ -1,9 +1,11 @@
 // --steps auto, the default of denoise: how many steps a noisy surface
 // needs. Noise decays fast under diffusion (a ripple of wavelength l like
 // exp(-gamma (2 pi / l)^2 t)), the shape slowly (it moves by gamma kappa a
-// step, kappa its curvature). So the surface's speed, the mean change of X
-// a step over the cells the surface passes through, falls steeply while the
-// noise goes and then levels off at the speed of the shape. The smoothing
+// step, kappa its curvature). So the surface's speed, the spread of the
+// change of X a step over the cells the surface passes through (its mean,
+// a uniform move that keeping the volume undoes, left out:
+// lbm/surface_change.hpp), falls steeply while the noise goes and then
+// levels off at the speed of the shape's uneven motion. The smoothing
 // keeps the field of step n - 1 for the first step n whose speed is at
 // least levelRatio times the step before's. The rule has no scale in it: it
 // reads the noise off the field, whatever the mesh, its units or the size
@@ -18,7 +20,12 @@ namespace lbmshape::smoothing_stop {
 inline constexpr int fewestSteps = 2;
 // At most the old fixed default, for which the narrow band's width is chosen.
 inline constexpr int mostSteps = 7;
-inline constexpr double levelRatio = 0.88;
+inline constexpr double levelRatio = 0.85;
+// Voxels a step below which the surface counts as still: a clean sphere's
+// faceting moves it by 0.002-0.005 voxel a step, where a ratio of two
+// speeds says nothing (the slowest a noisy shared mesh was read at before
+// the rule stopped, 0.007 voxel, is above it).
+inline constexpr double stillSpeed = 0.005;
 
 // The surface's speed from one field to the next, for the grid (--dense),
 // which reads its fields back: the measure of lbm/surface_change.hpp (the
@@ -38,11 +45,11 @@ private:
 };
 
 // Whether step n, of speed `speed` after a step of speed `previous`, is
-// the first whose speed has levelled off; the smoothing then keeps the
-// field of step n - 1.
+// the first whose speed has levelled off (or the surface stands still);
+// the smoothing then keeps the field of step n - 1.
 inline bool levelledOff(int n, double previous, double speed)
 {
-  return n - 1 >= fewestSteps && speed >= levelRatio * previous;
+  return n - 1 >= fewestSteps && (speed >= levelRatio * previous || speed < stillSpeed);
 }
 
 }  // namespace lbmshape::smoothing_stop

@@ -21,11 +21,12 @@ inline void twice(std::vector<float>& once, const std::vector<float>& twice)
   for (size_t i = 0; i < once.size(); ++i) once[i] = 2.0f * once[i] - twice[i];
 }
 
-// --steps auto with twicing: S's steps, twice the step n at which plain
-// smoothing's surface speed levelled off (smoothing_stop.hpp). The twiced
-// response over 2n steps is below plain smoothing's over n for every ripple
-// that n plain steps halve or more (1 - (1 - e^(-2y))^2 < e^(-y) exactly
-// when e^(-y) < 1/2), and keeps the shape's slower curvature better.
-inline int twicedSteps(int levelledOffAt) { return 2 * levelledOffAt; }
+// --steps auto with twicing: S's steps, twice the k steps plain smoothing
+// keeps (the step before its surface speed levelled off at n = k + 1,
+// smoothing_stop.hpp). The twiced response over 2k steps is below plain
+// smoothing's over k for every ripple that k plain steps halve or more
+// (1 - (1 - e^(-2y))^2 < e^(-y) exactly when e^(-y) < 1/2), and keeps the
+// shape's slower curvature better.
+inline int twicedSteps(int levelledOffAt) { return 2 * (levelledOffAt - 1); }
 
 }  // namespace lbmshape

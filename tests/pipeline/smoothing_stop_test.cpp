@@ -17,15 +17,16 @@ namespace {
 
 using namespace smoothing_stop;
 
-TEST(SurfaceSpeed, IsTheMeanChangeOverTheLastFieldsSurfaceCells)
+TEST(SurfaceSpeed, IsTheSpreadOfTheChangeOverTheLastFieldsSurfaceCells)
 {
   // Cells 0 and 2 are on the surface (|X| < 1) before; cell 1 is not, and
-  // its large change does not count.
+  // its large change does not count. Changes -0.1 and -0.3: mean -0.2,
+  // standard deviation 0.1.
   SurfaceSpeed speed({0.5f, 3.0f, -0.2f});
-  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.5f}), (0.1 + 0.3) / 2.0, 1e-7);
+  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.5f}), 0.1, 1e-7);
   // The surface is now the new field's: cells 0 and 2 again (1.0 is not
-  // below 1 voxel).
-  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.1f}), (0.0 + 0.4) / 2.0, 1e-7);
+  // below 1 voxel); changes 0 and +0.4.
+  EXPECT_NEAR(speed.advance({0.4f, 1.0f, -0.1f}), 0.2, 1e-7);
 }
 
 TEST(SurfaceSpeed, LevelsOffOnlyAfterTheFewestSteps)
@@ -40,6 +41,10 @@ TEST(SurfaceSpeed, LevelsOffOnlyAfterTheFewestSteps)
   // Level from the start: the fewest steps.
   EXPECT_FALSE(levelledOff(2, 0.03, 0.03));
   EXPECT_TRUE(levelledOff(3, 0.03, 0.03));
+  // Still falling steeply, but the surface hardly moves: nothing is left.
+  EXPECT_FALSE(levelledOff(3, 0.03, 0.02));
+  EXPECT_TRUE(levelledOff(3, 0.004, 0.002));
+  EXPECT_FALSE(levelledOff(2, 0.004, 0.002)) << "never before the fewest steps";
 }
 
 class AutoSteps : public ::testing::Test {
@@ -71,10 +76,10 @@ TEST_F(AutoSteps, TheNoisierTheInputTheMoreSteps)
     EXPECT_GE(steps, fewestSteps);
     EXPECT_LE(steps, mostSteps);
     if (sigma == 0.0) {
-      EXPECT_EQ(steps, fewestSteps) << "a clean torus needs no more";
+      EXPECT_LE(steps, fewestSteps + 1) << "a clean torus needs few";
     }
     if (sigma == 1.0) {
-      EXPECT_GT(steps, fewestSteps + 1) << "sigma 1 voxel";
+      EXPECT_GT(steps, fewestSteps + 2) << "sigma 1 voxel";
     }
     EXPECT_GE(steps, previous) << "sigma " << sigma;
     previous = steps;
@@ -84,10 +89,11 @@ TEST_F(AutoSteps, TheNoisierTheInputTheMoreSteps)
 // The band reads its fields one step late from its two copies, the grid
 // each step as it is taken: the same rule on the same readings. Their first
 // readings agree to float rounding (a band that read a step early or late
-// would be off by a factor of two or more); later ones differ by up to 11 %
+// would be off by a factor of two or more); later ones differ by up to 19 %
 // on this torus, as the two lattices' starts and edge-finding copies differ
-// a little (`StartUpTransient`), so a ratio near the rule's threshold can
-// take one a step further than the other, never more.
+// a little (`StartUpTransient`) and the speed, the change less its mean,
+// is what is left of a larger change; so a ratio near the rule's threshold
+// can take one a step further than the other, never more.
 TEST_F(AutoSteps, TheBandAndTheGridReadTheSameSpeeds)
 {
   const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 192, 96);
@@ -103,11 +109,12 @@ TEST_F(AutoSteps, TheBandAndTheGridReadTheSameSpeeds)
     ASSERT_FALSE(gridSpeeds.empty());
     EXPECT_NEAR(bandSpeeds[0], gridSpeeds[0], 1e-4 * gridSpeeds[0]) << "sigma " << sigma;
     for (size_t k = 1; k < std::min(bandSpeeds.size(), gridSpeeds.size()); ++k)
-      EXPECT_NEAR(bandSpeeds[k], gridSpeeds[k], 0.15 * gridSpeeds[k]) << "sigma " << sigma << ", reading " << k;
+      EXPECT_NEAR(bandSpeeds[k], gridSpeeds[k], 0.25 * gridSpeeds[k]) << "sigma " << sigma << ", reading " << k;
     EXPECT_NEAR(band["steps"].get<int>(), grid["steps"].get<int>(), 1) << "sigma " << sigma;
     // One reading a step the rule looked at: the kept step and the one
-    // that levelled off.
-    EXPECT_EQ(bandSpeeds.size(), size_t(band["steps"].get<int>() + 1)) << "sigma " << sigma;
+    // that levelled off (none beyond the most steps).
+    const int steps = band["steps"].get<int>();
+    EXPECT_EQ(bandSpeeds.size(), size_t(steps < mostSteps ? steps + 1 : steps)) << "sigma " << sigma;
   }
 }
 

@@ -14,6 +14,8 @@ struct DenoiseArguments {
   const CLI::Option* voxelOption = nullptr;  // given or not: every value, 0 included, is then checked
   int steps = 0;
   const CLI::Option* stepsOption = nullptr;  // not given: as many steps as the noise needs
+  double radius = 0.0;
+  const CLI::Option* radiusOption = nullptr;
   bool isotropic = false, anisotropic = false, preserveFeatures = false;
   std::string preview;
   std::string colour = "none";
@@ -25,6 +27,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   // would let --voxel 0 (or nan) fall back to --res instead of failing.
   if (a.voxelOption->count() > 0) a.options.grid.voxel = a.voxel;
   if (a.stepsOption->count() > 0) a.options.steps = a.steps;
+  if (a.radiusOption->count() > 0) a.options.radius = a.radius;
   if (a.isotropic) a.options.smoothing = Smoothing::Isotropic;
   if (a.anisotropic) a.options.smoothing = Smoothing::Anisotropic;
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
@@ -55,10 +58,16 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   a->voxelOption =
       cmd->add_option("--voxel", a->voxel, "Voxel size in the mesh's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
-  a->stepsOption = cmd->add_option(
+  auto* steps = cmd->add_option(
       "--steps", a->steps,
       "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7; the paper's runs: 7); with "
       "--twicing the smoothing's steps, the lattice running twice as many");
+  a->stepsOption = steps;
+  a->radiusOption = cmd->add_option("--radius", a->radius,
+                                    "Smoothing radius in the mesh's units, instead of --steps: the steps whose "
+                                    "diffusion reaches a Gaussian of this standard deviation, the same smoothing at "
+                                    "any --res")
+                        ->excludes(steps);
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();
   auto* preserve =
       cmd->add_flag("--preserve-features", a->preserveFeatures, "Per-cell gamma falling at sharp edges (the default)");

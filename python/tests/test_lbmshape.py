@@ -76,6 +76,9 @@ class Denoise(unittest.TestCase):
         _, _, twiced = lbmshape.denoise(v, f, res=40, steps=3, twicing=True, report=True)
         self.assertTrue(twiced["twicing"])
         self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
+        _, _, by_radius = lbmshape.denoise(v, f, res=40, radius=0.1, report=True)
+        self.assertEqual(by_radius["steps_chosen"], "radius")
+        self.assertEqual(by_radius["radius"], 0.1)
 
     def test_the_distances_on_the_device_give_the_same_mesh(self):
         v, f = noisy_sphere()
@@ -103,6 +106,8 @@ class Denoise(unittest.TestCase):
             lbmshape.morph(v, f, v, f, cs=2)
         with self.assertRaisesRegex(ValueError, "smoothing must be"):
             lbmshape.denoise(v, f, smoothing="gentle")
+        with self.assertRaisesRegex(ValueError, "^radius and steps both say how much to smooth"):
+            lbmshape.denoise(v, f, radius=0.1, steps=3)
         flat = v.copy()
         flat[:, 2] = 0
         with self.assertRaises(lbmshape.InputError):

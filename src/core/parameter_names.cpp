@@ -22,6 +22,7 @@ Names namesOf(Parameter parameter)
   case Parameter::Noise: return {"noise.amplitude", "--noise", nullptr};
   case Parameter::Gamma: return {"gamma", "--gamma", "gamma"};
   case Parameter::Steps: return {"steps", "--steps", "steps"};
+  case Parameter::Radius: return {"radius", "--radius", "radius"};
   case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", nullptr};
   case Parameter::Frames: return {"frames", "--frames", "frames"};
   case Parameter::Cs: return {"cs", "--cs", "cs"};

@@ -17,6 +17,7 @@ enum class Parameter {
   Noise,
   Gamma,
   Steps,
+  Radius,
   StepsPerFrame,
   Frames,
   Cs,

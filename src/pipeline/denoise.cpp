@@ -18,6 +18,7 @@
 #include "pipeline/feature_probe.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/render_job.hpp"
+#include "pipeline/smoothing_radius.hpp"
 #include "pipeline/smoothing_stop.hpp"
 #include "pipeline/twicing.hpp"
 #include "render/curvature_colours.hpp"
@@ -399,6 +400,7 @@ void checkDenoiseOptions(const DenoiseOptions& o)
   relaxation::checkGamma(o.gamma);
   if (o.steps && (*o.steps < 0 || *o.steps > parameter_bounds::maxSteps))
     throw UsageError(nameOf(Parameter::Steps) + " must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
+  checkRadius(o.radius, o.steps.has_value());
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -434,11 +436,25 @@ namespace {
 
 // The smoothing of denoiseMesh, its stages timed into `clock`, and the part
 // of the report that is about the smoothing.
-DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& name, const DenoiseOptions& o,
+DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& name, const DenoiseOptions& given,
                          const ComputeDevice& device, StageClock& clock)
 {
-  const GridFrame frame = placeGrid(bounds(mesh), o.grid);
+  DenoiseOptions o = given;
+  const Bounds box = bounds(mesh);
+  if (given.radius) {
+    const glm::dvec3 size = box.size();
+    o.grid.marginVoxels =
+        std::max(o.grid.marginVoxels,
+                 marginForRadius(*given.radius, std::max({size.x, size.y, size.z}), o.grid.resolution, o.grid.voxel));
+  }
+  const GridFrame frame = placeGrid(box, o.grid);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
+  // From here on a --radius is the steps it takes on this grid.
+  if (given.radius) {
+    o.steps = stepsForRadius(*given.radius / frame.voxel, given.gamma);
+    log::verbose(nameOf(Parameter::Radius) + " " + std::to_string(*given.radius) + " = " +
+                 std::to_string(*given.radius / frame.voxel) + " voxels: " + std::to_string(*o.steps) + " steps");
+  }
   const bool dense = o.dense || o.noise.amplitude > 0.0;
   Smoothed smoothed = dense ? smoothOnTheGrid(mesh, frame, name, o, device, clock)
                             : smoothOnTheBand(mesh, frame, name, o, device, clock);
@@ -460,7 +476,8 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"device", device.name()},
       {"gamma", o.gamma},
       {"steps", smoothed.steps},
-      {"steps_chosen", o.steps ? "given" : "auto"},
+      {"steps_chosen", given.radius ? "radius" : (o.steps ? "given" : "auto")},
+      {"radius", given.radius ? nlohmann::json(*given.radius) : nlohmann::json(nullptr)},
       {"steps_run", smoothed.stepsRun},
       {"surface_speeds", smoothed.speeds},
       {"smoothing", smoothingName(o.smoothing)},

@@ -34,6 +34,11 @@ struct DenoiseOptions {
   // Lattice steps; none given: as many as the noise needs, from 2 to 7
   // (--steps auto, pipeline/smoothing_stop.hpp). The paper's Figs. 4-6: 7.
   std::optional<int> steps;
+  // Or the smoothing's radius in the mesh's units (--radius): the steps
+  // whose diffusion reaches a variance of (radius / voxel)^2, the same
+  // smoothing at any resolution (pipeline/smoothing_radius.hpp). Not with
+  // `steps`.
+  std::optional<double> radius;
   double gamma = 0.2;  // voxels^2 per step
   // Feature-preserving by default: ahead of OpenVDB's mean-curvature filter
   // more often than isotropic smoothing, which rounds sharp edges (28 of 33

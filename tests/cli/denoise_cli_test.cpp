@@ -159,7 +159,12 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
                                          {"--anisotropic", "--preserve-features"},
                                          {"--isotropic", "--preserve-features"},
                                          {"--isotropic", "--anisotropic"},
-                                         {"--res", "64", "--voxel", "0.1"}}) {
+                                         {"--res", "64", "--voxel", "0.1"},
+                                         {"--radius", "0"},
+                                         {"--radius", "-0.1"},
+                                         {"--radius", "nan"},
+                                         {"--radius", "100"},
+                                         {"--radius", "0.1", "--steps", "3"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());
     testing::CliResult r = testing::runLbmshape(args);
@@ -168,6 +173,26 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
     ASSERT_EQ(lines.size(), 1u) << r.err;
     EXPECT_NE(lines[0].find(extra[0]), std::string::npos) << "the message names the option: " << lines[0];
     EXPECT_FALSE(fs::exists(output));
+  }
+}
+
+// --radius says how much to smooth in the mesh's units: the report says
+// so, with the steps it took on this grid, and a finer grid takes more.
+TEST(DenoiseCli, RadiusChoosesTheStepsForTheGrid)
+{
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  int previous = 0;
+  for (const char* res : {"24", "48"}) {
+    testing::CliResult r =
+        testing::runLbmshape({"denoise", input, output, "--res", res, "--radius", "0.1", "--json", "--force"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["steps_chosen"], "radius");
+    EXPECT_EQ(report["radius"], 0.1);
+    const int steps = report["steps"];
+    EXPECT_GT(steps, 2 * previous) << "--res " << res;
+    previous = steps;
   }
 }
 

@@ -1,0 +1,65 @@
+#include "pipeline/smoothing_radius.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parameter_bounds.hpp"
+#include "core/parameter_names.hpp"
+#include "pipeline/feature_probe.hpp"
+
+namespace lbmshape {
+namespace {
+
+std::string number(double x)
+{
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+void checkRadius(std::optional<double> radius, bool stepsGiven)
+{
+  if (!radius) return;
+  if (!(std::isfinite(*radius) && *radius > 0.0))
+    throw UsageError(nameOf(Parameter::Radius) + " must be a positive length in the mesh's units, not " +
+                     number(*radius));
+  if (stepsGiven)
+    throw UsageError(nameOf(Parameter::Radius) + " and " + nameOf(Parameter::Steps) +
+                     " both say how much to smooth: give one");
+}
+
+int stepsForRadius(double radiusVoxels, double gamma)
+{
+  const double variance = radiusVoxels * radiusVoxels;
+  // The spread grows with the steps and differs from 2 gamma n by a bounded
+  // start-up term (at most a few steps' worth, either way): the answer is
+  // found by walking from there.
+  const double plain = std::ceil(variance / (2.0 * gamma));
+  if (!(plain <= double(parameter_bounds::maxSteps)))
+    throw UsageError(nameOf(Parameter::Radius) + " of " + number(radiusVoxels) + " voxels needs more than " +
+                     std::to_string(parameter_bounds::maxSteps) +
+                     " steps at this grid; give a smaller radius or a coarser grid");
+  int steps = std::max(1, int(plain));
+  while (steps > 1 && spreadVariance(gamma, steps - 1) >= variance) --steps;
+  while (spreadVariance(gamma, steps) < variance) ++steps;
+  return steps;
+}
+
+double marginForRadius(double radius, double longestSide, int resolution, std::optional<double> voxel)
+{
+  if (voxel) return std::ceil(2.0 * radius / *voxel);
+  const double margin = std::ceil(2.0 * radius * (resolution - 1.0) / (longestSide + 4.0 * radius));
+  if (resolution < 2.0 * margin + 4.0)
+    throw UsageError(nameOf(Parameter::Radius) + " " + number(radius) +
+                     " needs a margin of two radii around the mesh, " + number(margin) +
+                     " voxels, which leaves it no cells of " + nameOf(Parameter::Resolution) + " " +
+                     std::to_string(resolution) + "; give a smaller radius or a finer grid");
+  return margin;
+}
+
+}  // namespace lbmshape

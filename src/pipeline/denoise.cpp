@@ -447,7 +447,8 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
         std::max(o.grid.marginVoxels,
                  marginForRadius(*given.radius, std::max({size.x, size.y, size.z}), o.grid.resolution, o.grid.voxel));
   }
-  const GridFrame frame = placeGrid(box, o.grid);
+  const GridFrame frame =
+      given.radius ? gridForRadius(*given.radius, [&] { return placeGrid(box, o.grid); }) : placeGrid(box, o.grid);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
   // From here on a --radius is the steps it takes on this grid.
   if (given.radius) {

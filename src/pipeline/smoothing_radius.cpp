@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -60,6 +62,22 @@ double marginForRadius(double radius, double longestSide, int resolution, std::o
                      " voxels, which leaves it no cells of " + nameOf(Parameter::Resolution) + " " +
                      std::to_string(resolution) + "; give a smaller radius or a finer grid");
   return margin;
+}
+
+GridFrame gridForRadius(double radius, const std::function<GridFrame()>& place)
+{
+  const std::string widened =
+      nameOf(Parameter::Radius) + " " + number(radius) + " widens the grid's margin to two radii";
+  GridFrame frame;
+  try {
+    frame = place();
+  } catch (const UsageError& e) {
+    throw UsageError(widened + ": " + e.what());
+  }
+  if (frame.extent.cells() >= std::numeric_limits<uint32_t>::max())
+    throw UsageError(widened + ", which makes the grid " + frame.extent.toString() +
+                     ", more than 4e9 cells; give a smaller radius or a larger " + nameOf(Parameter::Voxel));
+  return frame;
 }
 
 }  // namespace lbmshape

@@ -8,7 +8,10 @@
 // the variance, counting that.
 #pragma once
 
+#include <functional>
 #include <optional>
+
+#include "sdf/grid_frame.hpp"
 
 namespace lbmshape {
 
@@ -32,5 +35,11 @@ int stepsForRadius(double radiusVoxels, double gamma);
 // so m >= 2 radius / voxel is solved for m; UsageError, naming --radius,
 // where that leaves the mesh too few cells of the resolution.
 double marginForRadius(double radius, double longestSide, int resolution, std::optional<double> voxel);
+
+// The grid `place` makes with the margin a radius widened: a grid that
+// cannot be made, or that has more cells than the distance stages number
+// (2^32, sdf/signed_distance.cpp), is a UsageError that names --radius,
+// which the user gave, not only the margin or the grid, which they did not.
+GridFrame gridForRadius(double radius, const std::function<GridFrame()>& place);
 
 }  // namespace lbmshape

@@ -164,6 +164,7 @@ TEST(DenoiseCli, BadParametersAreUsageErrors)
                                          {"--radius", "-0.1"},
                                          {"--radius", "nan"},
                                          {"--radius", "100"},
+                                         {"--radius", "0.3", "--voxel", "0.001"},
                                          {"--radius", "0.1", "--steps", "3"}}) {
     std::vector<std::string> args = {"denoise", input, output};
     args.insert(args.end(), extra.begin(), extra.end());

@@ -439,18 +439,12 @@ namespace {
 DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& name, const DenoiseOptions& given,
                          const ComputeDevice& device, StageClock& clock)
 {
+  // From here on a --radius is the margin it widens and the steps it takes
+  // on this grid.
   DenoiseOptions o = given;
-  const Bounds box = bounds(mesh);
-  if (given.radius) {
-    const glm::dvec3 size = box.size();
-    o.grid.marginVoxels =
-        std::max(o.grid.marginVoxels,
-                 marginForRadius(*given.radius, std::max({size.x, size.y, size.z}), o.grid.resolution, o.grid.voxel));
-  }
   const GridFrame frame =
-      given.radius ? gridForRadius(*given.radius, [&] { return placeGrid(box, o.grid); }) : placeGrid(box, o.grid);
+      given.radius ? gridForRadius(*given.radius, bounds(mesh), o.grid) : placeGrid(bounds(mesh), o.grid);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
-  // From here on a --radius is the steps it takes on this grid.
   if (given.radius) {
     o.steps = stepsForRadius(*given.radius / frame.voxel, given.gamma);
     log::verbose(nameOf(Parameter::Radius) + " " + std::to_string(*given.radius) + " = " +

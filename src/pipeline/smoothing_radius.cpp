@@ -10,6 +10,8 @@
 #include "core/error.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/parameter_names.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "pipeline/denoise.hpp"
 #include "pipeline/feature_probe.hpp"
 
 namespace lbmshape {
@@ -64,13 +66,16 @@ double marginForRadius(double radius, double longestSide, int resolution, std::o
   return margin;
 }
 
-GridFrame gridForRadius(double radius, const std::function<GridFrame()>& place)
+GridFrame gridForRadius(double radius, const Bounds& box, GridOptions& grid)
 {
+  const glm::dvec3 size = box.size();
+  grid.marginVoxels = std::max(
+      grid.marginVoxels, marginForRadius(radius, std::max({size.x, size.y, size.z}), grid.resolution, grid.voxel));
   const std::string widened =
       nameOf(Parameter::Radius) + " " + number(radius) + " widens the grid's margin to two radii";
   GridFrame frame;
   try {
-    frame = place();
+    frame = placeGrid(box, grid);
   } catch (const UsageError& e) {
     throw UsageError(widened + ": " + e.what());
   }

@@ -8,12 +8,14 @@
 // the variance, counting that.
 #pragma once
 
-#include <functional>
 #include <optional>
 
 #include "sdf/grid_frame.hpp"
 
 namespace lbmshape {
+
+struct Bounds;
+struct GridOptions;
 
 // Throws UsageError, naming --radius, unless it is absent or a positive
 // finite length, and when --steps is given too.
@@ -36,10 +38,12 @@ int stepsForRadius(double radiusVoxels, double gamma);
 // where that leaves the mesh too few cells of the resolution.
 double marginForRadius(double radius, double longestSide, int resolution, std::optional<double> voxel);
 
-// The grid `place` makes with the margin a radius widened: a grid that
-// cannot be made, or that has more cells than the distance stages number
-// (2^32, sdf/signed_distance.cpp), is a UsageError that names --radius,
-// which the user gave, not only the margin or the grid, which they did not.
-GridFrame gridForRadius(double radius, const std::function<GridFrame()>& place);
+// The grid around `box` for smoothing of `radius`: `grid`'s margin widened
+// to marginForRadius where it is less, and the grid placed with it
+// (placeGrid). A grid that cannot be made, or that has more cells than the
+// distance stages number (2^32, sdf/signed_distance.cpp), is a UsageError
+// that names --radius, which the user gave, not only the margin or the
+// grid, which they did not.
+GridFrame gridForRadius(double radius, const Bounds& box, GridOptions& grid);
 
 }  // namespace lbmshape

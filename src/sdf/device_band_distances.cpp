@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "band_distance_interface.h"
 #include "core/error.hpp"
@@ -64,19 +66,24 @@ std::vector<glm::vec4> packTriangles(const TriangleBvh& bvh, const GridFrame& fr
 
 // A device-local buffer and the host-visible copy of its contents that the
 // first submission copies into it: the uploads go out with the first chunk's
-// work, not with a wait each.
+// work, not with a wait each. The host's array goes once it is staged, the
+// staging buffer once the first submission has run (release()), so the
+// tree is held twice only until then.
 struct StagedUpload {
-  gpu::GpuBuffer staging, target;
-  StagedUpload(gpu::GpuContext& context, const void* data, uint64_t bytes)
-      : staging(context, bytes, Usage::eTransferSrc, gpu::MemoryUse::Upload),
-        target(context, bytes, Usage::eStorageBuffer | Usage::eTransferDst, gpu::MemoryUse::Device)
+  std::optional<gpu::GpuBuffer> staging;
+  gpu::GpuBuffer target;
+  template <class T>
+  StagedUpload(gpu::GpuContext& context, std::vector<T> data)
+      : staging(std::in_place, context, data.size() * sizeof(T), Usage::eTransferSrc, gpu::MemoryUse::Upload),
+        target(context, data.size() * sizeof(T), Usage::eStorageBuffer | Usage::eTransferDst, gpu::MemoryUse::Device)
   {
-    std::memcpy(staging.mapped(), data, bytes);
+    std::memcpy(staging->mapped(), data.data(), data.size() * sizeof(T));
   }
   void record(vk::CommandBuffer cmd) const
   {
-    cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, 0, target.bytes()));
+    cmd.copyBuffer(staging->handle(), target.handle(), vk::BufferCopy(0, 0, target.bytes()));
   }
+  void release() { staging.reset(); }
 };
 
 gpu::ComputeProgram& distanceProgram(gpu::GpuContext& context)
@@ -112,12 +119,9 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
     throw DeviceError("the mesh's " + std::to_string(bvh.triangleCount()) + " triangles do not fit one buffer of " +
                       context.description().name + " for the distances on the device; use --sdf cpu");
 
-  const std::vector<shader::Node> nodeData = packNodes(bvh, frame);
-  const std::vector<glm::vec4> triangleData = packTriangles(bvh, frame);
-  const std::vector<glm::ivec4> originData = bricks.originTable();
-  const StagedUpload nodes(context, nodeData.data(), nodeData.size() * sizeof(shader::Node));
-  const StagedUpload triangles(context, triangleData.data(), triangleData.size() * sizeof(glm::vec4));
-  const StagedUpload origins(context, originData.data(), originData.size() * sizeof(glm::ivec4));
+  StagedUpload nodes(context, packNodes(bvh, frame));
+  StagedUpload triangles(context, packTriangles(bvh, frame));
+  StagedUpload origins(context, bricks.originTable());
   const uint64_t chunkCells = uint64_t(std::min(slots, kSlotsPerChunk)) * brickCells;
   const gpu::GpuBuffer out(context, chunkCells * sizeof(float), Usage::eStorageBuffer, gpu::MemoryUse::Readback);
 
@@ -160,6 +164,8 @@ std::vector<float> deviceBandDistances(gpu::GpuContext& context, const TriangleB
       cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, toHost, {},
                           {});
     });
+    if (first == 0)
+      for (StagedUpload* upload : {&nodes, &triangles, &origins}) upload->release();
     std::memcpy(distance.data() + size_t(first) * brickCells, out.mapped(),
                 size_t(push.slots) * brickCells * sizeof(float));
   }

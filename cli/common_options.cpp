@@ -9,7 +9,7 @@ namespace lbmshape::cli {
 ComputeDevice& CommonOptions::computeDevice() const
 {
   if (!device_) {
-    device_ = std::make_shared<ComputeDevice>(device, validation, distances);
+    device_ = std::make_shared<ComputeDevice>(device, validation, distances, surfaces);
     if (device_->isReference()) log::verbose("device: " + device_->name());  // a Vulkan device logs itself when opened
   }
   return *device_;

@@ -15,10 +15,11 @@ namespace lbmshape::cli {
 struct CommonOptions {
   bool verbose = false;
   bool quiet = false;
-  bool json = false;                          // one JSON object on stdout
-  std::string device;                         // --device: index, part of a name, or "reference"
-  bool validation = false;                    // --validate: Khronos validation layer, any message fails the run
-  DistancesOn distances = DistancesOn::Auto;  // --sdf: where the band's distances are computed
+  bool json = false;                // one JSON object on stdout
+  std::string device;               // --device: index, part of a name, or "reference"
+  bool validation = false;          // --validate: Khronos validation layer, any message fails the run
+  RunsOn distances = RunsOn::Auto;  // --sdf: where the band's distances are computed
+  RunsOn surfaces = RunsOn::Auto;   // --extract: where a morph's frames' marching cubes run
 
   // Where a command's JSON report goes: printed with --json; a jobs file
   // collects one per job instead.

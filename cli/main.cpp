@@ -61,6 +61,15 @@ int fail(lbmshape::ExitCode code, const std::string& message)
   return int(code);
 }
 
+// --sdf's and --extract's values, in any case.
+CLI::CheckedTransformer runsOnNames()
+{
+  return CLI::CheckedTransformer(
+      std::map<std::string, lbmshape::RunsOn>{
+          {"auto", lbmshape::RunsOn::Auto}, {"cpu", lbmshape::RunsOn::Cpu}, {"device", lbmshape::RunsOn::Device}},
+      CLI::ignore_case);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -82,10 +91,12 @@ int main(int argc, char** argv)
   app.add_option("--sdf", common.distances,
                  "Where the band's signed distances are computed: auto (the device on a GPU, the CPU on "
                  "lavapipe), cpu or device")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, DistancesOn>{
-              {"auto", DistancesOn::Auto}, {"cpu", DistancesOn::Cpu}, {"device", DistancesOn::Device}},
-          CLI::ignore_case))
+      ->transform(runsOnNames())
+      ->default_str("auto");
+  app.add_option("--extract", common.surfaces,
+                 "Where a morph's frames' marching cubes run: auto (the device on a GPU, the CPU on lavapipe), "
+                 "cpu or device")
+      ->transform(runsOnNames())
       ->default_str("auto");
   app.add_flag("--validate", common.validation, "Run with the Khronos validation layer; any message fails the run");
   app.parse_complete_callback([&common] {

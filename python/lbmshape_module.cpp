@@ -119,12 +119,13 @@ py::object denoise(const Vertices& vertices, const Triangles& triangles, int res
   return py::make_tuple(arrays[0], arrays[1], figures);
 }
 
-DistancesOn distancesNamed(const std::string& name)
+// `parameter` ("sdf", "extract") named `name`.
+RunsOn runsOnNamed(const std::string& parameter, const std::string& name)
 {
-  if (name == "auto") return DistancesOn::Auto;
-  if (name == "cpu") return DistancesOn::Cpu;
-  if (name == "device") return DistancesOn::Device;
-  throw UsageError("sdf must be 'auto', 'cpu' or 'device', not '" + name + "'");
+  if (name == "auto") return RunsOn::Auto;
+  if (name == "cpu") return RunsOn::Cpu;
+  if (name == "device") return RunsOn::Device;
+  throw UsageError(parameter + " must be 'auto', 'cpu' or 'device', not '" + name + "'");
 }
 
 Alignment alignmentNamed(const std::string& name)
@@ -213,13 +214,15 @@ PYBIND11_MODULE(lbmshape, m)
 
   py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(
       m, "Device", "A Vulkan device, or the CPU reference solver ('reference')")
-      .def(py::init([](const std::string& name, bool validation, const std::string& sdf) {
-             return std::make_shared<ComputeDevice>(name, validation, distancesNamed(sdf));
+      .def(py::init([](const std::string& name, bool validation, const std::string& sdf, const std::string& extract) {
+             return std::make_shared<ComputeDevice>(name, validation, runsOnNamed("sdf", sdf),
+                                                    runsOnNamed("extract", extract));
            }),
-           py::arg("name") = "", py::arg("validation") = false, py::arg("sdf") = "auto",
+           py::arg("name") = "", py::arg("validation") = false, py::arg("sdf") = "auto", py::arg("extract") = "auto",
            "name: empty for the best device, an index, part of a device's name, or 'reference'; sdf: where the "
            "narrow band's distances are computed, 'auto' (the device on a GPU, the CPU on lavapipe), 'cpu' or "
-           "'device' (lbmshape --sdf)")
+           "'device' (lbmshape --sdf); extract: where a morph's frames' marching cubes run, the same choices "
+           "(lbmshape --extract)")
       .def_property_readonly("name", &ComputeDevice::name);
 
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,

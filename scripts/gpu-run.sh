@@ -70,6 +70,10 @@ LBMSHAPE_DEVICE_TRACE=1 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/arm
   --res 256 --align none --force 2>"$results/trace-morph256.err" >/dev/null
 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256 --res 256 --align none --force --json \
   >"$results/morph256.json" 2>"$results/morph256.err"
+# The frames read back as whole fields, against the surfaces' pieces
+# listed on the device (--extract auto on a GPU) above.
+timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256c --res 256 --align none --force --json \
+  --extract cpu >"$results/morph256-extract-cpu.json" 2>"$results/morph256-extract-cpu.err"
 save
 if wanted scale; then
   timeout 120 scripts/bench-scale.sh $assets/armadillo.obj 3 128 256 512 >"$results/scale.log" 2>&1

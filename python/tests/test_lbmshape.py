@@ -145,6 +145,21 @@ class Morph(unittest.TestCase):
         last_x = np.abs(frames[-1][0][:, 0]).max()
         self.assertGreater(last_x, first_x + 0.2, "the last frame is stretched as the target is")
 
+    def test_the_frames_extracted_on_the_device_are_the_cpus(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        runs = {}
+        for where in ("cpu", "device"):
+            runs[where] = lbmshape.morph(v, f, vt, ft, frames=3, res=24, align="none", report=True,
+                                         device=lbmshape.Device(extract=where))
+            self.assertEqual(runs[where][1]["extract_on"], where)
+        for (v_cpu, f_cpu), (v_dev, f_dev) in zip(runs["cpu"][0], runs["device"][0]):
+            np.testing.assert_array_equal(v_cpu, v_dev)
+            np.testing.assert_array_equal(f_cpu, f_dev)
+        self.assertEqual(runs["cpu"][1]["per_frame"], runs["device"][1]["per_frame"])
+        with self.assertRaisesRegex(ValueError, "^extract must be 'auto', 'cpu' or 'device'"):
+            lbmshape.Device(extract="gpu")
+
     def test_on_frame_sees_every_frame_in_order(self):
         v, f = icosphere(3)
         vt, ft = ellipsoid()

@@ -34,6 +34,9 @@ public:
   BandField storedField(int back) override;
   double surfaceSpeed() override;
 
+protected:
+  const BandField* sourceBase() const override { return source_ ? &source_->base : nullptr; }
+
 private:
   template <bool Collide>
   void sweep(std::vector<float>* fieldOut);

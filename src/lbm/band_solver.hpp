@@ -28,6 +28,7 @@
 #include "band/band_field.hpp"
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/stepping_solver.hpp"
+#include "surface/surface_pieces.hpp"
 
 namespace lbmshape {
 
@@ -138,6 +139,30 @@ public:
   // either back: the CPU reference reads its moments in place, the Vulkan
   // solver sums on the device and reads back three sums a row of a brick.
   virtual double surfaceSpeed() = 0;
+
+  // The pieces of the surface X = request.isovalue now
+  // (surface/surface_pieces.hpp), what a morph's frame needs in place of
+  // the field, with what the request asks: the error near the source's
+  // base (none without a source), the values at its probes. Here
+  // listSurfacePieces() of field(), the reference; BandVulkanSolver lists
+  // them on the device and reads back only them.
+  virtual SurfacePieces surfacePieces(const SurfaceRequest& request)
+  {
+    const BandField now = field();
+    return listSurfacePieces(now, request, sourceBase());
+  }
+  // surfacePieces(), then step(1) under `next` (fieldIntoThenStep's).
+  virtual SurfacePieces surfacePiecesThenStep(const SurfaceRequest& request, std::optional<SourceStrength> next)
+  {
+    SurfacePieces pieces = surfacePieces(request);
+    if (next) setSourceStrength(next->decay, next->scale);
+    step(1);
+    return pieces;
+  }
+
+protected:
+  // The source's base where the solver keeps it on the host, else null.
+  virtual const BandField* sourceBase() const { return nullptr; }
 };
 
 }  // namespace lbmshape

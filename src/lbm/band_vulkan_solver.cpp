@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstring>
 #include <numeric>
 
 #include <glm/glm.hpp>
 
 #include "band_interface.h"
+#include "band_surface_interface.h"
 #include "core/parallel_copy.hpp"
 #include "core/error.hpp"
 #include "core/memory_sizes.hpp"
@@ -79,6 +82,52 @@ gpu::ProgramSpec speedProgram()
            {BAND_SPEED_BINDING_PARTIALS, T::eStorageBuffer, 1, {}}},
           {},
           sizeof(band_shader::SpeedParameters)};
+}
+
+gpu::ProgramSpec surfaceProgram()
+{
+  using T = vk::DescriptorType;
+  return {"band_surface",
+          {{SURFACE_BINDING_FIELD, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_FAR_SIDES, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_BASE, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_COUNTERS, T::eStorageBuffer, 1, {}},
+           {SURFACE_BINDING_CROSSINGS, T::eStorageBuffer, 1, {}},
+           {SURFACE_BINDING_CUBES, T::eStorageBuffer, 1, {}},
+           {SURFACE_BINDING_PROBES, T::eUniformTexelBuffer, 1, {}},
+           {SURFACE_BINDING_PROBE_VALUES, T::eStorageBuffer, 1, {}}},
+          {},
+          sizeof(surface_shader::Parameters)};
+}
+
+// The device's records are SurfaceCrossing's and SurfaceCube's bytes (a
+// little-endian 64-bit key or index in two words, then the rest as the
+// structs lay it out): read back straight into the host's lists.
+static_assert(sizeof(SurfaceCrossing) == 32 && offsetof(SurfaceCrossing, lower) == 8 &&
+                  offsetof(SurfaceCrossing, upper) == 12 && offsetof(SurfaceCrossing, normal) == 16,
+              "band_surface.comp's crossing records");
+static_assert(sizeof(SurfaceCube) == 16 && offsetof(SurfaceCube, cubeCase) == 8 && offsetof(SurfaceCube, order) == 12,
+              "band_surface.comp's cube records");
+static_assert(std::endian::native == std::endian::little, "band_surface.comp's keys are two little-endian words");
+
+// Per slot, the bits of band_surface_interface.h's SURFACE_BINDING_FAR_SIDES:
+// which of the 27 bricks around it are not stored and inside.
+std::vector<uint32_t> farSidesAround(const BandField& field)
+{
+  const BrickSet& bricks = field.bricks();
+  std::vector<uint32_t> bits(bricks.activeCount(), 0u);
+  for (size_t s = 0; s < bits.size(); ++s) {
+    const glm::ivec3 b = bricks.brick(int32_t(s));
+    for (int k = 0; k < 27; ++k) {
+      const glm::ivec3 n = b + glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+      if (bricks.bricks().contains(n.x, n.y, n.z) && bricks.slot(n.x, n.y, n.z) == noBrick &&
+          field.farSide(n.x, n.y, n.z) > 0)
+        bits[s] |= 1u << k;
+    }
+  }
+  return bits;
 }
 
 }  // namespace
@@ -173,6 +222,22 @@ struct BandVulkanSolver::Resources {
   std::vector<vk::raii::BufferView> speedViews;
   vk::raii::DescriptorPool speedPool{nullptr};
   std::vector<vk::raii::DescriptorSet> speedSets;
+  // The surface pass's (band_surface.comp), made at its first use: a
+  // denoise never asks for it.
+  struct SurfacePass {
+    GpuBuffer farSides, counters, countersRead, crossings, cubes;
+    // The probes' stored cells (those of a request's probes that are
+    // stored, in order), and their values.
+    GpuBuffer probes, probeValues;
+    std::vector<glm::ivec3> probesAsked{};  // the request they were made for
+    std::vector<int64_t> probeStored{};     // per probe asked: its stored cell, or -1
+    std::vector<vk::raii::BufferView> views{};
+    vk::raii::DescriptorPool pool{nullptr};
+    vk::raii::DescriptorSets sets{nullptr};
+    vk::Buffer fieldWritten{}, sourceWritten{};  // the buffers its set reads
+  };
+  std::unique_ptr<SurfacePass> surface;
+  uint64_t lastCrossings = 0, lastCubes = 0;  // the lengths of the last lists: the next ones' room
   // Batches of steps, recorded once each (by count, first copy, slots, push
   // constants and pipeline) and replayed; writeDescriptors() clears them.
   gpu::RecordedCommandCache recordedSteps;
@@ -409,6 +474,215 @@ struct BandVulkanSolver::Resources {
     // of it, each frame, at 256^3, became the second alone).
     field = GpuBuffer(context, 4 * cells, storage, MemoryUse::DeviceReadByHost);
     writeDescriptors();
+  }
+
+  // The surface pass ready for lists of at least these lengths, its set
+  // reading the field buffer and the source buffer as they are now.
+  void prepareSurfacePass(uint64_t crossings, uint64_t cubes, const std::vector<glm::ivec3>& probes)
+  {
+    fullFieldBuffer();
+    using B = vk::BufferUsageFlagBits;
+    const auto lists = B::eStorageBuffer | B::eTransferSrc;
+    if (!surface) {
+      const std::vector<uint32_t> bits = farSidesAround(initial);
+      surface = std::make_unique<SurfacePass>(SurfacePass{
+          GpuBuffer(context, 4 * bits.size(), texels, MemoryUse::Device),
+          GpuBuffer(context, 4 * SURFACE_COUNTERS, lists | B::eTransferDst, MemoryUse::Device),
+          GpuBuffer(context, 4 * SURFACE_COUNTERS, B::eTransferDst, MemoryUse::Readback),
+          GpuBuffer(context, 32 * std::max<uint64_t>(crossings, 1), lists, MemoryUse::DeviceReadByHost),
+          GpuBuffer(context, 16 * std::max<uint64_t>(cubes, 1), lists, MemoryUse::DeviceReadByHost),
+          GpuBuffer(context, 4, texels, MemoryUse::Device), GpuBuffer(context, 4, lists, MemoryUse::DeviceReadByHost)});
+      upload(bits.data(), 4 * bits.size(), surface->farSides);
+      using T = vk::DescriptorType;
+      const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 6),
+                                                           vk::DescriptorPoolSize(T::eStorageBuffer, 4)};
+      surface->pool = vk::raii::DescriptorPool(
+          context.device(),
+          vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
+      const vk::DescriptorSetLayout layout = *context.program(surfaceProgram()).setLayout;
+      surface->sets = vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*surface->pool, layout));
+    }
+    SurfacePass& pass = *surface;
+    bool rewrite = pass.fieldWritten != field.handle() || pass.sourceWritten != source.handle();
+    if (probes != pass.probesAsked) {
+      pass.probesAsked = probes;
+      pass.probeStored.clear();
+      std::vector<int32_t> stored;
+      for (const glm::ivec3& c : probes) {
+        if (!bricks->cells().contains(c.x, c.y, c.z)) throw std::invalid_argument("a probe beyond the grid");
+        pass.probeStored.push_back(bricks->storedIndex(c.x, c.y, c.z));
+        if (pass.probeStored.back() >= 0) stored.push_back(int32_t(pass.probeStored.back()));
+      }
+      if (pass.probes.bytes() < 4 * stored.size()) {
+        pass.probes = GpuBuffer(context, 4 * stored.size(), texels, MemoryUse::Device);
+        pass.probeValues = GpuBuffer(context, 4 * stored.size(), lists, MemoryUse::DeviceReadByHost);
+        rewrite = true;
+      }
+      if (!stored.empty()) upload(stored.data(), 4 * stored.size(), pass.probes);
+    }
+    if (pass.crossings.bytes() < 32 * crossings) {
+      pass.crossings = GpuBuffer(context, 32 * crossings, lists, MemoryUse::DeviceReadByHost);
+      rewrite = true;
+    }
+    if (pass.cubes.bytes() < 16 * cubes) {
+      pass.cubes = GpuBuffer(context, 16 * cubes, lists, MemoryUse::DeviceReadByHost);
+      rewrite = true;
+    }
+    if (!rewrite) return;
+    using T = vk::DescriptorType;
+    pass.views.clear();
+    const auto viewOf = [&](const GpuBuffer& buffer, vk::Format format) {
+      pass.views.emplace_back(context.device(),
+                              vk::BufferViewCreateInfo({}, buffer.handle(), format, 0, VK_WHOLE_SIZE));
+      return *pass.views.back();
+    };
+    const vk::BufferView fieldView = viewOf(field, vk::Format::eR32Sfloat),
+                         neighbourView = viewOf(neighbours, vk::Format::eR32G32B32A32Sint),
+                         originView = viewOf(origins, vk::Format::eR32G32B32A32Sint),
+                         farView = viewOf(pass.farSides, vk::Format::eR32Uint),
+                         baseView = viewOf(source, vk::Format::eR32G32B32A32Sfloat),
+                         probeView = viewOf(pass.probes, vk::Format::eR32Sint);
+    const vk::DescriptorBufferInfo counterInfo(pass.counters.handle(), 0, VK_WHOLE_SIZE),
+        crossingInfo(pass.crossings.handle(), 0, VK_WHOLE_SIZE), cubeInfo(pass.cubes.handle(), 0, VK_WHOLE_SIZE),
+        probeValueInfo(pass.probeValues.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorSet set = *pass.sets[0];
+    const std::vector<vk::WriteDescriptorSet> writes = {
+        {set, SURFACE_BINDING_FIELD, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &fieldView},
+        {set, SURFACE_BINDING_NEIGHBOURS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &neighbourView},
+        {set, SURFACE_BINDING_ORIGINS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &originView},
+        {set, SURFACE_BINDING_FAR_SIDES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &farView},
+        {set, SURFACE_BINDING_BASE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &baseView},
+        {set, SURFACE_BINDING_COUNTERS, 0, 1, T::eStorageBuffer, nullptr, &counterInfo},
+        {set, SURFACE_BINDING_CROSSINGS, 0, 1, T::eStorageBuffer, nullptr, &crossingInfo},
+        {set, SURFACE_BINDING_CUBES, 0, 1, T::eStorageBuffer, nullptr, &cubeInfo},
+        {set, SURFACE_BINDING_PROBES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &probeView},
+        {set, SURFACE_BINDING_PROBE_VALUES, 0, 1, T::eStorageBuffer, nullptr, &probeValueInfo}};
+    context.device().updateDescriptorSets(writes, {});
+    pass.fieldWritten = field.handle();
+    pass.sourceWritten = source.handle();
+  }
+
+  // Records the surface pass over the field buffer (which the commands
+  // before wrote) and the copy of its counters for the host.
+  void recordSurfacePass(vk::CommandBuffer cmd, const surface_shader::Parameters& push)
+  {
+    SurfacePass& pass = *surface;
+    cmd.fillBuffer(pass.counters.handle(), 0, VK_WHOLE_SIZE, 0u);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer,
+                        vk::PipelineStageFlagBits::eComputeShader, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eTransferWrite,
+                                          vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
+                        {}, {});
+    const auto& program = context.program(surfaceProgram());
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *pass.sets[0], {});
+    cmd.pushConstants<surface_shader::Parameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    const auto slots = uint32_t(push.slots);
+    cmd.dispatch(std::min<uint32_t>(slots, BAND_MAX_WORKGROUPS_X),
+                 (slots + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
+    cmd.copyBuffer(pass.counters.handle(), pass.countersRead.handle(), vk::BufferCopy(0, 0, 4 * SURFACE_COUNTERS));
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eComputeShader,
+                        vk::PipelineStageFlagBits::eHost, {},
+                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite | vk::AccessFlagBits::eShaderWrite,
+                                          vk::AccessFlagBits::eHostRead),
+                        {}, {});
+  }
+
+  // The surface's pieces of the field that the commands `before` records
+  // write into the field buffer (and nearBand's error against the source's
+  // base), read back. Where a list outgrows its buffer, the pass runs again
+  // (the field buffer still holds the field) with room for it.
+  template <class Before>
+  SurfacePieces listSurface(const SurfaceRequest& request, Before before)
+  {
+    const float isovalue = request.isovalue, nearBand = sourceHost ? request.nearBand : -1.0f;
+    const auto room = [](uint64_t found) { return std::min<uint64_t>(found + found / 4 + 1024, INT32_MAX); };
+    const uint64_t slots = bricks->activeCount();
+    uint64_t crossingRoom = room(lastCrossings ? lastCrossings : 16 * slots);
+    uint64_t cubeRoom = room(lastCubes ? lastCubes : 16 * slots);
+    for (bool first = true;; first = false) {
+      prepareSurfacePass(crossingRoom, cubeRoom, request.probes);
+      const Extent3& e = bricks->cells();
+      const auto storedProbes = int(std::count_if(surface->probeStored.begin(), surface->probeStored.end(),
+                                                  [](int64_t cell) { return cell >= 0; }));
+      const surface_shader::Parameters push{
+          e.nx,          e.ny,        e.nz, int(slots), isovalue, initial.farValue(), nearBand, int(crossingRoom),
+          int(cubeRoom), storedProbes};
+      context.runAndWait([&](vk::CommandBuffer cmd) {
+        if (first) before(cmd);
+        recordSurfacePass(cmd, push);
+      });
+      std::array<uint32_t, SURFACE_COUNTERS> counts;
+      std::memcpy(counts.data(), surface->countersRead.mapped(), sizeof(counts));
+      if (counts[SURFACE_COUNTER_NOT_FINITE] > 0)
+        throw NumericalError("the field holds a value that is not a finite number");
+      const uint64_t crossings = counts[SURFACE_COUNTER_CROSSINGS], cubes = counts[SURFACE_COUNTER_CUBES];
+      if (crossings > crossingRoom || cubes > cubeRoom) {
+        crossingRoom = std::max(crossingRoom, room(crossings));
+        cubeRoom = std::max(cubeRoom, room(cubes));
+        continue;
+      }
+      lastCrossings = crossings;
+      lastCubes = cubes;
+      SurfacePieces pieces;
+      pieces.extent = e;
+      pieces.isovalue = isovalue;
+      pieces.crossings.resize(crossings);
+      pieces.cubes.resize(cubes);
+      // The pass's submission ended with a barrier to host reads: a list
+      // the host can see where it lies (lavapipe's) is copied at once, any
+      // other through the staging buffer.
+      const auto readList = [this](const GpuBuffer& list, uint64_t count, uint64_t unit, void* to) {
+        if (count == 0) return;
+        if (list.mapped())
+          parallelCopy(static_cast<std::byte*>(to), list.mapped(), count * unit);
+        else
+          downloadUnits(list, count, unit, unit, to, [](vk::CommandBuffer) {});
+      };
+      readList(surface->crossings, crossings, sizeof(SurfaceCrossing), pieces.crossings.data());
+      readList(surface->cubes, cubes, sizeof(SurfaceCube), pieces.cubes.data());
+      std::vector<float> stored(static_cast<size_t>(storedProbes));
+      readList(surface->probeValues, stored.size(), sizeof(float), stored.data());
+      for (size_t k = 0, next = 0; k < request.probes.size(); ++k) {
+        const glm::ivec3 c = request.probes[k];
+        pieces.probeValues.push_back(surface->probeStored[k] >= 0
+                                         ? stored[next++]
+                                         : initial.farValue() * initial.farSide(BrickSet::floorDiv(c.x),
+                                                                                BrickSet::floorDiv(c.y),
+                                                                                BrickSet::floorDiv(c.z)));
+      }
+      if (nearBand >= 0.0f) {
+        float error;
+        std::memcpy(&error, &counts[SURFACE_COUNTER_ERROR], sizeof(error));
+        pieces.errorNearBase = error;
+      }
+      pieces.tidy();
+      return pieces;
+    }
+  }
+
+  // The parameters of the next step made to also store the field it pulls
+  // (the frame's, under the source it had), with Cs `next` from then on:
+  // fieldIntoThenStep()'s and surfacePiecesThenStep()'s one pass. None where
+  // that cannot be one pass: before the first step (whose field is the
+  // initial one), where a step leaves bricks out or some freeze now, under
+  // the paper's rule.
+  std::optional<band_shader::StepParameters> stepStoringItsField(std::optional<SourceStrength> next)
+  {
+    const bool stepsEveryBrick =
+        size_t(stepRange.count + heldRange.count) + frozen.frozenCount() == bricks->activeCount();
+    if (steps == 0 || !stepsEveryBrick || paperRuleGamma0 || frozen.freezingNext()) return std::nullopt;
+    fullFieldBuffer();
+    const band_shader::StepParameters before = parameters(false);
+    if (next) SteppingSolver::setStrength(sourceHost, next->decay, next->scale);
+    band_shader::StepParameters push = parameters(false);
+    frozen.beforeSteps(1, frozenStepParameters(), steps, current);  // freezes none (above)
+    push.writeField = 1;
+    push.fieldDecay = before.decay;
+    push.fieldBaseScale = before.baseScale;
+    return push;
   }
 
   // The omega buffer at its full size, one float a stored cell.
@@ -935,24 +1209,15 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   // Frozen bricks are in no pass: their field stays what they froze with.
   // A brick that freezes at this step gets its field after the frame's
   // is read, as in the reference.
-  const bool stepsEveryBrick =
-      size_t(r_->stepRange.count + r_->heldRange.count) + r_->frozen.frozenCount() == r_->bricks->activeCount();
-  if (r_->steps == 0 || !stepsEveryBrick || r_->paperRuleGamma0 || r_->frozen.freezingNext()) {
+  const std::optional<band_shader::StepParameters> push = r_->stepStoringItsField(next);
+  if (!push) {
     BandSolver::fieldIntoThenStep(out, next);
     return;
   }
   r_->shapeLikeTheBand(out);
-  r_->fullFieldBuffer();
-  const band_shader::StepParameters before = r_->parameters(false);
-  if (next) setSourceStrength(next->decay, next->scale);
-  band_shader::StepParameters push = r_->parameters(false);
-  r_->frozen.beforeSteps(1, r_->frozenStepParameters(), r_->steps, r_->current);  // freezes none (above)
-  push.writeField = 1;
-  push.fieldDecay = before.decay;
-  push.fieldBaseScale = before.baseScale;
   const int first = r_->current;
   r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
-    r_->recordPass(cmd, first, push);
+    r_->recordPass(cmd, first, *push);
     // The next step reads what this one wrote; the copy reads the field.
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
                         vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {},
@@ -981,6 +1246,29 @@ void BandVulkanSolver::fieldInto(BandField& out)
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
   });
+}
+
+SurfacePieces BandVulkanSolver::surfacePieces(const SurfaceRequest& request)
+{
+  const gpu::TraceLabel label("band surface pieces");
+  // Before the first step the field is the initial one, whose values are kept.
+  if (r_->steps == 0) return listSurfacePieces(r_->initial, request, r_->sourceHost ? &r_->sourceHost->base : nullptr);
+  return r_->listSurface(request,
+                         [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, r_->current, r_->parameters(true)); });
+}
+
+SurfacePieces BandVulkanSolver::surfacePiecesThenStep(const SurfaceRequest& request, std::optional<SourceStrength> next)
+{
+  const gpu::TraceLabel label("band step with its surface pieces");
+  // As fieldIntoThenStep(): one pass where the step stores the field, the
+  // surface pass reading it.
+  const std::optional<band_shader::StepParameters> push = r_->stepStoringItsField(next);
+  if (!push) return BandSolver::surfacePiecesThenStep(request, next);
+  const int first = r_->current;
+  SurfacePieces pieces = r_->listSurface(request, [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, first, *push); });
+  r_->current = 1 - first;
+  r_->steps += 1;
+  return pieces;
 }
 
 }  // namespace lbmshape

@@ -51,6 +51,8 @@ public:
   BandField previousField() override;
   BandField storedField(int back) override;
   double surfaceSpeed() override;
+  SurfacePieces surfacePieces(const SurfaceRequest& request) override;
+  SurfacePieces surfacePiecesThenStep(const SurfaceRequest& request, std::optional<SourceStrength> next) override;
 
   // Bytes the solver keeps on the device per stored cell (both copies of
   // the moments, the field, the brick tables, and per-cell omega or source

@@ -17,8 +17,8 @@
 
 namespace lbmshape {
 
-ComputeDevice::ComputeDevice(const std::string& request, bool validation, DistancesOn distances)
-    : request_(request), validation_(validation), distances_(distances)
+ComputeDevice::ComputeDevice(const std::string& request, bool validation, RunsOn distances, RunsOn surfaces)
+    : request_(request), validation_(validation), distances_(distances), surfaces_(surfaces)
 {}
 
 ComputeDevice::~ComputeDevice() { finishWarmUp(); }
@@ -29,6 +29,7 @@ ComputeDevice::ComputeDevice(ComputeDevice&& other) noexcept
   request_ = std::move(other.request_);
   validation_ = other.validation_;
   distances_ = other.distances_;
+  surfaces_ = other.surfaces_;
   distancesTurn_ = other.distancesTurn_;
   instance_ = std::move(other.instance_);
   chosen_ = other.chosen_;
@@ -116,22 +117,38 @@ gpu::GpuContext& ComputeDevice::openContext() const
 
 bool ComputeDevice::distancesGoToTheDevice() const
 {
-  if (distances_ == DistancesOn::Cpu || isReference()) return false;
-  return distances_ == DistancesOn::Device || description().type != "cpu";
+  if (distances_ == RunsOn::Cpu || isReference()) return false;
+  return distances_ == RunsOn::Device || description().type != "cpu";
 }
 
 bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
 {
-  if (distances_ == DistancesOn::Device && isReference())
+  if (distances_ == RunsOn::Device && isReference())
     throw UsageError("--sdf device needs a Vulkan device, not the reference (--device reference)");
   if (!distancesGoToTheDevice()) return false;
   // Forced, a tree too large is deviceBandDistances()'s DeviceError.
-  return distances_ == DistancesOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
+  return distances_ == RunsOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
+}
+
+bool ComputeDevice::surfacesOnTheDevice() const
+{
+  if (surfaces_ == RunsOn::Device && isReference())
+    throw UsageError("--extract device needs a Vulkan device, not the reference (--device reference)");
+  if (surfaces_ == RunsOn::Cpu || isReference()) return false;
+  return surfaces_ == RunsOn::Device || description().type != "cpu";
+}
+
+void ComputeDevice::warnThatTheGridsFramesAreTheCpus() const
+{
+  if (surfaces_ == RunsOn::Device)
+    log::warning(
+        "--extract device lists the narrow band's surfaces; the grid's frames (--dense, --noise) are "
+        "extracted on the CPU");
 }
 
 void ComputeDevice::warnThatTheGridsDistancesAreTheCpus() const
 {
-  if (distances_ == DistancesOn::Device)
+  if (distances_ == RunsOn::Device)
     log::warning("--sdf device computes the narrow band's distances; the grid's (--dense, --noise) are the CPU's");
 }
 

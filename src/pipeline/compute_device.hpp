@@ -25,16 +25,18 @@ class VulkanInstance;
 struct DeviceDescription;
 }  // namespace gpu
 
-// Where the band's unsigned distances are computed (--sdf): Auto lets the
-// device's type decide (bandDistances()).
-enum class DistancesOn { Auto, Cpu, Device };
+// Where a stage with both a CPU and a device path runs: the band's unsigned
+// distances (--sdf, bandDistances()), a morph's frames' marching cubes
+// (--extract, surfacesOnTheDevice()). Auto lets the device's type decide.
+enum class RunsOn { Auto, Cpu, Device };
 
 class ComputeDevice {
 public:
   // `request`: empty (the best device), an index, part of a device name, or
   // "reference". Opening it later throws UsageError when nothing matches,
   // DeviceError when Vulkan is unusable.
-  ComputeDevice(const std::string& request, bool validation, DistancesOn distances = DistancesOn::Auto);
+  ComputeDevice(const std::string& request, bool validation, RunsOn distances = RunsOn::Auto,
+                RunsOn surfaces = RunsOn::Auto);
   ~ComputeDevice();
   ComputeDevice(ComputeDevice&&) noexcept;
 
@@ -84,7 +86,7 @@ public:
   // every cell faster than the host's cores, and the CPU for a CPU device
   // (lavapipe runs the same walk on the same cores, slower than the
   // native code with its shared hints) and for the reference; and the CPU
-  // when the device cannot hold the tree. DistancesOn::Device on the
+  // when the device cannot hold the tree. RunsOn::Device on the
   // reference is a UsageError, on a tree the device cannot hold a
   // DeviceError (when the distances are computed).
   UnsignedBandDistances bandDistances(const TriangleBvh& tree) const;
@@ -93,6 +95,17 @@ public:
   // when --sdf device asked for one (a jobs file's other jobs may still
   // use it, so not an error).
   void warnThatTheGridsDistancesAreTheCpus() const;
+
+  // Whether a morph on the band lists its frames' surfaces on the device
+  // (shaders/band_surface.comp: a frame reads back its surface's pieces,
+  // not its field, and the CPU makes the triangles). Auto: on a GPU, whose
+  // transfers cost more than its pass, not on a CPU device (lavapipe, where
+  // the field is read in place) nor the reference. RunsOn::Device on the
+  // reference is a UsageError.
+  bool surfacesOnTheDevice() const;
+  // For a morph on the grid, whose frames have no device path: a warning
+  // when --extract device asked for one.
+  void warnThatTheGridsFramesAreTheCpus() const;
 
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;
@@ -110,7 +123,8 @@ private:
 
   std::string request_;
   bool validation_ = false;
-  DistancesOn distances_ = DistancesOn::Auto;
+  RunsOn distances_ = RunsOn::Auto;
+  RunsOn surfaces_ = RunsOn::Auto;
   mutable std::shared_ptr<std::mutex> distancesTurn_ = std::make_shared<std::mutex>();  // bandDistances' callers
   mutable std::mutex instanceMutex_;  // instance_ and chosen_, which the warm-up's thread sets too
   mutable std::shared_ptr<gpu::VulkanInstance> instance_;

@@ -1,6 +1,7 @@
 #include "pipeline/frame_writer.hpp"
 
 #include <cstdio>
+#include <type_traits>
 
 #include "core/error.hpp"
 #include "core/parameter_names.hpp"
@@ -130,7 +131,14 @@ void FrameWriter::run()
         std::lock_guard lock(mutex_);
         mesh = meshes_.back();
       } else {
-        mesh = std::visit([this](const auto& field) { return extractSurface(*field, grid_); }, job.second);
+        mesh = std::visit(
+            [this](const auto& field) {
+              if constexpr (std::is_same_v<std::decay_t<decltype(*field)>, SurfacePieces>)
+                return assembleSurface(*field, grid_);
+              else
+                return extractSurface(*field, grid_);
+            },
+            job.second);
         if (decorate_) decorate_(mesh);
       }
       const bool empty = mesh.triangles.empty();

@@ -20,11 +20,14 @@
 #include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "sdf/grid_frame.hpp"
+#include "surface/surface_pieces.hpp"
 
 namespace lbmshape {
 
-// A frame's field: on the whole grid, or on the narrow band.
-using FrameField = std::variant<std::shared_ptr<const Volume>, std::shared_ptr<const BandField>>;
+// A frame's field: on the whole grid, on the narrow band, or the pieces of
+// its surface that the device listed (ComputeDevice::surfacesOnTheDevice).
+using FrameField =
+    std::variant<std::shared_ptr<const Volume>, std::shared_ptr<const BandField>, std::shared_ptr<const SurfacePieces>>;
 
 // Where a morph's frames go when they are not files: called with each
 // frame's index and mesh, in frame order, on the frame writer's thread.

@@ -306,6 +306,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     if (!*to.lock) to.lock->emplace(*to.folder);
   }
   lattice->start(device, o, schedule, clock);
+  const bool framesAsPieces = lattice->framesAsSurfacePieces(frameReport.probeCells());
+  if (framesAsPieces) log::verbose("frames: marching cubes on the device, only the surfaces' pieces read back");
   SteppingSolver& solver = lattice->solver();
 
   // The animation is assembled as the frames come, on the frame writer's
@@ -495,6 +497,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       {"cs", o.cs},
       {"noise", o.noise.amplitude},
       {"lattice", latticeDescription},
+      {"extract_on", framesAsPieces ? "device" : "cpu"},
       {"align",
        {{"mode", alignmentName(o.align)},
         {"scale", placement.scale},

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 #include <variant>
 
 #include "analysis/mesh_topology.hpp"
@@ -64,6 +66,44 @@ DirectedDistance distanceByField(const Field& field, const std::vector<glm::dvec
   return d;
 }
 
+// A field read through a frame's probes (the cells distanceByField reads,
+// sorted by grid index, and their values).
+class ProbedField {
+public:
+  ProbedField(const Extent3& extent, const std::vector<glm::ivec3>& cells, const std::vector<float>& values)
+      : extent_(extent), cells_(cells), values_(values)
+  {
+    if (values.size() != cells.size()) throw std::logic_error("a frame's probes without their values");
+  }
+  const Extent3& extent() const { return extent_; }
+  float at(int x, int y, int z) const
+  {
+    const auto later = [this](const glm::ivec3& a, const glm::ivec3& b) {
+      return extent_.index(a.x, a.y, a.z) < extent_.index(b.x, b.y, b.z);
+    };
+    const auto found = std::lower_bound(cells_.begin(), cells_.end(), glm::ivec3(x, y, z), later);
+    if (found == cells_.end() || *found != glm::ivec3(x, y, z)) throw std::logic_error("a cell that was not probed");
+    return values_[size_t(found - cells_.begin())];
+  }
+
+private:
+  const Extent3& extent_;
+  const std::vector<glm::ivec3>& cells_;
+  const std::vector<float>& values_;
+};
+
+// Records the cells distanceByField reads: its probes.
+struct CellRecorder {
+  const Extent3& extent() const { return grid; }
+  float at(int x, int y, int z) const
+  {
+    cells.emplace_back(x, y, z);
+    return 0.0f;
+  }
+  Extent3 grid;
+  mutable std::vector<glm::ivec3> cells;
+};
+
 }  // namespace
 
 MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& grid, int frames, bool measureSurfaces)
@@ -73,6 +113,13 @@ MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& gr
   toTarget_.emplace(targetLevel_);
   for (const SurfaceSample& s : sampleSurface(targetLevel_, samplesPerFrame, 1))
     targetPoints_.push_back(grid_.toGrid(s.point));
+  CellRecorder recorder{grid_.extent, {}};
+  distanceByField(recorder, targetPoints_);
+  probeCells_ = std::move(recorder.cells);
+  const Extent3& e = grid_.extent;
+  std::sort(probeCells_.begin(), probeCells_.end(),
+            [&e](const glm::ivec3& a, const glm::ivec3& b) { return e.index(a.x, a.y, a.z) < e.index(b.x, b.y, b.z); });
+  probeCells_.erase(std::unique(probeCells_.begin(), probeCells_.end()), probeCells_.end());
 }
 
 void MorphFrameReport::lattice(int frame, int step, double gamma, double cs, double fieldError, bool converged)
@@ -96,7 +143,14 @@ void MorphFrameReport::surface(int frame, const FrameField& field, const Triangl
   if (topology.area > 0.0 && toTarget_) {
     const DirectedDistance there =
         toTarget_->from(mesh, ComparisonOptions{samplesPerFrame, 0.0, false, uint64_t(frame) + 1});
-    const DirectedDistance back = std::visit([&](const auto& f) { return distanceByField(*f, targetPoints_); }, field);
+    const DirectedDistance back = std::visit(
+        [&](const auto& f) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(*f)>, SurfacePieces>)
+            return distanceByField(ProbedField(grid_.extent, probeCells_, f->probeValues), targetPoints_);
+          else
+            return distanceByField(*f, targetPoints_);
+        },
+        field);
     measured.meanDistance = 0.5 * (there.mean / grid_.voxel + back.mean);
     measured.maxDistance = std::max(there.max / grid_.voxel, back.max);
   }

@@ -47,6 +47,13 @@ public:
   // last five null for a frame whose surface() was not measured.
   nlohmann::json toJson() const;
 
+  // The cells whose values surface() reads from a frame's field, in
+  // order of their grid index: what a frame listed as surface pieces on
+  // the device carries as probes (SurfaceRequest::probes), so that its
+  // figures are the same as from the whole field. Empty without
+  // `measureSurfaces`.
+  const std::vector<glm::ivec3>& probeCells() const { return probeCells_; }
+
   // A mesh (whose tree is `meshTree`) against the target level, densely
   // (every vertex too).
   SurfaceComparison compareWithTargetLevel(const TriangleMesh& mesh, const TriangleBvh& meshTree) const;
@@ -67,6 +74,7 @@ private:
   TriangleMesh targetLevel_;
   std::optional<DistanceToSurface> toTarget_;  // none while the target level has no triangle
   std::vector<glm::dvec3> targetPoints_;       // on the target level, in grid coordinates
+  std::vector<glm::ivec3> probeCells_;         // probeCells()
   GridFrame grid_;
   mutable std::mutex mutex_;
   std::vector<Frame> frames_;

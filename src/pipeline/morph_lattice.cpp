@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <variant>
 
 #include "core/worker_threads.hpp"
 #include "lbm/band_width.hpp"
@@ -58,13 +60,13 @@ public:
   {
     std::shared_ptr<Field> out = frameFields_.take();
     solver_->fieldInto(*out);
-    return std::shared_ptr<const Field>(std::move(out));
+    return readBack(std::shared_ptr<const Field>(std::move(out)));
   }
   FrameField fieldThenStep(double nextCs) override
   {
     std::shared_ptr<Field> out = frameFields_.take();
     solver_->fieldIntoThenStep(*out, SourceStrength{float(nextCs), float(nextCs)});
-    return std::shared_ptr<const Field>(std::move(out));
+    return readBack(std::shared_ptr<const Field>(std::move(out)));
   }
   void finish() override
   {
@@ -87,6 +89,24 @@ public:
 protected:
   explicit TwoFieldMorph(const GridFrame& frame) : frame_(frame) {}
 
+  // A frame as it came from the solver, its bytes counted.
+  FrameField readBack(FrameField frame)
+  {
+    readBackBytes_ += std::visit(
+        [](const auto& f) -> double {
+          if constexpr (std::is_same_v<std::decay_t<decltype(*f)>, SurfacePieces>)
+            return double(f->crossings.size() * sizeof(SurfaceCrossing) + f->cubes.size() * sizeof(SurfaceCube) +
+                          f->probeValues.size() * sizeof(float));
+          else
+            return double(f->values().size() * sizeof(float));
+        },
+        frame);
+    ++framesReadBack_;
+    return frame;
+  }
+  // The mean bytes a frame read back from the solver, for describe().
+  double frameBytes() const { return framesReadBack_ ? readBackBytes_ / framesReadBack_ : 0.0; }
+
   // Once the solver holds the morph force: X_target where errorNearTarget()
   // reads it, and the rest let go (a field's worth of memory during the
   // morph: 44 MB on the band at 256^3).
@@ -107,6 +127,8 @@ protected:
   RecycledFields<Field> frameFields_;
   std::vector<size_t> nearCells_;  // keepOnlyNearTarget()
   std::vector<float> nearTarget_;
+  double readBackBytes_ = 0.0;
+  int framesReadBack_ = 0;
 };
 
 class GridMorph final : public TwoFieldMorph<Volume, LatticeSolver> {
@@ -137,7 +159,10 @@ public:
 
   int prepareSteps(int) override { return std::numeric_limits<int>::max(); }
   size_t cells() const override { return frame_.extent.cells(); }
-  nlohmann::json describe() const override { return {{"kind", "grid"}, {"cells", cells()}}; }
+  nlohmann::json describe() const override
+  {
+    return {{"kind", "grid"}, {"cells", cells()}, {"frame_read_back_bytes", frameBytes()}};
+  }
 
 private:
   // S = Cs X_target - Cs X: X_target uploaded once, Cs a push constant.
@@ -193,6 +218,7 @@ public:
   void start(const ComputeDevice& device, const MorphOptions& o, const MorphSchedule& schedule,
              StageClock& clock) override
   {
+    piecesOnTheDevice_ = device.surfacesOnTheDevice();
     solver_ = clock.time("setup", [&] {
       auto s = device.makeBandSolver(source_.sharedBricks(), morphRun);
       s->setUniformGamma(o.gamma);
@@ -215,6 +241,30 @@ public:
     return front_->sameUntil(step);
   }
 
+  bool framesAsSurfacePieces(std::vector<glm::ivec3> probes) override
+  {
+    if (!piecesOnTheDevice_) return false;
+    pieces_ = SurfaceRequest{.isovalue = 0.0f, .nearBand = convergenceBand, .probes = std::move(probes)};
+    return true;
+  }
+  FrameField field() override
+  {
+    if (!pieces_) return TwoFieldMorph::field();
+    return readBack(std::make_shared<const SurfacePieces>(solver_->surfacePieces(*pieces_)));
+  }
+  FrameField fieldThenStep(double nextCs) override
+  {
+    if (!pieces_) return TwoFieldMorph::fieldThenStep(nextCs);
+    return readBack(std::make_shared<const SurfacePieces>(
+        solver_->surfacePiecesThenStep(*pieces_, SourceStrength{float(nextCs), float(nextCs)})));
+  }
+  double errorNearTarget(const FrameField& field) const override
+  {
+    if (const auto* pieces = std::get_if<std::shared_ptr<const SurfacePieces>>(&field))
+      return (*pieces)->errorNearBase.value();
+    return TwoFieldMorph::errorNearTarget(field);
+  }
+
   std::shared_ptr<const TriangleBvh> targetTree() const override { return targetTree_; }
   size_t cells() const override { return bricks_->storedCells(); }
   nlohmann::json describe() const override
@@ -226,7 +276,8 @@ public:
             {"cells", bricks.storedCells()},
             {"fraction_of_grid", double(bricks.storedCells()) / double(frame_.extent.cells())},
             {"streaming_fraction", front_ ? nlohmann::json(front_->meanStreamingFraction()) : nlohmann::json(nullptr)},
-            {"frozen_fraction", front_ ? nlohmann::json(front_->meanFrozenFraction()) : nlohmann::json(nullptr)}};
+            {"frozen_fraction", front_ ? nlohmann::json(front_->meanFrozenFraction()) : nlohmann::json(nullptr)},
+            {"frame_read_back_bytes", frameBytes()}};
   }
 
 private:
@@ -309,6 +360,8 @@ private:
 
   double halfWidth_ = 0.0;
   std::shared_ptr<const TriangleBvh> targetTree_;
+  bool piecesOnTheDevice_ = false;          // start(): ComputeDevice::surfacesOnTheDevice()
+  std::optional<SurfaceRequest> pieces_;    // framesAsSurfacePieces(): what each frame lists
   std::shared_ptr<const BrickSet> bricks_;  // the band's, kept past the fields
   std::optional<MorphFront> front_;
   std::vector<uint8_t> held_;  // the held bricks set on the solver
@@ -323,8 +376,10 @@ std::unique_ptr<MorphLattice> makeMorphLattice(const TriangleMesh& source, const
 {
   if (!options.band || options.noise.amplitude > 0.0) {
     device.warnThatTheGridsDistancesAreTheCpus();
+    device.warnThatTheGridsFramesAreTheCpus();
     return std::make_unique<GridMorph>(source, target, frame, clock, beforeDistances);
   }
+  device.surfacesOnTheDevice();  // --extract device on the reference: a usage error before any work
   return std::make_unique<BandMorph>(source, target, frame, longest, device, clock, beforeDistances);
 }
 

@@ -58,6 +58,12 @@ public:
   // The same, then one step (gamma set for it) under Cs `nextCs`: one pass
   // over the lattice where the solver can.
   virtual FrameField fieldThenStep(double nextCs) = 0;
+  // After start(): from now on each frame's field is the pieces of its
+  // surface, listed where the lattice runs, with the field's values at
+  // `probes` (MorphFrameReport::probeCells()), instead of the field itself,
+  // where the lattice can (the band's, on a device whose
+  // ComputeDevice::surfacesOnTheDevice() says so). Returns whether it does.
+  virtual bool framesAsSurfacePieces(std::vector<glm::ivec3> /*probes*/) { return false; }
   // max |X - X_target| over the cells within convergenceBand of the
   // target's surface (after start(), which keeps X_target there alone).
   virtual double errorNearTarget(const FrameField& field) const = 0;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -134,6 +135,53 @@ TEST_F(MorphCli, TheDistancesOnTheDeviceGiveTheSameFrames)
     EXPECT_LT(c["hausdorff"].get<double>(), 0.05 * voxel) << frame << ": " << c;
     EXPECT_LT(c["mean"].get<double>(), 1e-3 * voxel) << frame << ": " << c;
   }
+}
+
+// --extract device: each frame's marching cubes on the device, only its
+// surface's pieces read back (and the field's values where the frame's
+// figures sample it), give the CPU's frames from the whole field: the same
+// vertices and triangles in the same order, the normals to float rounding,
+// the same figures.
+TEST_F(MorphCli, TheFramesExtractedOnTheDeviceAreTheCpus)
+{
+  std::map<std::string, nlohmann::json> reports;
+  for (const std::string where : {"cpu", "device"}) {
+    testing::CliResult r = testing::runLbmshape({"morph", sphere, torus, (folder / where).string(), "--res", "32",
+                                                 "--frames", "4", "--no-animation", "--extract", where, "--json"});
+    ASSERT_EQ(r.exitCode, 0) << where << ": " << r.err;
+    reports[where] = nlohmann::json::parse(r.out);
+    EXPECT_EQ(reports[where]["extract_on"], where);
+  }
+  EXPECT_EQ(reports["device"]["per_frame"], reports["cpu"]["per_frame"]);
+  EXPECT_EQ(reports["device"]["final"], reports["cpu"]["final"]);
+  EXPECT_EQ(reports["device"]["max_band_error_voxels"], reports["cpu"]["max_band_error_voxels"]);
+  for (const char* frame : {"frame_0000.glb", "frame_0002.glb", "frame_0003.glb"}) {
+    const TriangleMesh cpu = readMesh(folder / "cpu" / frame), device = readMesh(folder / "device" / frame);
+    EXPECT_EQ(device.positions, cpu.positions) << frame;
+    EXPECT_EQ(device.triangles, cpu.triangles) << frame;
+    ASSERT_EQ(device.normals.size(), cpu.normals.size()) << frame;
+    for (size_t v = 0; v < cpu.normals.size(); ++v)
+      ASSERT_LT(glm::length(device.normals[v] - cpu.normals[v]), 1e-5f) << frame << ", vertex " << v;
+  }
+}
+
+// --extract takes auto, cpu or device; device needs a Vulkan device; the
+// grid's frames, which have no device path, warn.
+TEST_F(MorphCli, ExtractIsCpuDeviceOrAuto)
+{
+  testing::CliResult r = testing::runLbmshape({"morph", sphere, torus, (folder / "a").string(), "--extract", "gpu"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--extract"), std::string::npos) << r.err;
+  r = testing::runLbmshape(
+      {"morph", sphere, torus, (folder / "b").string(), "--res", "24", "--extract", "device", "--device", "reference"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--extract device needs a Vulkan device"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(folder / "b"));
+  r = testing::runLbmshape({"morph", sphere, torus, (folder / "c").string(), "--res", "24", "--frames", "3",
+                            "--extract", "DEVICE", "--dense", "--no-animation", "--json"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --extract device lists the narrow band's surfaces"), std::string::npos) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["extract_on"], "cpu");
 }
 
 TEST_F(MorphCli, OtherFrameFormats)

@@ -2,6 +2,7 @@ lbmshape_test(lbm_tests
   ${CMAKE_CURRENT_LIST_DIR}/adaptive_gamma_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/band_solver_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/band_surface_pass_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/conservation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curvature_motion_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/diffusion_coefficient_test.cpp
@@ -10,6 +11,6 @@ lbmshape_test(lbm_tests
   ${CMAKE_CURRENT_LIST_DIR}/source_term_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/step_timing_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_change_test.cpp
-  DEVICE_SUITES BandSolverTest BandVulkanMatchesReference BandVulkanPools BandVulkanSource BandVulkanStaging Conservation CurvatureMotion
+  DEVICE_SUITES BandSolverTest BandSurfacePass SurfacesOnTheDevice BandVulkanMatchesReference BandVulkanPools BandVulkanSource BandVulkanStaging Conservation CurvatureMotion
                 DiffusionCoefficient GpuMatchesReference PaperRuleOnTheDevice SourceTerm StartUpTransient
 )

@@ -157,7 +157,7 @@ TEST(DistancesOnTheDevice, AutoTakesTheCpuOnACpuDeviceAndEitherWhenForced)
 {
   const TriangleMesh mesh = testing::icosphere(2);
   const TriangleBvh tree(mesh);
-  const ComputeDevice automatic("", false), cpu("", false, DistancesOn::Cpu), device("", false, DistancesOn::Device);
+  const ComputeDevice automatic("", false), cpu("", false, RunsOn::Cpu), device("", false, RunsOn::Device);
   const bool gpuChosen = automatic.gpu()->description().type != "cpu";
   EXPECT_EQ(automatic.distancesOnTheDevice(tree), gpuChosen);
   EXPECT_FALSE(cpu.distancesOnTheDevice(tree));
@@ -165,7 +165,7 @@ TEST(DistancesOnTheDevice, AutoTakesTheCpuOnACpuDeviceAndEitherWhenForced)
   EXPECT_TRUE(device.distancesOnTheDevice(tree));
   EXPECT_TRUE(bool(device.bandDistances(tree)));
   EXPECT_FALSE(ComputeDevice("reference", false).distancesOnTheDevice(tree));
-  EXPECT_THROW(ComputeDevice("reference", false, DistancesOn::Device).distancesOnTheDevice(tree), UsageError);
+  EXPECT_THROW(ComputeDevice("reference", false, RunsOn::Device).distancesOnTheDevice(tree), UsageError);
 }
 
 TEST(DeviceHoldsTree, CountsTheNodesAndTheTrianglesAgainstOneBinding)

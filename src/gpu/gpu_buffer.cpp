@@ -25,7 +25,7 @@ GpuBuffer::GpuBuffer(GpuContext& context, vk::DeviceSize bytes, vk::BufferUsageF
       Flag::eDeviceLocal | Flag::eHostVisible | Flag::eHostCoherent | Flag::eHostCached;
   uint32_t type = context.memoryType(requirements.memoryTypeBits, required, preferred);
   bool map = use == MemoryUse::Upload || use == MemoryUse::Readback;
-  if (use == MemoryUse::DeviceReadByHost) {
+  if (use == MemoryUse::DeviceReadByHost && !context.stagedReadback()) {
     const uint32_t readable = context.memoryType(requirements.memoryTypeBits, {}, direct);
     if ((context.memoryFlags(readable) & direct) == direct) type = readable, map = true;
   }

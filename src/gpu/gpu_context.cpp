@@ -50,6 +50,7 @@ std::unique_ptr<GpuContext> GpuContext::open(const GpuOptions& options)
 GpuContext::GpuContext(std::shared_ptr<VulkanInstance> instance, size_t deviceIndex) : instance_(std::move(instance))
 {
   if (const char* trace = std::getenv("LBMSHAPE_DEVICE_TRACE")) trace_ = std::strcmp(trace, "0") != 0;
+  if (const char* staged = std::getenv("LBMSHAPE_STAGED_READBACK")) stagedReadback_ = std::strcmp(staged, "0") != 0;
   description_ = instance_->devices().at(deviceIndex);
   physical_ = &instance_->physicalDevice(deviceIndex);
   properties_ = physical_->getProperties();

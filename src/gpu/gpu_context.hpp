@@ -52,6 +52,11 @@ public:
   uint32_t memoryType(uint32_t typeBits, vk::MemoryPropertyFlags required,
                       vk::MemoryPropertyFlags preferred = {}) const;
   vk::MemoryPropertyFlags memoryFlags(uint32_t type) const { return memoryProperties_.memoryTypes[type].propertyFlags; }
+  // LBMSHAPE_STAGED_READBACK=1: results come back through staging buffers
+  // as on a discrete GPU, even where the device's memory is the host's
+  // (MemoryUse::DeviceReadByHost is then exactly Device): the tests run
+  // the discrete GPU's read-backs on lavapipe.
+  bool stagedReadback() const { return stagedReadback_; }
 
   // The compiled program for this shader and specialization, built once.
   ComputeProgram& program(const ProgramSpec& spec);
@@ -118,6 +123,7 @@ private:
   // LBMSHAPE_DEVICE_TRACE=1: a line on stderr for each compute submission,
   // its device time, its wait and the host's time since the last one.
   bool trace_ = false;
+  bool stagedReadback_ = false;
   Stopwatch sinceCreated_;
   double lastDoneMs_ = 0.0;
   size_t submissions_ = 0;

@@ -125,11 +125,13 @@ void listCrossings(int row)
     if (any(greaterThanEqual(origin + l, grid))) continue;
     const float here = sampleAt(l);
     for (int axis = 0; axis < 3; ++axis) {
-      if (l[axis] == 8 || !edgeOfTheBrick(l, axis)) continue;
+      if (l[axis] == 8) continue;
       ivec3 u = l;
       u[axis] += 1;
       const float there = sampleAt(u);
-      if ((here > p.iso) == (there > p.iso)) continue;
+      // Whether it is cut first: few edges are, and finding the cubes that
+      // have it takes longer.
+      if ((here > p.iso) == (there > p.iso) || !edgeOfTheBrick(l, axis)) continue;
       // edge_vertex::crossing and edge_vertex::normal.
       const float t = clamp((here - p.iso) / (here - there), EDGE_MARGIN, 1.0 - EDGE_MARGIN);
       vec3 outward = -((1.0 - t) * gradientAt(l) + t * gradientAt(u));

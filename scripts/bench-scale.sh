@@ -8,7 +8,8 @@
 #
 #   scripts/bench-scale.sh MESH.obj [RUNS] [RESOLUTIONS...]      e.g. armadillo.obj 3 128 256 512
 #   MORPH_SOURCE=sphere.obj scripts/bench-scale.sh MESH.obj     adds the morphs
-#   MORPH_FLAGS=--band ...                                      morphs on the narrow band
+#   MORPH_FLAGS=--dense ...                                     morphs on the grid
+#   MORPH_FLAGS='--extract device' ...                          frames' marching cubes on the device
 set -euo pipefail
 mesh=${1:?usage: bench-scale.sh MESH.obj [RUNS] [RESOLUTIONS...]}
 runs=${2:-3}
@@ -57,7 +58,9 @@ if [[ -n ${MORPH_SOURCE:-} ]]; then
   echo "morph $(basename "$MORPH_SOURCE") -> $(basename "$mesh"), 48 frames"
   for res in 128 256; do
     printf 'lbmshape --res %-5s ' "$res"
-    measure "$lbmshape" morph "$MORPH_SOURCE" "$mesh" "$work/frames$res" --res "$res" --align none --force --json -q ${MORPH_FLAGS:-} && echo
+    measure "$lbmshape" morph "$MORPH_SOURCE" "$mesh" "$work/frames$res" --res "$res" --align none --force --json -q ${MORPH_FLAGS:-} &&
+      python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))
+print(", frames extracted on the %s, %.1f MB read back a frame" % (r["extract_on"], r["lattice"]["frame_read_back_bytes"] / 1e6))' "$work/out.json"
     if [[ -n ${VDB_PEER:-} ]]; then
       printf 'openvdb  --res %-5s ' "$res"
       mkdir -p "$work/vdbframes$res"  # the peer writes into an existing folder

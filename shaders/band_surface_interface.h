@@ -9,8 +9,8 @@
 //     stored brick (and whose upper corner in the grid), as two uvec4:
 //     (key low, key high, floatBits(X at the lower end), floatBits(X at the
 //     upper end)), (floatBits(normal x), y, z, 0); key = 3 * grid index of
-//     the lower end + axis. An edge that two bricks' cubes share may be
-//     listed by both (the host keeps one).
+//     the lower end + axis. An edge that the cubes of several bricks share
+//     (up to four) may be listed by each (the host keeps one).
 //   cubes: every such cube that the surface cuts, as a uvec4: (index low,
 //     index high, case, slot * 512 + cell in brick), index the grid index
 //     of its lower corner; the last orders the cubes as the CPU's marching

@@ -234,9 +234,11 @@ struct BandVulkanSolver::Resources {
     std::vector<vk::raii::BufferView> views{};
     vk::raii::DescriptorPool pool{nullptr};
     vk::raii::DescriptorSets sets{nullptr};
-    vk::Buffer fieldWritten{}, sourceWritten{};  // the buffers its set reads
   };
   std::unique_ptr<SurfacePass> surface;
+  // Its set reads buffers that were replaced since it was written (the
+  // field buffer, the source buffer: writeDescriptors() says so).
+  bool surfaceSetStale = true;
   uint64_t lastCrossings = 0, lastCubes = 0;  // the lengths of the last lists: the next ones' room
   // Batches of steps, recorded once each (by count, first copy, slots, push
   // constants and pipeline) and replayed; writeDescriptors() clears them.
@@ -269,7 +271,8 @@ struct BandVulkanSolver::Resources {
   // buffer is replaced.
   void writeDescriptors()
   {
-    recordedSteps.clear();  // they bind these sets
+    recordedSteps.clear();   // they bind these sets
+    surfaceSetStale = true;  // it reads the field and the source buffers too
     using T = vk::DescriptorType;
     views.clear();
     const vk::BufferView copyViews[2] = {view(moments[0], vk::Format::eR32G32B32A32Sfloat),
@@ -476,8 +479,11 @@ struct BandVulkanSolver::Resources {
     writeDescriptors();
   }
 
-  // The surface pass ready for lists of at least these lengths, its set
-  // reading the field buffer and the source buffer as they are now.
+  // The surface pass ready for lists of at least these lengths (which fit
+  // one storage-buffer binding: listSurface's room), its set reading the
+  // field buffer and the source buffer as they are now. What it replaces
+  // takes effect once all of it is made, so a failure leaves the pass as
+  // it was.
   void prepareSurfacePass(uint64_t crossings, uint64_t cubes, const std::vector<glm::ivec3>& probes)
   {
     fullFieldBuffer();
@@ -485,56 +491,59 @@ struct BandVulkanSolver::Resources {
     const auto lists = B::eStorageBuffer | B::eTransferSrc;
     if (!surface) {
       const std::vector<uint32_t> bits = farSidesAround(initial);
-      surface = std::make_unique<SurfacePass>(SurfacePass{
+      auto made = std::make_unique<SurfacePass>(SurfacePass{
           GpuBuffer(context, 4 * bits.size(), texels, MemoryUse::Device),
           GpuBuffer(context, 4 * SURFACE_COUNTERS, lists | B::eTransferDst, MemoryUse::Device),
           GpuBuffer(context, 4 * SURFACE_COUNTERS, B::eTransferDst, MemoryUse::Readback),
           GpuBuffer(context, 32 * std::max<uint64_t>(crossings, 1), lists, MemoryUse::DeviceReadByHost),
           GpuBuffer(context, 16 * std::max<uint64_t>(cubes, 1), lists, MemoryUse::DeviceReadByHost),
           GpuBuffer(context, 4, texels, MemoryUse::Device), GpuBuffer(context, 4, lists, MemoryUse::DeviceReadByHost)});
-      upload(bits.data(), 4 * bits.size(), surface->farSides);
+      upload(bits.data(), 4 * bits.size(), made->farSides);
       using T = vk::DescriptorType;
       const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 6),
                                                            vk::DescriptorPoolSize(T::eStorageBuffer, 4)};
-      surface->pool = vk::raii::DescriptorPool(
+      made->pool = vk::raii::DescriptorPool(
           context.device(),
           vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
       const vk::DescriptorSetLayout layout = *context.program(surfaceProgram()).setLayout;
-      surface->sets = vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*surface->pool, layout));
+      made->sets = vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*made->pool, layout));
+      surface = std::move(made);
+      surfaceSetStale = true;
     }
     SurfacePass& pass = *surface;
-    bool rewrite = pass.fieldWritten != field.handle() || pass.sourceWritten != source.handle();
     if (probes != pass.probesAsked) {
-      pass.probesAsked = probes;
-      pass.probeStored.clear();
+      std::vector<int64_t> probeStored;
       std::vector<int32_t> stored;
       for (const glm::ivec3& c : probes) {
         if (!bricks->cells().contains(c.x, c.y, c.z)) throw std::invalid_argument("a probe beyond the grid");
-        pass.probeStored.push_back(bricks->storedIndex(c.x, c.y, c.z));
-        if (pass.probeStored.back() >= 0) stored.push_back(int32_t(pass.probeStored.back()));
+        probeStored.push_back(bricks->storedIndex(c.x, c.y, c.z));
+        if (probeStored.back() >= 0) stored.push_back(int32_t(probeStored.back()));
       }
       if (pass.probes.bytes() < 4 * stored.size()) {
-        pass.probes = GpuBuffer(context, 4 * stored.size(), texels, MemoryUse::Device);
-        pass.probeValues = GpuBuffer(context, 4 * stored.size(), lists, MemoryUse::DeviceReadByHost);
-        rewrite = true;
+        GpuBuffer cells(context, 4 * stored.size(), texels, MemoryUse::Device),
+            values(context, 4 * stored.size(), lists, MemoryUse::DeviceReadByHost);
+        pass.probes = std::move(cells);
+        pass.probeValues = std::move(values);
+        surfaceSetStale = true;
       }
       if (!stored.empty()) upload(stored.data(), 4 * stored.size(), pass.probes);
+      pass.probeStored = std::move(probeStored);
+      pass.probesAsked = probes;
     }
     if (pass.crossings.bytes() < 32 * crossings) {
       pass.crossings = GpuBuffer(context, 32 * crossings, lists, MemoryUse::DeviceReadByHost);
-      rewrite = true;
+      surfaceSetStale = true;
     }
     if (pass.cubes.bytes() < 16 * cubes) {
       pass.cubes = GpuBuffer(context, 16 * cubes, lists, MemoryUse::DeviceReadByHost);
-      rewrite = true;
+      surfaceSetStale = true;
     }
-    if (!rewrite) return;
+    if (!surfaceSetStale) return;
     using T = vk::DescriptorType;
-    pass.views.clear();
+    std::vector<vk::raii::BufferView> views;
     const auto viewOf = [&](const GpuBuffer& buffer, vk::Format format) {
-      pass.views.emplace_back(context.device(),
-                              vk::BufferViewCreateInfo({}, buffer.handle(), format, 0, VK_WHOLE_SIZE));
-      return *pass.views.back();
+      views.emplace_back(context.device(), vk::BufferViewCreateInfo({}, buffer.handle(), format, 0, VK_WHOLE_SIZE));
+      return *views.back();
     };
     const vk::BufferView fieldView = viewOf(field, vk::Format::eR32Sfloat),
                          neighbourView = viewOf(neighbours, vk::Format::eR32G32B32A32Sint),
@@ -558,8 +567,8 @@ struct BandVulkanSolver::Resources {
         {set, SURFACE_BINDING_PROBES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &probeView},
         {set, SURFACE_BINDING_PROBE_VALUES, 0, 1, T::eStorageBuffer, nullptr, &probeValueInfo}};
     context.device().updateDescriptorSets(writes, {});
-    pass.fieldWritten = field.handle();
-    pass.sourceWritten = source.handle();
+    pass.views = std::move(views);
+    surfaceSetStale = false;
   }
 
   // Records the surface pass over the field buffer (which the commands
@@ -592,16 +601,21 @@ struct BandVulkanSolver::Resources {
 
   // The surface's pieces of the field that the commands `before` records
   // write into the field buffer (and nearBand's error against the source's
-  // base), read back. Where a list outgrows its buffer, the pass runs again
-  // (the field buffer still holds the field) with room for it.
-  template <class Before>
-  SurfacePieces listSurface(const SurfaceRequest& request, Before before)
+  // base), read back; `ran` runs once those commands have (a step among
+  // them is taken then, whatever follows). Where a list outgrows its
+  // buffer, the pass runs again (the field buffer still holds the field)
+  // with room for it, up to one storage-buffer binding.
+  template <class Before, class Ran>
+  SurfacePieces listSurface(const SurfaceRequest& request, Before before, Ran ran)
   {
     const float isovalue = request.isovalue, nearBand = sourceHost ? request.nearBand : -1.0f;
-    const auto room = [](uint64_t found) { return std::min<uint64_t>(found + found / 4 + 1024, INT32_MAX); };
+    const uint64_t range = context.description().maxStorageBufferRange;
+    const uint64_t mostCrossings = std::min<uint64_t>(range / sizeof(SurfaceCrossing), INT32_MAX),
+                   mostCubes = std::min<uint64_t>(range / sizeof(SurfaceCube), INT32_MAX);
+    const auto room = [](uint64_t found, uint64_t most) { return std::min(found + found / 4 + 1024, most); };
     const uint64_t slots = bricks->activeCount();
-    uint64_t crossingRoom = room(lastCrossings ? lastCrossings : 16 * slots);
-    uint64_t cubeRoom = room(lastCubes ? lastCubes : 16 * slots);
+    uint64_t crossingRoom = room(lastCrossings ? lastCrossings : 16 * slots, mostCrossings);
+    uint64_t cubeRoom = room(lastCubes ? lastCubes : 16 * slots, mostCubes);
     for (bool first = true;; first = false) {
       prepareSurfacePass(crossingRoom, cubeRoom, request.probes);
       const Extent3& e = bricks->cells();
@@ -614,14 +628,20 @@ struct BandVulkanSolver::Resources {
         if (first) before(cmd);
         recordSurfacePass(cmd, push);
       });
+      if (first) ran();
       std::array<uint32_t, SURFACE_COUNTERS> counts;
       std::memcpy(counts.data(), surface->countersRead.mapped(), sizeof(counts));
       if (counts[SURFACE_COUNTER_NOT_FINITE] > 0)
         throw NumericalError("the field holds a value that is not a finite number");
       const uint64_t crossings = counts[SURFACE_COUNTER_CROSSINGS], cubes = counts[SURFACE_COUNTER_CUBES];
+      if (crossings > mostCrossings || cubes > mostCubes)
+        throw DeviceError("the surface has " + std::to_string(crossings) + " cut grid edges and " +
+                          std::to_string(cubes) + " cut cubes, more than one storage buffer of " +
+                          context.description().name + " holds (" + std::to_string(mostCrossings) + " and " +
+                          std::to_string(mostCubes) + "); extract the frames on the CPU (--extract cpu)");
       if (crossings > crossingRoom || cubes > cubeRoom) {
-        crossingRoom = std::max(crossingRoom, room(crossings));
-        cubeRoom = std::max(cubeRoom, room(cubes));
+        crossingRoom = std::max(crossingRoom, room(crossings, mostCrossings));
+        cubeRoom = std::max(cubeRoom, room(cubes, mostCubes));
         continue;
       }
       lastCrossings = crossings;
@@ -1053,6 +1073,7 @@ void BandVulkanSolver::restart()
 // rule seeded: initialize() after the streaming cells are on the device.
 void BandVulkanSolver::startFrom(BandField field)
 {
+  r_->surface.reset();  // its far sides are the last start's
   if (r_->sourceHost && r_->sourceHost->base.values().size() != r_->cells)
     throw std::logic_error("a new start with a source needs setSource() again: its values go after the first step");
   if (r_->paperRuleGamma0) {
@@ -1253,8 +1274,8 @@ SurfacePieces BandVulkanSolver::surfacePieces(const SurfaceRequest& request)
   const gpu::TraceLabel label("band surface pieces");
   // Before the first step the field is the initial one, whose values are kept.
   if (r_->steps == 0) return listSurfacePieces(r_->initial, request, r_->sourceHost ? &r_->sourceHost->base : nullptr);
-  return r_->listSurface(request,
-                         [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, r_->current, r_->parameters(true)); });
+  return r_->listSurface(
+      request, [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, r_->current, r_->parameters(true)); }, [] {});
 }
 
 SurfacePieces BandVulkanSolver::surfacePiecesThenStep(const SurfaceRequest& request, std::optional<SourceStrength> next)
@@ -1265,10 +1286,12 @@ SurfacePieces BandVulkanSolver::surfacePiecesThenStep(const SurfaceRequest& requ
   const std::optional<band_shader::StepParameters> push = r_->stepStoringItsField(next);
   if (!push) return BandSolver::surfacePiecesThenStep(request, next);
   const int first = r_->current;
-  SurfacePieces pieces = r_->listSurface(request, [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, first, *push); });
-  r_->current = 1 - first;
-  r_->steps += 1;
-  return pieces;
+  return r_->listSurface(
+      request, [&](vk::CommandBuffer cmd) { r_->recordPass(cmd, first, *push); },
+      [&] {
+        r_->current = 1 - first;
+        r_->steps += 1;
+      });
 }
 
 }  // namespace lbmshape

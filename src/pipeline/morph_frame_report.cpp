@@ -87,7 +87,7 @@ public:
   }
 
 private:
-  const Extent3& extent_;
+  Extent3 extent_;
   const std::vector<glm::ivec3>& cells_;
   const std::vector<float>& values_;
 };

@@ -157,9 +157,35 @@ TEST_F(BandSurfacePass, AFieldThatIsNotFiniteIsANumericalError)
   solver->setUniformGamma(0.2);
   BandField start = testing::bandOf(field, bricks);
   start.values()[start.values().size() / 3] = std::numeric_limits<float>::infinity();
-  solver->initialize(start, 3.0);
+  solver->initialize(start, 100.0);  // every cell streams: a step updates every brick, in one pass with the pieces
   solver->step(2);
   EXPECT_THROW(solver->surfacePieces({}), NumericalError);
+  // In one pass with a step: the step is taken all the same.
+  EXPECT_THROW(solver->surfacePiecesThenStep({}, std::nullopt), NumericalError);
+  EXPECT_EQ(solver->stepsTaken(), 3);
+}
+
+// A new start on the same bricks with other far sides (the inside turned
+// out) and another source: the pass reads the new ones.
+TEST_F(BandSurfacePass, ANewStartIsListedWithItsOwnFarSidesAndSource)
+{
+  Morph m = startMorph(1.0, 0.3f);
+  m.solver->step(2);
+  const SurfacePieces before = m.solver->surfacePieces({.nearBand = 1.0f});
+  BandField turned = m.solver->field();
+  for (float& v : turned.values()) v = -v;
+  for (int8_t& side : turned.farSides()) side = int8_t(-side);
+  BandField target = m.target;
+  for (float& v : target.values()) v = -v;
+  m.solver->setSource(BandSource{target, 0.1f, 0.1f});
+  m.solver->initialize(turned, 1.0);
+  m.solver->step(2);
+  const SurfacePieces got = m.solver->surfacePieces({.nearBand = 1.0f});
+  const SurfacePieces expected = listSurfacePieces(m.solver->field(), {.nearBand = 1.0f}, &target);
+  expectSamePieces(got, expected);
+  EXPECT_EQ(*got.errorNearBase, *expected.errorNearBase);
+  ASSERT_FALSE(got.cubes.empty());
+  EXPECT_NE(got.cubes[0].cubeCase, before.cubes[0].cubeCase) << "the inside turned out";
 }
 
 // Which frames a morph on the band lists on the device:

@@ -56,6 +56,10 @@ float fetchSample(ivec3 l)
 const int BLOCK = 11;
 shared float block[BLOCK * BLOCK * BLOCK];
 shared uint sidesSeen;  // bit 0: a sample of the brick's cubes above the isovalue, bit 1: one not
+// Per row (y + 9 z) of the samples of the brick's cubes (0 .. 8 each way):
+// bit x set when sample (x, y, z) is above the isovalue. A cube's case and
+// a cut edge are then a few bit operations.
+shared uint aboveRows[81];
 
 float sampleAt(ivec3 l) { return block[(l.x + 1) + BLOCK * ((l.y + 1) + BLOCK * (l.z + 1))]; }
 
@@ -117,53 +121,59 @@ uvec2 edgeKey(uvec2 index, int axis)
   return uvec2(low, index.y * 3u + high + carry);
 }
 
-void listCrossings(int row)
+// Lists the cut edge from sample l along `axis` (its other end in the
+// block), if one of the brick's cubes has it and its lower end is in the grid.
+void listCrossing(ivec3 l, int axis)
 {
-  const ivec3 start = ivec3(0, row % 9, row / 9);
-  for (int x = 0; x <= 8; ++x) {
-    const ivec3 l = ivec3(x, start.y, start.z);
-    if (any(greaterThanEqual(origin + l, grid))) continue;
-    const float here = sampleAt(l);
-    for (int axis = 0; axis < 3; ++axis) {
-      if (l[axis] == 8) continue;
-      ivec3 u = l;
-      u[axis] += 1;
-      const float there = sampleAt(u);
-      // Whether it is cut first: few edges are, and finding the cubes that
-      // have it takes longer.
-      if ((here > p.iso) == (there > p.iso) || !edgeOfTheBrick(l, axis)) continue;
-      // edge_vertex::crossing and edge_vertex::normal.
-      const float t = clamp((here - p.iso) / (here - there), EDGE_MARGIN, 1.0 - EDGE_MARGIN);
-      vec3 outward = -((1.0 - t) * gradientAt(l) + t * gradientAt(u));
-      const float size = length(outward);
-      if (size > 0.0 && size <= LARGEST_FLOAT) {
-        outward /= size;
-      } else {
-        outward = vec3(0.0);
-        outward[axis] = here > p.iso ? 1.0 : -1.0;
-      }
-      const uint k = atomicAdd(counters[SURFACE_COUNTER_CROSSINGS], 1u);
-      if (k < uint(p.crossingCapacity)) {
-        crossings[2 * k] = uvec4(edgeKey(gridIndex(origin + l), axis), floatBitsToUint(here), floatBitsToUint(there));
-        crossings[2 * k + 1] = uvec4(floatBitsToUint(outward), 0u);
-      }
-    }
+  if (any(greaterThanEqual(origin + l, grid)) || !edgeOfTheBrick(l, axis)) return;
+  ivec3 u = l;
+  u[axis] += 1;
+  const float here = sampleAt(l), there = sampleAt(u);
+  // edge_vertex::crossing and edge_vertex::normal.
+  const float t = clamp((here - p.iso) / (here - there), EDGE_MARGIN, 1.0 - EDGE_MARGIN);
+  vec3 outward = -((1.0 - t) * gradientAt(l) + t * gradientAt(u));
+  const float size = length(outward);
+  if (size > 0.0 && size <= LARGEST_FLOAT) {
+    outward /= size;
+  } else {
+    outward = vec3(0.0);
+    outward[axis] = here > p.iso ? 1.0 : -1.0;
+  }
+  const uint k = atomicAdd(counters[SURFACE_COUNTER_CROSSINGS], 1u);
+  if (k < uint(p.crossingCapacity)) {
+    crossings[2 * k] = uvec4(edgeKey(gridIndex(origin + l), axis), floatBitsToUint(here), floatBitsToUint(there));
+    crossings[2 * k + 1] = uvec4(floatBitsToUint(outward), 0u);
   }
 }
 
+// The cut edges from the samples of row (y, z) of the block (0 .. 8 each):
+// where two neighbouring samples' bits differ.
+void listCrossings(int row)
+{
+  const int y = row % 9, z = row / 9;
+  const uint here = aboveRows[row];
+  uint cut[3] = uint[3]((here ^ (here >> 1)) & 0xffu, y < 8 ? (here ^ aboveRows[row + 1]) : 0u,
+                        z < 8 ? (here ^ aboveRows[row + 9]) : 0u);
+  for (int axis = 0; axis < 3; ++axis)
+    for (uint bits = cut[axis]; bits != 0u; bits &= bits - 1u) listCrossing(ivec3(findLSB(bits), y, z), axis);
+}
+
+// The cut cubes of row (y, z) of the brick: the case of cube x from bits x
+// and x + 1 of the four sample rows around it.
 void listCubes(int y, int z)
 {
-  for (int x = 0; x < 8; ++x) {
+  const uint r00 = aboveRows[y + 9 * z], r10 = aboveRows[y + 1 + 9 * z], r01 = aboveRows[y + 9 * (z + 1)],
+             r11 = aboveRows[y + 1 + 9 * (z + 1)];
+  const uint all = r00 & r10 & r01 & r11, any = r00 | r10 | r01 | r11;
+  // Cubes whose eight corners are neither all above nor all not.
+  const uint mixed = ~(all & (all >> 1)) & (any | (any >> 1)) & 0xffu;
+  for (uint bits = mixed; bits != 0u; bits &= bits - 1u) {
+    const int x = findLSB(bits);
     const ivec3 c = ivec3(x, y, z);
     if (!cubeOfTheBrick(c)) continue;
-    uint cubeCase = 0u;
-    for (int corner = 0; corner < 8; ++corner)
-      if (sampleAt(c + ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1)) > p.iso) cubeCase |= 1u << corner;
-    if (cubeCase == 0u || cubeCase == 255u) continue;
+    const uint cubeCase = (r00 >> x & 3u) | (r10 >> x & 3u) << 2 | (r01 >> x & 3u) << 4 | (r11 >> x & 3u) << 6;
     const uint k = atomicAdd(counters[SURFACE_COUNTER_CUBES], 1u);
-    if (k < uint(p.cubeCapacity)) {
-      cubes[k] = uvec4(gridIndex(origin + c), cubeCase, uint(slot * 512 + x + 8 * (y + 8 * z)));
-    }
+    if (k < uint(p.cubeCapacity)) cubes[k] = uvec4(gridIndex(origin + c), cubeCase, uint(slot * 512 + x + 8 * (y + 8 * z)));
   }
 }
 
@@ -214,10 +224,17 @@ void main()
   for (int i = slot * BAND_WORKGROUP_SIZE + lane; i < p.probes; i += p.slots * BAND_WORKGROUP_SIZE)
     probeValues[i] = texelFetch(field, texelFetch(probes, i).x).x;
   if (sidesSeen != 3u) return;  // the same for the whole workgroup
-  // Then the layer around them (-1 and 9), which the gradients read.
+  // Then the layer around them (-1 and 9), which the gradients read, and
+  // the rows' bits.
   for (int i = lane; i < BLOCK * BLOCK * BLOCK; i += BAND_WORKGROUP_SIZE) {
     const ivec3 l = ivec3(i % BLOCK, (i / BLOCK) % BLOCK, i / (BLOCK * BLOCK)) - 1;
     if (any(lessThan(l, ivec3(0))) || any(greaterThan(l, ivec3(8)))) block[i] = fetchSample(l);
+  }
+  for (int row = lane; row < 81; row += BAND_WORKGROUP_SIZE) {
+    uint bits = 0u;
+    for (int x = 0; x <= 8; ++x)
+      if (sampleAt(ivec3(x, row % 9, row / 9)) > p.iso) bits |= 1u << x;
+    aboveRows[row] = bits;
   }
   barrier();
   listCubes(lane & 7, lane >> 3);

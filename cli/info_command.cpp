@@ -6,6 +6,7 @@
 
 #include "core/memory_sizes.hpp"
 #include "gpu/vulkan_instance.hpp"
+#include "pipeline/compute_device.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -30,6 +31,12 @@ void runInfo(const CommonOptions& common)
   const auto& devices = instance.devices();
   const bool reference = wantsReference(common);
   const size_t selected = reference ? devices.size() : gpu::chooseDevice(devices, common.device);
+  // Where the stages with both paths run with the options given (--sdf,
+  // --extract) on the selected device.
+  const std::string type = reference ? "" : devices[selected].type;
+  const auto where = [](bool device) { return device ? "device" : "cpu"; };
+  const char* distancesOn = where(runsOnTheDevice(common.distances, reference, type, "--sdf"));
+  const char* framesOn = where(runsOnTheDevice(common.surfaces, reference, type, "--extract"));
 
   if (common.json) {
     nlohmann::json list = nlohmann::json::array();
@@ -40,6 +47,8 @@ void runInfo(const CommonOptions& common)
                    {"devices", list},
                    {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
                    {"validation", instance.validationEnabled()},
+                   {"sdf_on", distancesOn},
+                   {"extract_on", framesOn},
                    {"openmp_wait_policy", waitPolicy ? nlohmann::json(waitPolicy) : nlohmann::json(nullptr)}});
     return;
   }
@@ -52,6 +61,8 @@ void runInfo(const CommonOptions& common)
               << mebibytes(d.maxStorageBufferRange) << "\n";
   }
   std::cout << (reference ? "* " : "  ") << "reference: the CPU reference solver (--device reference)\n";
+  std::cout << "band distances on: " << distancesOn << " (--sdf); morph frames extracted on: " << framesOn
+            << " (--extract)\n";
 }
 
 }  // namespace

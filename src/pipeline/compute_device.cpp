@@ -115,10 +115,18 @@ gpu::GpuContext& ComputeDevice::openContext() const
   return *gpu_;
 }
 
+bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, const char* option)
+{
+  if (choice == RunsOn::Device && reference)
+    throw UsageError(std::string(option) + " device needs a Vulkan device, not the reference (--device reference)");
+  if (choice == RunsOn::Cpu || reference) return false;
+  return choice == RunsOn::Device || type != "cpu";
+}
+
 bool ComputeDevice::distancesGoToTheDevice() const
 {
   if (distances_ == RunsOn::Cpu || isReference()) return false;
-  return distances_ == RunsOn::Device || description().type != "cpu";
+  return runsOnTheDevice(distances_, false, description().type, "--sdf");
 }
 
 bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
@@ -132,10 +140,8 @@ bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
 
 bool ComputeDevice::surfacesOnTheDevice() const
 {
-  if (surfaces_ == RunsOn::Device && isReference())
-    throw UsageError("--extract device needs a Vulkan device, not the reference (--device reference)");
-  if (surfaces_ == RunsOn::Cpu || isReference()) return false;
-  return surfaces_ == RunsOn::Device || description().type != "cpu";
+  if (isReference()) return runsOnTheDevice(surfaces_, true, "", "--extract");
+  return surfaces_ != RunsOn::Cpu && runsOnTheDevice(surfaces_, false, description().type, "--extract");
 }
 
 void ComputeDevice::warnThatTheGridsFramesAreTheCpus() const

@@ -30,6 +30,15 @@ struct DeviceDescription;
 // (--extract, surfacesOnTheDevice()). Auto lets the device's type decide.
 enum class RunsOn { Auto, Cpu, Device };
 
+// The rule behind both: whether `choice` runs a stage on the device, for a
+// device of `type` (DeviceDescription::type; `reference` for the CPU
+// reference solver, which has no device). Auto takes the device on a GPU
+// (discrete, integrated or virtual) and the CPU on a CPU device such as
+// lavapipe and on the reference. RunsOn::Device on the reference is a
+// UsageError naming `option` (--sdf, --extract). (The band's distances also
+// need their tree to fit the device: ComputeDevice::distancesOnTheDevice.)
+bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, const char* option);
+
 class ComputeDevice {
 public:
   // `request`: empty (the best device), an index, part of a device name, or

@@ -33,6 +33,32 @@ TEST(JsonResults, InfoListsDevicesAndTheSelectedOne)
   EXPECT_TRUE(j["validation"].get<bool>()) << "tests run with the validation layer";
 }
 
+// info says where the stages with both paths run on the selected device
+// (ComputeDevice's rule): auto takes the device on a GPU, the CPU on a CPU
+// device and on the reference; a forced choice is taken as given, the
+// device on the reference refused.
+TEST(JsonResults, InfoSaysWhereTheDistancesAndTheFramesRun)
+{
+  auto j = parseStdout(testing::runLbmshape({"info", "--json"}));
+  std::string type;
+  for (const auto& d : j["devices"])
+    if (d["selected"].get<bool>()) type = d["type"].get<std::string>();
+  const std::string automatic = type == "cpu" ? "cpu" : "device";
+  EXPECT_EQ(j["sdf_on"], automatic);
+  EXPECT_EQ(j["extract_on"], automatic);
+  j = parseStdout(testing::runLbmshape({"info", "--json", "--sdf", "cpu", "--extract", "device"}));
+  EXPECT_EQ(j["sdf_on"], "cpu");
+  EXPECT_EQ(j["extract_on"], "device");
+  j = parseStdout(testing::runLbmshape({"info", "--json", "--device", "reference"}));
+  EXPECT_EQ(j["sdf_on"], "cpu");
+  EXPECT_EQ(j["extract_on"], "cpu");
+  const testing::CliResult refused = testing::runLbmshape({"info", "--extract", "device", "--device", "reference"});
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--extract device needs a Vulkan device"), std::string::npos) << refused.err;
+  const testing::CliResult text = testing::runLbmshape({"info", "--extract", "cpu"});
+  EXPECT_NE(text.out.find("morph frames extracted on: cpu (--extract)"), std::string::npos) << text.out;
+}
+
 // lbmshape starts itself again with OpenMP's idle threads waiting
 // passively, unless the user chose how they wait.
 TEST(JsonResults, InfoShowsOpenMpThreadsWaitPassivelyUnlessTheUserChose)

@@ -665,13 +665,11 @@ struct BandVulkanSolver::Resources {
       readList(surface->cubes, cubes, sizeof(SurfaceCube), pieces.cubes.data());
       std::vector<float> stored(static_cast<size_t>(storedProbes));
       readList(surface->probeValues, stored.size(), sizeof(float), stored.data());
+      // A probe outside the stored bricks reads the far value on its side,
+      // as BandField::at() does (initial keeps the far sides, not the values).
       for (size_t k = 0, next = 0; k < request.probes.size(); ++k) {
         const glm::ivec3 c = request.probes[k];
-        pieces.probeValues.push_back(surface->probeStored[k] >= 0
-                                         ? stored[next++]
-                                         : initial.farValue() * initial.farSide(BrickSet::floorDiv(c.x),
-                                                                                BrickSet::floorDiv(c.y),
-                                                                                BrickSet::floorDiv(c.z)));
+        pieces.probeValues.push_back(surface->probeStored[k] >= 0 ? stored[next++] : initial.at(c.x, c.y, c.z));
       }
       if (nearBand >= 0.0f) {
         float error;

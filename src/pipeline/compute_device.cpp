@@ -123,26 +123,23 @@ bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, con
   return choice == RunsOn::Device || type != "cpu";
 }
 
-bool ComputeDevice::distancesGoToTheDevice() const
+bool ComputeDevice::onTheDevice(RunsOn choice, const char* option) const
 {
-  if (distances_ == RunsOn::Cpu || isReference()) return false;
-  return runsOnTheDevice(distances_, false, description().type, "--sdf");
+  // Only Auto reads the device's type: the others open no instance.
+  const bool readsType = choice == RunsOn::Auto && !isReference();
+  return runsOnTheDevice(choice, isReference(), readsType ? description().type : std::string(), option);
 }
+
+bool ComputeDevice::distancesGoToTheDevice() const { return onTheDevice(distances_, "--sdf"); }
 
 bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
 {
-  if (distances_ == RunsOn::Device && isReference())
-    throw UsageError("--sdf device needs a Vulkan device, not the reference (--device reference)");
   if (!distancesGoToTheDevice()) return false;
   // Forced, a tree too large is deviceBandDistances()'s DeviceError.
   return distances_ == RunsOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
 }
 
-bool ComputeDevice::surfacesOnTheDevice() const
-{
-  if (isReference()) return runsOnTheDevice(surfaces_, true, "", "--extract");
-  return surfaces_ != RunsOn::Cpu && runsOnTheDevice(surfaces_, false, description().type, "--extract");
-}
+bool ComputeDevice::surfacesOnTheDevice() const { return onTheDevice(surfaces_, "--extract"); }
 
 void ComputeDevice::warnThatTheGridsFramesAreTheCpus() const
 {

@@ -127,7 +127,9 @@ private:
   // The chosen Vulkan device's context, opened if it is not yet: gpu()'s,
   // without waiting for the warm-up, whose thread calls it.
   gpu::GpuContext& openContext() const;
-  void finishWarmUp() const;            // waits for warmUpForTheBand()'s thread, if any
+  void finishWarmUp() const;  // waits for warmUpForTheBand()'s thread, if any
+  // runsOnTheDevice() for this device, `option` naming the choice.
+  bool onTheDevice(RunsOn choice, const char* option) const;
   bool distancesGoToTheDevice() const;  // the rule of bandDistances(), the tree aside
 
   std::string request_;

@@ -89,6 +89,10 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_flag("--twicing", a->options.twicing,
                 "Smooth, then smooth what the smoothing took away and add it back (Tukey's twicing): keeps thin "
                 "parts that smoothing erodes and removes noise as well; about twice the lattice steps");
+  cmd->add_option("--relax", a->options.relaxRounds,
+                  "Rounds of tangential relaxation of the result's triangles: marching cubes' slivers evened out, "
+                  "the surface left where it is (0: marching cubes' own triangles)")
+      ->capture_default_str();
   cmd->add_flag(
       "--dense", a->options.dense,
       "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");

@@ -23,6 +23,7 @@ Names namesOf(Parameter parameter)
   case Parameter::Gamma: return {"gamma", "--gamma", "gamma"};
   case Parameter::Steps: return {"steps", "--steps", "steps"};
   case Parameter::Radius: return {"radius", "--radius", "radius"};
+  case Parameter::Relax: return {"relaxRounds", "--relax", "relax"};
   case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", nullptr};
   case Parameter::Frames: return {"frames", "--frames", "frames"};
   case Parameter::Cs: return {"cs", "--cs", "cs"};

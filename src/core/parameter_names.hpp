@@ -18,6 +18,7 @@ enum class Parameter {
   Gamma,
   Steps,
   Radius,
+  Relax,
   StepsPerFrame,
   Frames,
   Cs,

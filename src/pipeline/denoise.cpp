@@ -401,6 +401,8 @@ void checkDenoiseOptions(const DenoiseOptions& o)
   if (o.steps && (*o.steps < 0 || *o.steps > parameter_bounds::maxSteps))
     throw UsageError(nameOf(Parameter::Steps) + " must be from 0 to " + std::to_string(parameter_bounds::maxSteps));
   checkRadius(o.radius, o.steps.has_value());
+  if (o.relaxRounds < 0 || o.relaxRounds > maxRelaxationRounds)
+    throw UsageError(nameOf(Parameter::Relax) + " must be from 0 to " + std::to_string(maxRelaxationRounds));
   checkGridAndNoise(o.grid, o.noise);
 }
 
@@ -458,6 +460,12 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
                          " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) +
                          " or a finer " + nameOf(Parameter::Resolution));
+  if (o.relaxRounds > 0) {
+    const RelaxationSummary relaxed = clock.time("relax", [&] { return relaxTriangles(result, o.relaxRounds); });
+    log::verbose("triangles relaxed: " + std::to_string(o.relaxRounds) + " rounds, " +
+                 std::to_string(relaxed.movedVertices) + " vertices moved in the last, " +
+                 std::to_string(relaxed.keptVertices) + " kept so that no triangle turned over");
+  }
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
   if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps);
@@ -477,6 +485,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"surface_speeds", smoothed.speeds},
       {"smoothing", smoothingName(o.smoothing)},
       {"twicing", o.twicing},
+      {"relax_rounds", o.relaxRounds},
       {"keep_volume", o.keepVolume},
       {"volume_shift_voxels", smoothed.volumeShift},
       {"noise", o.noise.amplitude},

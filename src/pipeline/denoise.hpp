@@ -13,6 +13,7 @@
 #include "pipeline/compute_device.hpp"
 #include "pipeline/field_noise.hpp"
 #include "sdf/grid_frame.hpp"
+#include "surface/triangle_relaxation.hpp"
 
 namespace lbmshape {
 
@@ -41,7 +42,7 @@ struct DenoiseOptions {
   std::optional<double> radius;
   double gamma = 0.2;  // voxels^2 per step
   // Feature-preserving by default: ahead of OpenVDB's mean-curvature filter
-  // more often than isotropic smoothing, which rounds sharp edges (28 of 33
+  // more often than isotropic smoothing, which rounds sharp edges (29 of 33
   // noisy cases; docs/denoising.md, "How good it is").
   Smoothing smoothing = Smoothing::PreserveFeatures;
   // The smoothed field shifted by a constant so that it encloses the
@@ -52,6 +53,10 @@ struct DenoiseOptions {
   // mean curvature flow erodes kept, noise removed as well or better, at
   // about twice the lattice steps (--twicing; docs/denoising.md).
   bool twicing = false;
+  // Rounds of tangential relaxation of marching cubes' triangles
+  // (surface/triangle_relaxation.hpp): the slivers evened out, the surface
+  // left where it is; 0: marching cubes' own triangles (--relax).
+  int relaxRounds = defaultRelaxationRounds;
   FieldNoise noise;  // the paper's noise on the distance field, off by default
   // The lattice on the narrow band around the surface (band/), or on every
   // cell of the grid (the paper's, and the reference the band is tested

@@ -5,5 +5,6 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/loop_triangulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/marching_cubes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_pieces.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/triangle_relaxation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/volume_keeping.cpp
 )

@@ -1,0 +1,40 @@
+// Marching cubes puts a vertex wherever the surface crosses a grid edge, so
+// its triangles follow the grid rather than the surface: on a denoised scan
+// at --res 128 a tenth of them are slivers (an angle under 10 degrees),
+// whose normals are the least accurate of all. Relaxation moves every
+// vertex towards the centre of its neighbours, within its tangent plane:
+// the triangles even out (the slivers all but vanish) and their normals
+// come nearer the surface's, while the surface stays where it was (a move
+// of a fraction of a voxel along the surface leaves it by its square times
+// the curvature). docs/denoising.md, "Relaxed triangles", has the figures.
+#pragma once
+
+#include <cstddef>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace lbmshape {
+
+// The rounds denoise runs by default: the second round adds a little to
+// the first, a third nothing measurable.
+inline constexpr int defaultRelaxationRounds = 2;
+// The most rounds accepted (parameter_bounds): beyond a few, nothing changes.
+inline constexpr int maxRelaxationRounds = 100;
+
+struct RelaxationSummary {
+  size_t movedVertices = 0;  // vertices moved in the last round
+  size_t keptVertices = 0;   // in the last round, kept where they were so that no triangle turned over
+};
+
+// `rounds` rounds of tangential relaxation: half the way to the centre of
+// the vertex's neighbours within the plane of its triangles, then back onto
+// the surface by the bend that the normals show (to second order). The
+// triangles are not changed, only the positions, so a closed manifold stays
+// one. A vertex on an open or non-manifold edge stays put; a move that
+// would turn a triangle over (or flatten it) is not made. The mesh's
+// normals, where it has them (marching cubes': the field's gradient), are
+// the surface's for the bend and move with their vertices, half the way to
+// their neighbours'.
+RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds);
+
+}  // namespace lbmshape

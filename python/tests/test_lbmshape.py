@@ -73,6 +73,7 @@ class Denoise(unittest.TestCase):
         self.assertEqual(report["grid"]["size"], [40, 40, 40])
         self.assertIn("lbm", report["ms"])
         self.assertFalse(report["twicing"])  # the default
+        self.assertEqual(report["relax_rounds"], 2)  # the default
         _, _, twiced = lbmshape.denoise(v, f, res=40, steps=3, twicing=True, report=True)
         self.assertTrue(twiced["twicing"])
         self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
@@ -114,6 +115,8 @@ class Denoise(unittest.TestCase):
             lbmshape.denoise(v, f, smoothing="gentle")
         with self.assertRaisesRegex(ValueError, "^radius and steps both say how much to smooth"):
             lbmshape.denoise(v, f, radius=0.1, steps=3)
+        with self.assertRaisesRegex(ValueError, "^relax must be from 0 to 100$"):
+            lbmshape.denoise(v, f, relax=-1)
         flat = v.copy()
         flat[:, 2] = 0
         with self.assertRaises(lbmshape.InputError):

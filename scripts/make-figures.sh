@@ -21,6 +21,14 @@ cp build/assets/bolt_noisy.obj "$work/noisy.obj"
 $lbmshape -q render "$work/noisy.obj" "$work/preserve-features.glb" "$out/denoise.png" \
   --view 30,25 --labels --size 720x340
 
+# Marching cubes' own triangles and the relaxed ones, the default
+# (docs/denoising.md, "Relaxed triangles"), on a grid coarse enough to
+# see them.
+$lbmshape -q denoise build/assets/bolt_noisy.obj "$work/relax_0.glb" --res 40 --relax 0
+$lbmshape -q denoise build/assets/bolt_noisy.obj "$work/relax_2.glb" --res 40
+$lbmshape -q render "$work/relax_0.glb" "$work/relax_2.glb" "$out/denoise-relaxed.png" \
+  --view 30,25 --labels --wireframe --size 900x420
+
 # The smoothing steps, coloured by mean curvature on one scale
 # (docs/denoising.md).
 inputs=("$work/noisy.obj")

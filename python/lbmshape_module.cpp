@@ -95,7 +95,7 @@ Smoothing smoothingNamed(const std::string& name)
 
 py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps,
                    std::optional<double> radius, double gamma, const std::string& smoothing, bool keepVolume,
-                   bool twicing, int relax, bool dense, std::shared_ptr<ComputeDevice> device, bool report)
+                   bool twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report, int relax)
 {
   DenoiseOptions options;
   options.grid.resolution = res;
@@ -229,8 +229,9 @@ PYBIND11_MODULE(lbmshape, m)
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
         py::arg("steps") = py::none(), py::arg("radius") = py::none(), py::arg("gamma") = 0.2,
         py::arg("smoothing") = "preserve-features", py::arg("keep_volume") = true, py::arg("twicing") = false,
-        py::arg("relax") = defaultRelaxationRounds, py::arg("dense") = false, py::arg("device") = nullptr,
-        py::arg("report") = false,
+        py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
+        // Last: a call that passes the ones before it by position keeps its meaning.
+        py::arg("relax") = defaultRelaxationRounds,
         "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
         "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");
   m.def("morph", &morph, py::arg("source_vertices"), py::arg("source_triangles"), py::arg("target_vertices"),

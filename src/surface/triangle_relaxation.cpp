@@ -1,5 +1,6 @@
 #include "surface/triangle_relaxation.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -60,9 +61,12 @@ std::vector<uint8_t> surroundedVertices(const TriangleMesh& mesh)
 bool turnedOver(const std::vector<glm::dvec3>& before, const std::vector<glm::dvec3>& after, const glm::uvec3& t)
 {
   const glm::dvec3 was = crossOf(before, t);
-  if (glm::dot(was, was) == 0.0) return false;
+  const double area2 = glm::dot(was, was);
+  if (area2 == 0.0 || !std::isfinite(area2)) return false;
   return !(glm::dot(was, crossOf(after, t)) > 0.0);
 }
+
+bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 }  // namespace
 
@@ -71,6 +75,8 @@ RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
   if (rounds < 0) throw std::invalid_argument("relaxation rounds must not be negative");
   RelaxationSummary summary;
   if (rounds == 0 || mesh.triangles.empty()) return summary;
+  for (const glm::dvec3& p : mesh.positions)
+    if (!finite(p)) throw std::invalid_argument("relaxation needs finite vertex positions");
   const size_t n = mesh.vertexCount();
   const bool hasNormals = mesh.normals.size() == n;
   const std::vector<uint8_t> surrounded = surroundedVertices(mesh);
@@ -116,31 +122,33 @@ RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
       const double length = glm::length(there);
       if (!(length > 0.0)) continue;
       const double bend = glm::dot(there / length - normal, step);
-      moved[v] += step - 0.5 * bend * normal;
+      const glm::dvec3 to = mesh.positions[v] + step - 0.5 * bend * normal;
+      if (!finite(to)) continue;  // coordinates near the double's range
+      moved[v] = to;
       movedNormals[v] = there / length;
     }
     // Moves that turn a triangle over are undone, its corners kept where
-    // they were, until none does (at worst every vertex is kept).
+    // they were, until none does (at worst every vertex is kept: a
+    // triangle is only found turned over while one of its corners moved).
+    std::vector<uint8_t> isMoved(n), over(mesh.triangles.size());
+    for (size_t v = 0; v < n; ++v) isMoved[v] = moved[v] != mesh.positions[v];
     summary.keptVertices = 0;
-    for (;;) {
-      std::vector<size_t> over;
-#pragma omp parallel
-      {
-        std::vector<size_t> mine;
-#pragma omp for schedule(static) nowait
-        for (size_t k = 0; k < mesh.triangles.size(); ++k)
-          if (turnedOver(mesh.positions, moved, mesh.triangles[k])) mine.push_back(k);
-#pragma omp critical
-        over.insert(over.end(), mine.begin(), mine.end());
+    for (bool undone = true; undone;) {
+#pragma omp parallel for schedule(static)
+      for (size_t k = 0; k < mesh.triangles.size(); ++k) {
+        const glm::uvec3& t = mesh.triangles[k];
+        over[k] = (isMoved[t.x] || isMoved[t.y] || isMoved[t.z]) && turnedOver(mesh.positions, moved, t);
       }
-      if (over.empty()) break;
-      for (const size_t k : over)
+      undone = false;
+      for (size_t k = 0; k < over.size(); ++k) {
+        if (!over[k]) continue;
         for (const uint32_t v : {mesh.triangles[k].x, mesh.triangles[k].y, mesh.triangles[k].z})
-          if (moved[v] != mesh.positions[v]) moved[v] = mesh.positions[v], ++summary.keptVertices;
+          if (isMoved[v]) moved[v] = mesh.positions[v], isMoved[v] = 0, ++summary.keptVertices, undone = true;
+      }
     }
     summary.movedVertices = 0;
     for (size_t v = 0; v < n; ++v) {
-      if (moved[v] == mesh.positions[v]) continue;
+      if (!isMoved[v]) continue;
       ++summary.movedVertices;
       if (hasNormals) mesh.normals[v] = glm::vec3(movedNormals[v]);
     }

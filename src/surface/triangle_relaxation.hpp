@@ -27,14 +27,18 @@ struct RelaxationSummary {
 };
 
 // `rounds` rounds of tangential relaxation: half the way to the centre of
-// the vertex's neighbours within the plane of its triangles, then back onto
-// the surface by the bend that the normals show (to second order). The
-// triangles are not changed, only the positions, so a closed manifold stays
-// one. A vertex on an open or non-manifold edge stays put; a move that
-// would turn a triangle over (or flatten it) is not made. The mesh's
-// normals, where it has them (marching cubes': the field's gradient), are
-// the surface's for the bend and move with their vertices, half the way to
-// their neighbours'.
+// the vertex's neighbours within its tangent plane, then back onto the
+// surface by the bend that the normals show (to second order). The normal
+// is the mesh's where it has them (marching cubes': the field's gradient),
+// else its triangles' (area-weighted); the mesh's normals move with their
+// vertices, half the way to their neighbours'. The triangles are not
+// changed, only the positions, so a closed manifold stays one. A vertex
+// whose triangles do not close around it (on the rim of a hole) stays put;
+// the test, cheap and exact for one open fan, can be fooled by a vertex
+// where several open fans meet, and a vertex where closed fans touch
+// moves, neither of which marching cubes makes. A move that would turn a
+// triangle over (or flatten it) is not made. Throws std::invalid_argument
+// on a position that is not finite.
 RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds);
 
 }  // namespace lbmshape

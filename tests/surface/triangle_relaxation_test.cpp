@@ -97,7 +97,7 @@ TEST(TriangleRelaxation, EvensOutMarchingCubesSliversAndKeepsTheSphere)
   EXPECT_NEAR(topology.signedVolume, analyzeTopology(before).signedVolume, 1e-3 * analyzeTopology(before).signedVolume);
 }
 
-TEST(TriangleRelaxation, NoRoundsChangeNothingAndFewerThanNoneAreAMistake)
+TEST(TriangleRelaxation, NoRoundsChangeNothingAndFewerThanNoneOrANanAreAMistake)
 {
   const GridFrame frame = testing::cubicFrame({17, 17, 17});
   const TriangleMesh before = extractSurface(
@@ -108,6 +108,9 @@ TEST(TriangleRelaxation, NoRoundsChangeNothingAndFewerThanNoneAreAMistake)
   EXPECT_EQ(after.positions, before.positions);
   EXPECT_EQ(after.normals, before.normals);
   EXPECT_THROW(relaxTriangles(after, -1), std::invalid_argument);
+  // A library caller's mesh with a coordinate that is not a number.
+  after.positions[0].x = std::nan("");
+  EXPECT_THROW(relaxTriangles(after, 1), std::invalid_argument);
 }
 
 // A flat sheet of n x n vertices, the inner ones pushed about within it.

@@ -122,7 +122,7 @@ RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
       const double length = glm::length(there);
       if (!(length > 0.0)) continue;
       const double bend = glm::dot(there / length - normal, step);
-      const glm::dvec3 to = mesh.positions[v] + step - 0.5 * bend * normal;
+      const glm::dvec3 to = mesh.positions[v] + (step - 0.5 * bend * normal);
       if (!finite(to)) continue;  // coordinates near the double's range
       moved[v] = to;
       movedNormals[v] = there / length;

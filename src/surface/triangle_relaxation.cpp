@@ -7,29 +7,15 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/mesh_geometry.hpp"
+
 namespace lbmshape {
 namespace {
 
+// triangleAreaVector() for positions that are not yet the mesh's.
 glm::dvec3 crossOf(const std::vector<glm::dvec3>& p, const glm::uvec3& t)
 {
   return glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]);
-}
-
-// Per vertex, the sum of its triangles' (area-weighted) normals, as unit
-// vectors (zero where they cancel).
-std::vector<glm::dvec3> areaWeightedNormals(const TriangleMesh& mesh)
-{
-  std::vector<glm::dvec3> sums(mesh.vertexCount(), glm::dvec3(0.0));
-  for (const glm::uvec3& t : mesh.triangles) {
-    const glm::dvec3 n = crossOf(mesh.positions, t);
-    sums[t.x] += n, sums[t.y] += n, sums[t.z] += n;
-  }
-#pragma omp parallel for schedule(static)
-  for (size_t v = 0; v < sums.size(); ++v) {
-    const double length = glm::length(sums[v]);
-    sums[v] = length > 0.0 ? sums[v] / length : glm::dvec3(0.0);
-  }
-  return sums;
 }
 
 // Whether each vertex is surrounded by its triangles: the edges opposite it
@@ -66,8 +52,6 @@ bool turnedOver(const std::vector<glm::dvec3>& before, const std::vector<glm::dv
   return !(glm::dot(was, crossOf(after, t)) > 0.0);
 }
 
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
 }  // namespace
 
 RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
@@ -76,7 +60,7 @@ RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
   RelaxationSummary summary;
   if (rounds == 0 || mesh.triangles.empty()) return summary;
   for (const glm::dvec3& p : mesh.positions)
-    if (!finite(p)) throw std::invalid_argument("relaxation needs finite vertex positions");
+    if (!isFinite(p)) throw std::invalid_argument("relaxation needs finite vertex positions");
   const size_t n = mesh.vertexCount();
   const bool hasNormals = mesh.normals.size() == n;
   const std::vector<uint8_t> surrounded = surroundedVertices(mesh);
@@ -123,7 +107,7 @@ RelaxationSummary relaxTriangles(TriangleMesh& mesh, int rounds)
       if (!(length > 0.0)) continue;
       const double bend = glm::dot(there / length - normal, step);
       const glm::dvec3 to = mesh.positions[v] + (step - 0.5 * bend * normal);
-      if (!finite(to)) continue;  // coordinates near the double's range
+      if (!isFinite(to)) continue;  // coordinates near the double's range
       moved[v] = to;
       movedNormals[v] = there / length;
     }

@@ -173,20 +173,7 @@ TEST(DenoiseCli, TheTrianglesAreRelaxedUnlessRelaxIsZero)
   // The same triangles, moved (TriangleRelaxation.* checks them one by one
   // in a process; these are two).
   ASSERT_EQ(raw.triangleCount(), relaxed.triangleCount()) << reports["0"] << "\n" << reports["default"];
-  auto slivers = [](const TriangleMesh& m) {
-    size_t count = 0;
-    for (const glm::uvec3& t : m.triangles) {
-      const glm::dvec3 p[3] = {m.positions[t.x], m.positions[t.y], m.positions[t.z]};
-      for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 u = glm::normalize(p[(k + 1) % 3] - p[k]), v = glm::normalize(p[(k + 2) % 3] - p[k]);
-        if (glm::dot(u, v) > std::cos(10.0 * std::numbers::pi / 180.0)) {
-          ++count;
-          break;
-        }
-      }
-    }
-    return count;
-  };
+  auto slivers = [](const TriangleMesh& m) { return testing::triangleCountWithAngleUnder(m, 10.0); };
   EXPECT_GT(slivers(raw), raw.triangleCount() / 50);
   EXPECT_LT(slivers(relaxed), slivers(raw) / 5);
   // The surface stayed: the two lie within a hundredth of a voxel of each

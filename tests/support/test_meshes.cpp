@@ -76,4 +76,21 @@ TriangleMesh scaled(TriangleMesh mesh, double scale, glm::dvec3 centre)
   return mesh;
 }
 
+double smallestAngle(const TriangleMesh& mesh, const glm::uvec3& triangle)
+{
+  const glm::dvec3 p[3] = {mesh.positions[triangle.x], mesh.positions[triangle.y], mesh.positions[triangle.z]};
+  double smallest = 180.0;
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec3 u = glm::normalize(p[(k + 1) % 3] - p[k]), v = glm::normalize(p[(k + 2) % 3] - p[k]);
+    smallest = std::min(smallest, std::acos(std::clamp(glm::dot(u, v), -1.0, 1.0)) * 180.0 / std::numbers::pi);
+  }
+  return smallest;
+}
+
+size_t triangleCountWithAngleUnder(const TriangleMesh& mesh, double degrees)
+{
+  return size_t(std::count_if(mesh.triangles.begin(), mesh.triangles.end(),
+                              [&](const glm::uvec3& t) { return smallestAngle(mesh, t) < degrees; }));
+}
+
 }  // namespace lbmshape::testing

@@ -26,4 +26,9 @@ TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b);
 // Every position p becomes centre + scale * (p - centre).
 TriangleMesh scaled(TriangleMesh mesh, double scale, glm::dvec3 centre = glm::dvec3(0.0));
 
+// The smallest of a triangle's three angles, in degrees.
+double smallestAngle(const TriangleMesh& mesh, const glm::uvec3& triangle);
+// The triangles with an angle under `degrees`: marching cubes' slivers.
+size_t triangleCountWithAngleUnder(const TriangleMesh& mesh, double degrees);
+
 }  // namespace lbmshape::testing

@@ -10,6 +10,7 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "support/implicit_fields.hpp"
+#include "support/test_meshes.hpp"
 #include "surface/marching_cubes.hpp"
 #include "surface/triangle_relaxation.hpp"
 
@@ -18,22 +19,11 @@ namespace {
 
 constexpr double degrees = 180.0 / std::numbers::pi;
 
-double smallestAngle(const TriangleMesh& mesh, const glm::uvec3& t)
-{
-  const glm::dvec3 p[3] = {mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]};
-  double smallest = 180.0;
-  for (int k = 0; k < 3; ++k) {
-    const glm::dvec3 u = glm::normalize(p[(k + 1) % 3] - p[k]), v = glm::normalize(p[(k + 2) % 3] - p[k]);
-    smallest = std::min(smallest, std::acos(std::clamp(glm::dot(u, v), -1.0, 1.0)) * degrees);
-  }
-  return smallest;
-}
+using testing::smallestAngle;
 
 double sliverFraction(const TriangleMesh& mesh)
 {
-  size_t slivers = 0;
-  for (const glm::uvec3& t : mesh.triangles) slivers += smallestAngle(mesh, t) < 10.0;
-  return double(slivers) / double(mesh.triangleCount());
+  return double(testing::triangleCountWithAngleUnder(mesh, 10.0)) / double(mesh.triangleCount());
 }
 
 // The mean angle, in degrees, between each triangle's normal and the

@@ -66,8 +66,16 @@ DirectedDistance distanceByField(const Field& field, const std::vector<glm::dvec
   return d;
 }
 
+// The order of a frame's probes: by the cells' index in the grid.
+auto byGridIndex(const Extent3& extent)
+{
+  return [&extent](const glm::ivec3& a, const glm::ivec3& b) {
+    return extent.index(a.x, a.y, a.z) < extent.index(b.x, b.y, b.z);
+  };
+}
+
 // A field read through a frame's probes (the cells distanceByField reads,
-// sorted by grid index, and their values).
+// in byGridIndex order, and their values).
 class ProbedField {
 public:
   ProbedField(const Extent3& extent, const std::vector<glm::ivec3>& cells, const std::vector<float>& values)
@@ -78,10 +86,7 @@ public:
   const Extent3& extent() const { return extent_; }
   float at(int x, int y, int z) const
   {
-    const auto later = [this](const glm::ivec3& a, const glm::ivec3& b) {
-      return extent_.index(a.x, a.y, a.z) < extent_.index(b.x, b.y, b.z);
-    };
-    const auto found = std::lower_bound(cells_.begin(), cells_.end(), glm::ivec3(x, y, z), later);
+    const auto found = std::lower_bound(cells_.begin(), cells_.end(), glm::ivec3(x, y, z), byGridIndex(extent_));
     if (found == cells_.end() || *found != glm::ivec3(x, y, z)) throw std::logic_error("a cell that was not probed");
     return values_[size_t(found - cells_.begin())];
   }
@@ -116,9 +121,7 @@ MorphFrameReport::MorphFrameReport(TriangleMesh targetLevel, const GridFrame& gr
   CellRecorder recorder{grid_.extent, {}};
   distanceByField(recorder, targetPoints_);
   probeCells_ = std::move(recorder.cells);
-  const Extent3& e = grid_.extent;
-  std::sort(probeCells_.begin(), probeCells_.end(),
-            [&e](const glm::ivec3& a, const glm::ivec3& b) { return e.index(a.x, a.y, a.z) < e.index(b.x, b.y, b.z); });
+  std::sort(probeCells_.begin(), probeCells_.end(), byGridIndex(grid_.extent));
   probeCells_.erase(std::unique(probeCells_.begin(), probeCells_.end()), probeCells_.end());
 }
 

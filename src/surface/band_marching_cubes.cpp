@@ -270,7 +270,8 @@ TriangleMesh extractSurface(const BandField& field, const GridFrame& frame, floa
   for (size_t v = 0; v < keys.size(); ++v) {
     const int axis = int(keys[v] % 3);
     const uint64_t cell = keys[v] / 3;
-    const glm::ivec3 a(int(cell % e.nx), int(cell / e.nx % e.ny), int(cell / e.nx / e.ny));
+    const auto [x, y, z] = e.cellAt(cell);
+    const glm::ivec3 a(x, y, z);
     glm::ivec3 b = a;
     ++b[axis];
     const float fa = field.at(a.x, a.y, a.z), fb = field.at(b.x, b.y, b.z);

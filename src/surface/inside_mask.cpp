@@ -31,7 +31,7 @@ InsideMask::InsideMask(const Volume& field, float isovalue)
   if (total == 0) return;
   for (size_t i = 0; i < field.size(); ++i)
     if (!std::isfinite(field[i])) {
-      const size_t x = i % e.nx, y = i / e.nx % e.ny, z = i / (size_t(e.nx) * e.ny);
+      const auto [x, y, z] = e.cellAt(i);
       std::ostringstream message;
       message << "the field has " << total << " non-finite values (the first at cell " << x << ", " << y << ", " << z
               << "), so it has no surface to extract";

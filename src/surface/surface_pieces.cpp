@@ -93,8 +93,8 @@ void listSlot(const BandField& field, float iso, const BandField* base, float ne
 
 glm::ivec3 cellOf(uint64_t index, const Extent3& e)
 {
-  return glm::ivec3(int(index % uint64_t(e.nx)), int(index / uint64_t(e.nx) % uint64_t(e.ny)),
-                    int(index / uint64_t(e.nx) / uint64_t(e.ny)));
+  const auto [x, y, z] = e.cellAt(size_t(index));
+  return glm::ivec3(x, y, z);
 }
 
 }  // namespace

@@ -86,9 +86,15 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
       "--shrink", [a](int64_t) { a->options.keepVolume = false; },
       "Leave the result shrunk, as mean-curvature flow and the paper's scheme do, instead of "
       "shifting it to enclose the input's volume");
-  cmd->add_flag("--twicing", a->options.twicing,
-                "Smooth, then smooth what the smoothing took away and add it back (Tukey's twicing): keeps thin "
-                "parts that smoothing erodes and removes noise as well; about twice the lattice steps");
+  auto* twicing = cmd->add_flag_function(
+      "--twicing", [a](int64_t) { a->options.twicing = true; },
+      "Smooth, then smooth what the smoothing took away and add it back (Tukey's twicing): keeps thin parts that "
+      "smoothing erodes and removes noise as well; about twice the lattice steps (default: where the noise needs 4 "
+      "steps or more)");
+  cmd->add_flag_function(
+         "--no-twicing", [a](int64_t) { a->options.twicing = false; },
+         "Never twice the smoothing, however many steps the noise needs")
+      ->excludes(twicing);
   cmd->add_option("--relax", a->options.relaxRounds,
                   "Rounds of tangential relaxation of the result's triangles: marching cubes' slivers evened out, "
                   "the surface left where it is (0: marching cubes' own triangles)")

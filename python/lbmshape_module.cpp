@@ -95,7 +95,8 @@ Smoothing smoothingNamed(const std::string& name)
 
 py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps,
                    std::optional<double> radius, double gamma, const std::string& smoothing, bool keepVolume,
-                   bool twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report, int relax)
+                   std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report,
+                   int relax)
 {
   DenoiseOptions options;
   options.grid.resolution = res;
@@ -228,7 +229,7 @@ PYBIND11_MODULE(lbmshape, m)
 
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
         py::arg("steps") = py::none(), py::arg("radius") = py::none(), py::arg("gamma") = 0.2,
-        py::arg("smoothing") = "preserve-features", py::arg("keep_volume") = true, py::arg("twicing") = false,
+        py::arg("smoothing") = "preserve-features", py::arg("keep_volume") = true, py::arg("twicing") = py::none(),
         py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
         // Last: a call that passes the ones before it by position keeps its meaning.
         py::arg("relax") = defaultRelaxationRounds,

@@ -72,10 +72,14 @@ class Denoise(unittest.TestCase):
         self.assertEqual(report["smoothing"], "preserve-features")  # the default
         self.assertEqual(report["grid"]["size"], [40, 40, 40])
         self.assertIn("lbm", report["ms"])
-        self.assertFalse(report["twicing"])  # the default
+        self.assertFalse(report["twicing"])  # given steps: plain unless told
+        self.assertEqual(report["twicing_chosen"], "auto")
         self.assertEqual(report["relax_rounds"], 2)  # the default
         _, _, twiced = lbmshape.denoise(v, f, res=40, steps=3, twicing=True, report=True)
         self.assertTrue(twiced["twicing"])
+        self.assertEqual(twiced["twicing_chosen"], "given")
+        _, _, plain = lbmshape.denoise(v, f, res=40, twicing=False, report=True)
+        self.assertFalse(plain["twicing"])
         self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
         _, _, by_radius = lbmshape.denoise(v, f, res=40, radius=0.1, report=True)
         self.assertEqual(by_radius["steps_chosen"], "radius")

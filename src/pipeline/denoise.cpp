@@ -109,6 +109,8 @@ struct SmoothedField {
   int steps = 0;
   int stepsRun = 0;
   std::vector<double> speeds;  // --steps auto's readings, voxels a step (smoothing_stop.hpp)
+  bool twiced = false;
+  float twicingWeight = 1.0f;  // of what the second smoothing took, given back (twicing.hpp)
 };
 
 // What --steps auto reads from each kind of lattice. The grid computes the
@@ -171,55 +173,68 @@ int runUntilTheSpeedLevelsOff(Solver& solver, Reading& reading, Progress& progre
   return mostSteps + 1;
 }
 
-// --steps auto without twicing: the field one step before the speed
-// levelled off, which the lattice still holds (or that of mostSteps).
+// The smoothing S of `steps` steps twiced (twicing.hpp) with `weight`, the
+// lattice at or before step `steps`: S X at step `steps`, S^2 X at twice
+// as many.
 template <class Solver, class Field>
-SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress)
+SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& progress, float weight = 1.0f)
+{
+  InterruptibleSteps stepper(solver);
+  stepper.advanceTo(steps, stepsDone(solver), &progress);
+  Field once = solver.field();
+  stepper.advanceTo(2 * steps, stepsDone(solver), &progress);
+  twice(once.values(), solver.field().values(), weight);
+  return {std::move(once), steps, 2 * steps, {}, true, weight};
+}
+
+// When --steps auto twices the smoothing: never (--no-twicing, and the
+// smoothings other than the default), always (--twicing), or where the
+// noise needs twicingFromSteps plain steps or more (twicing.hpp).
+enum class Twice { Never, Always, WherePays };
+
+// --steps auto: plain, the field one step before the speed levelled off,
+// which the lattice still holds (or that of mostSteps); twiced, S of
+// twicedSteps(n) steps, n the step at which plain smoothing's speed
+// levelled off (twice the steps it keeps).
+template <class Solver, class Field>
+SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress, Twice when)
 {
   auto reading = readingOf(solver, x0);
   x0 = Field();
   std::vector<double> speeds;
   const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
+  const int kept = std::min(levelled - 1, smoothing_stop::mostSteps);
+  if (when == Twice::Always || (when == Twice::WherePays && kept >= twicingFromSteps)) {
+    const float weight = when == Twice::Always ? 1.0f : automaticTwicingWeight;
+    SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress, weight);
+    twiced.speeds = std::move(speeds);
+    return twiced;
+  }
   const int stepsRun = std::min(levelled, smoothing_stop::mostSteps) + reading.lag;
   if (levelled > smoothing_stop::mostSteps)
     return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun, std::move(speeds)};
   return {reading.fieldBeforeIt(), levelled - 1, stepsRun, std::move(speeds)};
 }
 
-// The smoothing S of `steps` steps twiced (twicing.hpp), the lattice at or
-// before step `steps`: S X at step `steps`, S^2 X at twice as many.
-template <class Solver, class Field>
-SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& progress)
+// Whether the smoothing is twiced whatever the noise (--twicing), and
+// whether it may be: told, or unset with the default smoothing's steps
+// chosen by the noise (Twice::WherePays).
+bool twicedAlways(const DenoiseOptions& o) { return o.twicing.value_or(false); }
+bool mayBeTwiced(const DenoiseOptions& o)
 {
-  InterruptibleSteps stepper(solver);
-  stepper.advanceTo(steps, stepsDone(solver), &progress);
-  Field once = solver.field();
-  stepper.advanceTo(2 * steps, stepsDone(solver), &progress);
-  twice(once.values(), solver.field().values());
-  return {std::move(once), steps, 2 * steps, {}};
-}
-
-// --steps auto with twicing: S of twicedSteps(n) steps, n the step at which
-// plain smoothing's speed levelled off (twice the steps it keeps).
-template <class Solver, class Field>
-SmoothedField<Field> twicedStepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress)
-{
-  auto reading = readingOf(solver, x0);
-  x0 = Field();
-  std::vector<double> speeds;
-  const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
-  SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress);
-  twiced.speeds = std::move(speeds);
-  return twiced;
+  return o.twicing.value_or(!o.steps && o.smoothing == Smoothing::PreserveFeatures);
 }
 
 // The most steps of the smoothing S (twiced, the lattice runs twice as
-// many), not counting the edge-finding copy's.
-int mostSmootherSteps(const DenoiseOptions& o)
+// many), not counting the edge-finding copy's; `twiced`: if it may be.
+int mostSmootherSteps(const DenoiseOptions& o, bool twiced)
 {
-  return o.steps.value_or(o.twicing ? twicedSteps(smoothing_stop::mostSteps + 1) : smoothing_stop::mostSteps);
+  return o.steps.value_or(twiced ? twicedSteps(smoothing_stop::mostSteps + 1) : smoothing_stop::mostSteps);
 }
-int mostSmoothingSteps(const DenoiseOptions& o) { return (o.twicing ? 2 : 1) * mostSmootherSteps(o); }
+int mostSmoothingSteps(const DenoiseOptions& o)
+{
+  return (mayBeTwiced(o) ? 2 : 1) * mostSmootherSteps(o, mayBeTwiced(o));
+}
 
 // The steps of one start of `solver` from `x0`: --steps of them, or as many
 // as the noise needs (smoothing_stop.hpp); twiced with --twicing. `x0` is
@@ -231,13 +246,14 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
   progress.beginPart(part, mostSmoothingSteps(o), share);
   if (o.steps) {
     x0 = Field();
-    if (o.twicing) return twiceTheSmoothing<Solver, Field>(solver, *o.steps, progress);
+    if (twicedAlways(o)) return twiceTheSmoothing<Solver, Field>(solver, *o.steps, progress);
     InterruptibleSteps(solver).advanceTo(*o.steps, stepsDone(solver), &progress);
     return {solver.field(), *o.steps, *o.steps, {}};
   }
-  SmoothedField<Field> smoothed = o.twicing ? twicedStepsTheNoiseNeeds(solver, std::move(x0), progress)
-                                            : stepsTheNoiseNeeds(solver, std::move(x0), progress);
-  log::verbose("the noise is gone after " + std::to_string(smoothed.steps) + " steps" + (o.twicing ? ", twiced" : ""));
+  const Twice when = twicedAlways(o) ? Twice::Always : mayBeTwiced(o) ? Twice::WherePays : Twice::Never;
+  SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress, when);
+  log::verbose("the noise is gone after " + std::to_string(smoothed.steps) + " steps" +
+               (smoothed.twiced ? ", twiced" : ""));
   return smoothed;
 }
 
@@ -282,8 +298,11 @@ double bandHalfWidth(const DenoiseOptions& o)
 {
   // Twiced, the band is the one S's own steps need, not S^2's: measured,
   // results on bands from that width to S^2's lie within 1e-5 voxel of
-  // each other (docs/denoising.md, "Twicing").
-  const double smoothing = streamingHalfWidth(o.gamma, mostSmootherSteps(o));
+  // each other (docs/denoising.md, "Twicing"). Twiced where it pays, the
+  // band is plain smoothing's: 7 voxels with the edge-finding copy's, the
+  // narrowest of those widths, so that a clean mesh streams no more cells
+  // for a twicing it will not get.
+  const double smoothing = streamingHalfWidth(o.gamma, mostSmootherSteps(o, twicedAlways(o)));
   if (!findsEdges(o)) return smoothing;
   const FeatureProbe probe = featureProbe();
   return std::max(smoothing, streamingHalfWidth(probe.gamma, probe.steps));
@@ -299,6 +318,8 @@ struct Smoothed {
   double volumeShift = 0;          // voxels the field was shifted by to keep the volume
   bool distancesOnDevice = false;  // where the signed distance's distances were computed (--sdf)
   std::vector<double> speeds;      // --steps auto's readings (SmoothedField)
+  bool twiced = false;             // whether the smoothing was twiced
+  double twicingWeight = 1.0;      // and with what weight (twicing.hpp)
 };
 
 // The largest level-set shift that keeping the volume may apply, in voxels:
@@ -340,7 +361,9 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
           smoothed.stepsRun,
           shift,
           false,
-          std::move(smoothed.speeds)};
+          std::move(smoothed.speeds),
+          smoothed.twiced,
+          smoothed.twicingWeight};
 }
 
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
@@ -380,7 +403,9 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
           smoothed.stepsRun,
           shift,
           distanceStats.onDevice,
-          std::move(smoothed.speeds)};
+          std::move(smoothed.speeds),
+          smoothed.twiced,
+          smoothed.twicingWeight};
 }
 
 }  // namespace
@@ -484,7 +509,9 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"steps_run", smoothed.stepsRun},
       {"surface_speeds", smoothed.speeds},
       {"smoothing", smoothingName(o.smoothing)},
-      {"twicing", o.twicing},
+      {"twicing", smoothed.twiced},
+      {"twicing_chosen", o.twicing ? "given" : "auto"},
+      {"twicing_weight", smoothed.twiced ? nlohmann::json(smoothed.twicingWeight) : nlohmann::json(nullptr)},
       {"relax_rounds", o.relaxRounds},
       {"keep_volume", o.keepVolume},
       {"volume_shift_voxels", smoothed.volumeShift},

@@ -42,8 +42,9 @@ struct DenoiseOptions {
   std::optional<double> radius;
   double gamma = 0.2;  // voxels^2 per step
   // Feature-preserving by default: ahead of OpenVDB's mean-curvature filter
-  // more often than isotropic smoothing, which rounds sharp edges (29 of 33
-  // noisy cases; docs/denoising.md, "How good it is").
+  // more often than isotropic smoothing, which rounds sharp edges (with
+  // twicing where it pays, 32 of 33 noisy cases; docs/denoising.md, "How
+  // good it is").
   Smoothing smoothing = Smoothing::PreserveFeatures;
   // The smoothed field shifted by a constant so that it encloses the
   // volume the input did (surface/volume_keeping.hpp); off: the paper's
@@ -51,8 +52,11 @@ struct DenoiseOptions {
   bool keepVolume = true;
   // The smoothing twiced, 2 S X - S^2 X (twicing.hpp): thin parts that
   // mean curvature flow erodes kept, noise removed as well or better, at
-  // about twice the lattice steps (--twicing; docs/denoising.md).
-  bool twicing = false;
+  // about twice the lattice steps (--twicing, --no-twicing;
+  // docs/denoising.md). Unset: twiced where it pays, when the default
+  // smoothing's steps are chosen and the noise needs at least
+  // twicingFromSteps of them (twicing.hpp).
+  std::optional<bool> twicing;
   // Rounds of tangential relaxation of marching cubes' triangles
   // (surface/triangle_relaxation.hpp): the slivers evened out, the surface
   // left where it is; 0: marching cubes' own triangles (--relax).

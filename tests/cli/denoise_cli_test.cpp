@@ -286,7 +286,18 @@ TEST(DenoiseCli, TwicingIsAFlagThatDoublesTheSmoothingsSteps)
     EXPECT_EQ(j["twicing"], twicing);
     EXPECT_EQ(j["steps"], 3);
     EXPECT_EQ(j["steps_run"], twicing ? 6 : 3);
+    EXPECT_EQ(j["twicing_chosen"], twicing ? "given" : "auto");
   }
+  // --no-twicing: never twiced (a choice, not the default's automatic one);
+  // told both ways, a usage error.
+  testing::CliResult never = testing::runLbmshape(
+      {"denoise", input, output, "--res", "24", "--isotropic", "--no-twicing", "--json", "--force"});
+  ASSERT_EQ(never.exitCode, 0) << never.err;
+  EXPECT_EQ(nlohmann::json::parse(never.out)["twicing"], false);
+  EXPECT_EQ(nlohmann::json::parse(never.out)["twicing_chosen"], "given");
+  testing::CliResult both =
+      testing::runLbmshape({"denoise", input, output, "--res", "24", "--twicing", "--no-twicing", "--force"});
+  EXPECT_EQ(both.exitCode, 2) << both.err;
 }
 
 TEST(DenoiseCli, WritesValidGltfAndReportsJson)

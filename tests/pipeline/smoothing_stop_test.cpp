@@ -60,6 +60,7 @@ protected:
     options.grid.resolution = 64;
     options.steps = steps;
     options.dense = dense;
+    options.twicing = false;  // the rule's own steps (twiced, the report gives S's: twicing_test.cpp)
     return denoiseFile(folder.path() / "in.obj", folder.path() / "out.obj", options, device).report;
   }
 };

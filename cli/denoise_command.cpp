@@ -60,8 +60,9 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
   auto* steps = cmd->add_option(
       "--steps", a->steps,
-      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7; the paper's runs: 7); with "
-      "--twicing the smoothing's steps, the lattice running twice as many");
+      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7, twiced with 8 to 11 where it "
+      "needs 4 or more; the paper's runs: 7); with --twicing the smoothing's steps, the lattice running twice as "
+      "many");
   a->stepsOption = steps;
   a->radiusOption = cmd->add_option("--radius", a->radius,
                                     "Smoothing radius in the mesh's units, instead of --steps: the steps whose "
@@ -89,8 +90,8 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   auto* twicing = cmd->add_flag_function(
       "--twicing", [a](int64_t) { a->options.twicing = true; },
       "Smooth, then smooth what the smoothing took away and add it back (Tukey's twicing): keeps thin parts that "
-      "smoothing erodes and removes noise as well; about twice the lattice steps (default: where the noise needs 4 "
-      "steps or more)");
+      "smoothing erodes and removes noise as well; about twice the lattice steps (default: the default smoothing "
+      "with its steps chosen by the noise is twiced, with a weight of 0.75, where the noise needs 4 steps or more)");
   cmd->add_flag_function(
          "--no-twicing", [a](int64_t) { a->options.twicing = false; },
          "Never twice the smoothing, however many steps the noise needs")

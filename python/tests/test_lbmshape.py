@@ -80,6 +80,7 @@ class Denoise(unittest.TestCase):
         self.assertEqual(twiced["twicing_chosen"], "given")
         _, _, plain = lbmshape.denoise(v, f, res=40, twicing=False, report=True)
         self.assertFalse(plain["twicing"])
+        self.assertEqual(plain["twicing_chosen"], "given")
         self.assertEqual(twiced["steps_run"], report["steps_run"] + 3)
         _, _, by_radius = lbmshape.denoise(v, f, res=40, radius=0.1, report=True)
         self.assertEqual(by_radius["steps_chosen"], "radius")

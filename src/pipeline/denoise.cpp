@@ -205,8 +205,9 @@ SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& prog
   const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
   const int kept = std::min(levelled - 1, smoothing_stop::mostSteps);
   if (when == Twice::Always || (when == Twice::WherePays && kept >= twicingFromSteps)) {
-    const float weight = when == Twice::Always ? 1.0f : automaticTwicingWeight;
-    SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress, weight);
+    const bool always = when == Twice::Always;
+    SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress,
+                                                                   always ? 1.0f : automaticTwicingWeight);
     twiced.speeds = std::move(speeds);
     return twiced;
   }
@@ -237,8 +238,8 @@ int mostSmoothingSteps(const DenoiseOptions& o)
 }
 
 // The steps of one start of `solver` from `x0`: --steps of them, or as many
-// as the noise needs (smoothing_stop.hpp); twiced with --twicing. `x0` is
-// let go once it is not needed.
+// as the noise needs (smoothing_stop.hpp); twiced with --twicing or where
+// it pays. `x0` is let go once it is not needed.
 template <class Solver, class Field>
 SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o, Progress& progress,
                               const char* part = "steps", double share = 1.0)
@@ -298,11 +299,11 @@ double bandHalfWidth(const DenoiseOptions& o)
 {
   // Twiced, the band is the one S's own steps need, not S^2's: measured,
   // results on bands from that width to S^2's lie within 1e-5 voxel of
-  // each other (docs/denoising.md, "Twicing"). Twiced where it pays, the
-  // band is plain smoothing's: 7 voxels with the edge-finding copy's, the
-  // narrowest of those widths, so that a clean mesh streams no more cells
-  // for a twicing it will not get.
-  const double smoothing = streamingHalfWidth(o.gamma, mostSmootherSteps(o, twicedAlways(o)));
+  // each other (docs/denoising.md, "Twicing"). It is chosen before the
+  // steps are known, so where the smoothing may be twiced it is the one
+  // the most steps S may take need (8 voxels at the default gamma, 7 for
+  // plain smoothing: about 7 % more cells).
+  const double smoothing = streamingHalfWidth(o.gamma, mostSmootherSteps(o, mayBeTwiced(o)));
   if (!findsEdges(o)) return smoothing;
   const FeatureProbe probe = featureProbe();
   return std::max(smoothing, streamingHalfWidth(probe.gamma, probe.steps));

@@ -60,7 +60,7 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
   auto* steps = cmd->add_option(
       "--steps", a->steps,
-      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7, twiced with 8 to 11 where it "
+      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7, twiced with 8 to 14 where it "
       "needs 4 or more; the paper's runs: 7); with --twicing the smoothing's steps, the lattice running twice as "
       "many");
   a->stepsOption = steps;

@@ -109,8 +109,8 @@ struct SmoothedField {
   int steps = 0;
   int stepsRun = 0;
   std::vector<double> speeds;  // --steps auto's readings, voxels a step (smoothing_stop.hpp)
-  bool twiced = false;
-  float twicingWeight = 1.0f;  // of what the second smoothing took, given back (twicing.hpp)
+  // Twiced: the weight of what the second smoothing took, given back (twicing.hpp).
+  std::optional<float> twicingWeight;
 };
 
 // What --steps auto reads from each kind of lattice. The grid computes the
@@ -184,7 +184,7 @@ SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& prog
   Field once = solver.field();
   stepper.advanceTo(2 * steps, stepsDone(solver), &progress);
   twice(once.values(), solver.field().values(), weight);
-  return {std::move(once), steps, 2 * steps, {}, true, weight};
+  return {std::move(once), steps, 2 * steps, {}, weight};
 }
 
 // When --steps auto twices the smoothing: never (--no-twicing, and the
@@ -254,7 +254,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
   const Twice when = twicedAlways(o) ? Twice::Always : mayBeTwiced(o) ? Twice::WherePays : Twice::Never;
   SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress, when);
   log::verbose("the noise is gone after " + std::to_string(smoothed.steps) + " steps" +
-               (smoothed.twiced ? ", twiced" : ""));
+               (smoothed.twicingWeight ? ", twiced" : ""));
   return smoothed;
 }
 
@@ -312,15 +312,14 @@ double bandHalfWidth(const DenoiseOptions& o)
 // The lattice stages of a denoise: signed distance, smoothing, surface.
 struct Smoothed {
   TriangleMesh mesh;
-  nlohmann::json lattice;          // what the lattice held: cells, bytes
-  size_t cells = 0;                // cells updated per step
-  int steps = 0;                   // the steps whose field was kept (the last start's)
-  int stepsRun = 0;                // the steps the lattice ran for it
-  double volumeShift = 0;          // voxels the field was shifted by to keep the volume
-  bool distancesOnDevice = false;  // where the signed distance's distances were computed (--sdf)
-  std::vector<double> speeds;      // --steps auto's readings (SmoothedField)
-  bool twiced = false;             // whether the smoothing was twiced
-  double twicingWeight = 1.0;      // and with what weight (twicing.hpp)
+  nlohmann::json lattice;              // what the lattice held: cells, bytes
+  size_t cells = 0;                    // cells updated per step
+  int steps = 0;                       // the steps whose field was kept (the last start's)
+  int stepsRun = 0;                    // the steps the lattice ran for it
+  double volumeShift = 0;              // voxels the field was shifted by to keep the volume
+  bool distancesOnDevice = false;      // where the signed distance's distances were computed (--sdf)
+  std::vector<double> speeds;          // --steps auto's readings (SmoothedField)
+  std::optional<float> twicingWeight;  // twiced, with this weight (SmoothedField)
 };
 
 // The largest level-set shift that keeping the volume may apply, in voxels:
@@ -363,7 +362,6 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
           shift,
           false,
           std::move(smoothed.speeds),
-          smoothed.twiced,
           smoothed.twicingWeight};
 }
 
@@ -405,7 +403,6 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
           shift,
           distanceStats.onDevice,
           std::move(smoothed.speeds),
-          smoothed.twiced,
           smoothed.twicingWeight};
 }
 
@@ -510,9 +507,9 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const std::filesystem::path& 
       {"steps_run", smoothed.stepsRun},
       {"surface_speeds", smoothed.speeds},
       {"smoothing", smoothingName(o.smoothing)},
-      {"twicing", smoothed.twiced},
+      {"twicing", smoothed.twicingWeight.has_value()},
       {"twicing_chosen", o.twicing ? "given" : "auto"},
-      {"twicing_weight", smoothed.twiced ? nlohmann::json(smoothed.twicingWeight) : nlohmann::json(nullptr)},
+      {"twicing_weight", smoothed.twicingWeight ? nlohmann::json(*smoothed.twicingWeight) : nlohmann::json(nullptr)},
       {"relax_rounds", o.relaxRounds},
       {"keep_volume", o.keepVolume},
       {"volume_shift_voxels", smoothed.volumeShift},

@@ -16,10 +16,12 @@ set -u
 results=/tmp/gpu-results
 rm -rf "$results" && mkdir -p "$results"
 save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
-# GPU_PHASES: which phases after the figures run (default all): scale
-# (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline (this
-# build and the baseline alternately), tests.
-wanted() { [[ " ${GPU_PHASES:-scale jobs baseline tests} " == *" $1 "* ]]; }
+# GPU_PHASES: which phases run (default all but probe): figures (bench,
+# the armadillo's denoises and the morph at 256, with their traces), probe
+# (the driver's start, an open scan's distances, a band at 640 traced),
+# scale (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline
+# (this build and the baseline alternately), tests.
+wanted() { [[ " ${GPU_PHASES:-figures scale jobs baseline tests} " == *" $1 "* ]]; }
 trap save EXIT
 root=$PWD
 source .gpu/prepare.sh 2>"$results/prepare.log"
@@ -48,7 +50,18 @@ if [[ -f .gpu/peer.tar.xz ]]; then
 fi
 assets=/work/shared/assets
 
+python3 scripts/make-sphere.py /tmp/sphere.obj
+if wanted probe; then
+  { for run in 1 2 3; do /usr/bin/time -f "lbmshape info: %e s" lbmshape info >/dev/null; done
+    for sdf in device cpu device cpu; do
+      lbmshape -v denoise $assets/bunny_scan.obj /tmp/scan.glb --res 128 --sdf $sdf 2>&1 | grep -E "band distances|^lbmshape: (sdf|lbm|total) "
+    done
+    LBMSHAPE_DEVICE_TRACE=1 timeout 60 lbmshape -v denoise /tmp/sphere.obj /tmp/s640.glb --res 640 --sdf cpu 2>&1 | grep -v "\.\.\. [0-9.]* s$"
+  } >"$results/probe.log" 2>&1
+  save
+fi
 # Figures, on a quiet machine.
+if wanted figures; then
 { nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv; nproc
   timeout 90 lbmshape bench --size 256,256,256 --json -q; echo
   timeout 90 lbmshape bench --band --size 512,512,512 --json -q; echo; } >"$results/bench.log" 2>&1
@@ -61,7 +74,6 @@ for res in 128 256 512; do
   timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/armadillo$res.glb --res $res --json --sdf cpu \
     >"$results/denoise$res-sdf-cpu.json" 2>"$results/denoise$res-sdf-cpu.err"
 done
-python3 scripts/make-sphere.py /tmp/sphere.obj
 # Every compute submission of a denoise at 512 and of the morph at 256,
 # beside the -v stage lines: where the device waits for the host.
 LBMSHAPE_DEVICE_TRACE=1 timeout 30 lbmshape -v denoise $assets/armadillo.obj /tmp/trace512.glb --res 512 \
@@ -75,6 +87,7 @@ timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256
 timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/morph256c --res 256 --align none --force --json \
   --extract cpu >"$results/morph256-extract-cpu.json" 2>"$results/morph256-extract-cpu.err"
 save
+fi
 if wanted scale; then
   timeout 120 scripts/bench-scale.sh $assets/armadillo.obj 3 128 256 512 >"$results/scale.log" 2>&1
 fi

@@ -196,8 +196,8 @@ void GpuContext::recordInto(vk::raii::CommandBuffer& cmd, vk::CommandBufferUsage
 
 void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd)
 {
-  queue.submit(vk::SubmitInfo({}, {}, cmd), *fence_);
   try {
+    queue.submit(vk::SubmitInfo({}, {}, cmd), *fence_);
     if (device_.waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
       throw DeviceError("timed out waiting for the Vulkan device");
   } catch (...) {
@@ -205,7 +205,10 @@ void GpuContext::submitAndWait(vk::raii::Queue& queue, vk::CommandBuffer cmd)
     // not the work: it may still run, and the exception is about to unwind
     // whoever owns the buffers it uses. They may go only once it ends (a
     // morph under `ulimit -v 800000` died of SIGSEGV in lavapipe's shader
-    // threads, its buffers freed under them).
+    // threads, its buffers freed under them). The submission itself may
+    // throw after the work was queued, too: the validation layer starts a
+    // thread of its own at a queue's first submission, which under such a
+    // limit fails with std::system_error (EAGAIN) out of vkQueueSubmit.
     try {
       queue.waitIdle();
     } catch (...) {

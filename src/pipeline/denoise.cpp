@@ -213,8 +213,8 @@ SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& prog
   }
   const int stepsRun = std::min(levelled, smoothing_stop::mostSteps) + reading.lag;
   if (levelled > smoothing_stop::mostSteps)
-    return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun, std::move(speeds)};
-  return {reading.fieldBeforeIt(), levelled - 1, stepsRun, std::move(speeds)};
+    return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun, std::move(speeds), std::nullopt};
+  return {reading.fieldBeforeIt(), levelled - 1, stepsRun, std::move(speeds), std::nullopt};
 }
 
 // Whether the smoothing is twiced whatever the noise (--twicing), and
@@ -249,7 +249,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
     x0 = Field();
     if (twicedAlways(o)) return twiceTheSmoothing<Solver, Field>(solver, *o.steps, progress);
     InterruptibleSteps(solver).advanceTo(*o.steps, stepsDone(solver), &progress);
-    return {solver.field(), *o.steps, *o.steps, {}};
+    return {solver.field(), *o.steps, *o.steps, {}, std::nullopt};
   }
   const Twice when = twicedAlways(o) ? Twice::Always : mayBeTwiced(o) ? Twice::WherePays : Twice::Never;
   SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress, when);

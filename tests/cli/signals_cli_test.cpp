@@ -179,7 +179,9 @@ TEST(LastResort, AnAbortBeforeTheFirstFrameLeavesNoNewFolder)
 
 // A stop is honoured inside the signed distance too, between chunks of its
 // work, not only when the stage ends: stopped during its first part (the
-// exact band), a denoise never starts the next (the far field).
+// exact band), a denoise never starts the next (the far field). The CPU's
+// parts, so --sdf cpu: on a GPU the distances are the device's, whose
+// chunks DeviceBandDistancesInterrupted stops.
 TEST(StopSignal, TheSignedDistanceStopsWithinItsPart)
 {
   testing::ScratchFolder folder;
@@ -187,7 +189,8 @@ TEST(StopSignal, TheSignedDistanceStopsWithinItsPart)
   const fs::path log = folder / "stderr.txt";
   setenv("LBMSHAPE_PROGRESS_MS", "0", 1);  // every part of the stage says when it starts
   const pid_t pid = testing::spawnLbmshape(
-      {"denoise", (folder / "a.obj").string(), (folder / "out.glb").string(), "--res", "640"}, log.string());
+      {"denoise", (folder / "a.obj").string(), (folder / "out.glb").string(), "--res", "640", "--sdf", "cpu"},
+      log.string());
   unsetenv("LBMSHAPE_PROGRESS_MS");
   ASSERT_GT(pid, 0);
   auto text = [&] {

@@ -645,7 +645,17 @@ LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
 // as a conformant device may fuse multiply-adds.
 class BandVulkanMatchesReference : public testing::GpuTest, public ::testing::WithParamInterface<int> {};
 
-TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
+// The paper's rule on this noisy field magnifies any rounding step after
+// step (gamma follows the last step's change of X divided by a gamma that
+// reaches 0.01): the reference itself, started from a field nudged by 1e-7
+// of its values, lands 3e-7, 3e-6, 3e-5 and 2.7e-3 of the field's scale
+// away after 2, 3, 5 and 20 steps, and an NVIDIA H100 3.7e-3 after 20.
+// After 2 steps (the rule's gamma made from each step's change, the first
+// one's used by the second) rounding stays 30 times under the tolerance,
+// while the shader's axial weight off by 1e-4 lands 6.5e-5 away (shown).
+constexpr int paperRuleSteps = 2;
+
+TEST_P(BandVulkanMatchesReference, FieldAgreesAfterItsSteps)
 {
   // 0 plain, 1 source, 2 gamma per cell, 3 both, 4 the paper's rule, 5 the
   // feature-preserving rule (on the device against the host's), 6 the same
@@ -719,11 +729,10 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfter20Steps)
       continue;
     }
     if (variant != 6) s->initialize(start, 6.0);
-    s->step(20);
+    s->step(variant == 4 ? paperRuleSteps : 20);
   }
   const testing::BandDifference d = testing::differenceInside(gpu->field(), cpu->field(), extent);
-  EXPECT_LE(d.worst, (variant == 4 ? testing::paperRuleDeviceTolerance : testing::deviceTolerance) * d.scale)
-      << "max |X|: " << d.scale;
+  EXPECT_LE(d.worst, testing::deviceTolerance * d.scale) << "max |X|: " << d.scale;
   EXPECT_GT(d.scale, 1.0);
 }
 

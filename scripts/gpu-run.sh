@@ -16,11 +16,12 @@ set -u
 results=/tmp/gpu-results
 rm -rf "$results" && mkdir -p "$results"
 save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
-# GPU_PHASES: which phases run (default all but probe): figures (bench,
+# GPU_PHASES: which phases run (default all but probe and program): figures (bench,
 # the armadillo's denoises and the morph at 256, with their traces), probe
 # (the driver's start, an open scan's distances, a band at 640 traced),
 # scale (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline
-# (this build and the baseline alternately), tests.
+# (this build and the baseline alternately), program (GPU_PROGRAM
+# alone, in 16 shards), tests.
 wanted() { [[ " ${GPU_PHASES:-figures scale jobs baseline tests} " == *" $1 "* ]]; }
 trap save EXIT
 root=$PWD
@@ -127,6 +128,15 @@ if wanted baseline; then
   save
 fi
 
+# One program in 16 shards at once (GPU_PROGRAM, default cli_tests), for at most
+# GPU_TEST_SECONDS: a program the whole suite's run leaves unfinished.
+if wanted program; then
+  (cd build/tests && seq 0 15 | timeout -s KILL "${GPU_TEST_SECONDS:-150}" xargs -P 16 -I{} sh -c \
+    "GTEST_TOTAL_SHARDS=16 GTEST_SHARD_INDEX={} ./${GPU_PROGRAM:-cli_tests} --gtest_brief=1 >$results/program-{}.log 2>&1; echo \"{} exit \$?\"" \
+    >"$results/program.summary" 2>&1)
+  grep -h '^\[  FAILED  \]' "$results"/program-*.log | sort -u >"$results/program.failed"
+  save
+fi
 # The suite, validation on (each program's main sets it), 4 shards a program.
 wanted tests || exit 0
 cd build/tests

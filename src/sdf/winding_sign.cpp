@@ -119,28 +119,47 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
     ++evaluations;
   };
   // Breadth-first, so intervals widen with the path length from the
-  // evaluated cell; every cell enters the queue once.
+  // evaluated cell; every cell enters the queue once. Level by level: a
+  // cell reached from an undecided one is marked known at once (no other
+  // cell hands it a value) and evaluated with the rest of its level, on
+  // every thread, before the next level reads it, which is when the queue
+  // would have reached it; so the values are the one-at-a-time flood's,
+  // whatever the threads. (An open scan's flood evaluates tens of
+  // thousands of cells: 79,147 for bunny_scan at --res 128, 0.5-0.6 s on
+  // one thread.)
   if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("too many cells for the sign's flood");
-  std::vector<uint32_t> queue;
+  std::vector<uint32_t> queue, toEvaluate;
   size_t head = 0;
+  auto evaluateLevel = [&] {
+#pragma omp parallel for schedule(dynamic, 16) if (toEvaluate.size() >= 64)
+    for (size_t k = 0; k < toEvaluate.size(); ++k)
+      value[toEvaluate[k]] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(toEvaluate[k])))));
+    evaluations += toEvaluate.size();
+    toEvaluate.clear();
+  };
   auto flood = [&](size_t seed) {
     queue.push_back(uint32_t(seed));
     while (head < queue.size()) {
-      if (head % 65536 == 0) interrupt::check("nothing was written");
-      const size_t i = queue[head++];
-      const glm::ivec3 c = cells.coords(i);
-      const float widened = radius[i] + growth[cells.blockOf(i)];
-      const bool decided = std::abs(value[i] - 0.5f) > widened;
-      cells.forEachFaceNeighbour(i, c, [&](size_t j) {
-        // A surface point z on the segment would give d(i) + d(j) <=
-        // |i - z| + |z - j| = one voxel.
-        if (radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) return;
-        if (decided)
-          value[j] = value[i], radius[j] = widened;
-        else
-          evaluate(j);
-        queue.push_back(uint32_t(j));
-      });
+      for (const size_t levelEnd = queue.size(); head < levelEnd;) {
+        if (head % 65536 == 0) interrupt::check("nothing was written");
+        const size_t i = queue[head++];
+        const glm::ivec3 c = cells.coords(i);
+        const float widened = radius[i] + growth[cells.blockOf(i)];
+        const bool decided = std::abs(value[i] - 0.5f) > widened;
+        cells.forEachFaceNeighbour(i, c, [&](size_t j) {
+          // A surface point z on the segment would give d(i) + d(j) <=
+          // |i - z| + |z - j| = one voxel.
+          if (radius[j] >= 0.0f || !(distance[i] + distance[j] > kOneVoxel)) return;
+          if (decided) {
+            value[j] = value[i], radius[j] = widened;
+          } else {
+            radius[j] = kEvaluationError;
+            toEvaluate.push_back(uint32_t(j));
+          }
+          queue.push_back(uint32_t(j));
+        });
+      }
+      evaluateLevel();
     }
   };
   // Cells clear of the surface first: they flood the big regions (one

@@ -233,8 +233,8 @@ TEST(SignedDistance, FarFieldIsCloseToExactAndNeverBelowIt)
 
 TEST(SignedDistance, ResultDoesNotDependOnThreadCount)
 {
-  // Open (the sign's sequential flood) and closed (its regions, labelled
-  // on all threads at once).
+  // Open (the sign's flood, each level's evaluations on every thread) and
+  // closed (its regions, labelled on all threads at once).
   for (const TriangleMesh& mesh :
        {testing::merged(testing::sdf::withHoles(testing::icosphere(3, 1.0), 20, 5),
                         testing::icosphere(2, 0.5, {0.8, 0, 0})),

@@ -57,6 +57,12 @@ public:
   // (MemoryUse::DeviceReadByHost is then exactly Device): the tests run
   // the discrete GPU's read-backs on lavapipe.
   bool stagedReadback() const { return stagedReadback_; }
+  // Whether a copy between the host and the device crosses a bus, where
+  // one large region moves far faster than many small ones (an NVIDIA H100's copy engine
+  // moved one 2 KB region a brick at about 1 GB/s): any device but a CPU
+  // one (lavapipe copies with memcpy), and any under
+  // LBMSHAPE_STAGED_READBACK=1, so that lavapipe runs that path too.
+  bool copiesCrossABus() const { return stagedReadback_ || description_.type != "cpu"; }
 
   // The compiled program for this shader and specialization, built once.
   ComputeProgram& program(const ProgramSpec& spec);

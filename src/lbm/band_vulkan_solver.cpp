@@ -383,6 +383,8 @@ struct BandVulkanSolver::Resources {
   // fill(first, count, to) packs pieces [first, first + count) at `to`.
   // `before` is recorded ahead of the first chunk's copy, with its own
   // barrier, and `after` behind the last one's, in the same submissions.
+  // Pieces that follow one another (targetStride == unitBytes) go as one
+  // region a chunk.
   template <class Fill, class Before, class After>
   void uploadStrided(const GpuBuffer& target, uint64_t units, uint64_t unitBytes, uint64_t targetStride, Fill fill,
                      Before before, After after)
@@ -393,7 +395,10 @@ struct BandVulkanSolver::Resources {
       const uint64_t count = std::min(unitsPerChunk, units - first);
       fill(first, count, staging.mapped());
       regions.clear();
-      for (uint64_t k = 0; k < count; ++k) regions.emplace_back(k * unitBytes, (first + k) * targetStride, unitBytes);
+      if (targetStride == unitBytes)
+        regions.emplace_back(0, first * unitBytes, count * unitBytes);
+      else
+        for (uint64_t k = 0; k < count; ++k) regions.emplace_back(k * unitBytes, (first + k) * targetStride, unitBytes);
       context.runAndWait([&](vk::CommandBuffer cmd) {
         if (first == 0) before(cmd);
         cmd.copyBuffer(staging.handle(), target.handle(), regions);
@@ -416,10 +421,12 @@ struct BandVulkanSolver::Resources {
   // Copies `units` pieces of `unitBytes` of a device buffer, piece u at
   // offset u * sourceStride, packed into host memory, through the staging
   // buffer a chunk at a time, after what the command buffer `before`
-  // records (a barrier to transfer reads included).
+  // records (a barrier to transfer reads included). With `wholeStrides`
+  // the staging takes every stride whole, one region a chunk, and the host
+  // keeps each piece (where the copies cross a bus: startFrom() says why).
   template <class Before>
   void downloadUnits(const GpuBuffer& source, uint64_t units, uint64_t unitBytes, uint64_t sourceStride, void* data,
-                     Before before)
+                     Before before, bool wholeStrides = false)
   {
     if (source.mapped() && sourceStride == unitBytes) {  // readable where it lies: no staging copy
       context.runAndWait([&](vk::CommandBuffer cmd) {
@@ -433,13 +440,15 @@ struct BandVulkanSolver::Resources {
       parallelCopy(static_cast<std::byte*>(data), source.mapped(), units * unitBytes);
       return;
     }
-    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unitBytes);
+    wholeStrides = wholeStrides && sourceStride != unitBytes;
+    const uint64_t stagedBytes = wholeStrides ? sourceStride : unitBytes;
+    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / stagedBytes);
     std::vector<vk::BufferCopy> regions;
     for (uint64_t first = 0; first < units; first += unitsPerChunk) {
       const uint64_t count = std::min(unitsPerChunk, units - first);
       regions.clear();
-      if (sourceStride == unitBytes)  // contiguous: one copy
-        regions.emplace_back(first * unitBytes, 0, count * unitBytes);
+      if (sourceStride == unitBytes || wholeStrides)  // contiguous: one copy
+        regions.emplace_back(first * stagedBytes, 0, count * stagedBytes);
       else
         for (uint64_t k = 0; k < count; ++k) regions.emplace_back((first + k) * sourceStride, k * unitBytes, unitBytes);
       context.runAndWait([&](vk::CommandBuffer cmd) {
@@ -449,7 +458,14 @@ struct BandVulkanSolver::Resources {
                             vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {},
                             {});
       });
-      parallelCopy(static_cast<std::byte*>(data) + first * unitBytes, staging.mapped(), count * unitBytes);
+      std::byte* to = static_cast<std::byte*>(data) + first * unitBytes;
+      if (!wholeStrides) {
+        parallelCopy(to, staging.mapped(), count * unitBytes);
+        continue;
+      }
+#pragma omp parallel for schedule(static)
+      for (uint64_t k = 0; k < count; ++k)
+        std::memcpy(to + k * unitBytes, staging.mapped() + k * sourceStride, unitBytes);
     }
   }
 
@@ -1079,27 +1095,35 @@ void BandVulkanSolver::startFrom(BandField field)
     throw std::logic_error("the paper's rule starts without its gamma per cell");
   // rho* per brick (the first of its four moments, laid out [moment][cell])
   // built a chunk at a time in the staging buffer, j* = 0 filled on the
-  // device: a quarter of the bytes cross from the host. The second copy is
-  // the first's, on the device (bricks a step skips keep their moments in
-  // both), in the last chunk's submission. The paper's rule starts from
-  // gamma0 in every cell, filled on the device too (a buffer of it from
-  // the host and its submission were 2.5 ms of a 50 ms lattice stage at
-  // --res 128 on lavapipe).
+  // device: a quarter of the bytes cross from the host. Where they cross a
+  // bus (GpuContext::copiesCrossABus) the staging holds whole slots, j* =
+  // 0 written beside rho*, so that a chunk is one region: four times the
+  // bytes, but one 2 KB region a brick took an NVIDIA H100 22 ms a chunk
+  // of 16 MB (1 GB/s; 130 ms of a 311 ms lattice stage at --res 512). The
+  // second copy is the first's, on the device (bricks a step skips keep
+  // their moments in both), in the last chunk's submission. The paper's
+  // rule starts from gamma0 in every cell, filled on the device too (a
+  // buffer of it from the host and its submission were 2.5 ms of a 50 ms
+  // lattice stage at --res 128 on lavapipe).
   const vk::MemoryBarrier transferWritten(vk::AccessFlagBits::eTransferWrite,
                                           vk::AccessFlagBits::eTransferWrite | vk::AccessFlagBits::eTransferRead);
   auto afterTransfers = [&](vk::CommandBuffer cmd) {
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eTransfer, {}, transferWritten,
                         {}, {});
   };
+  const bool wholeSlots = r_->context.copiesCrossABus();
+  const uint64_t unitBytes = wholeSlots ? momentBytesPerSlot : fieldBytesPerSlot, unitFloats = unitBytes / 4;
   r_->uploadStrided(
-      r_->moments[0], r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot,
+      r_->moments[0], r_->bricks->activeCount(), unitBytes, momentBytesPerSlot,
       [&](uint64_t first, uint64_t count, std::byte* to) {
         float* out = reinterpret_cast<float*>(to);
 #pragma omp parallel for schedule(static)
         for (uint64_t k = 0; k < count; ++k) {
           const size_t firstCell = size_t(first + k) * brickCells;
+          float* slot = out + k * unitFloats;
           for (int l = 0; l < brickCells; ++l)
-            out[k * brickCells + size_t(l)] = band_state::collidedDensity(field, r_->sourceHost, firstCell + size_t(l));
+            slot[l] = band_state::collidedDensity(field, r_->sourceHost, firstCell + size_t(l));
+          std::fill(slot + brickCells, slot + unitFloats, 0.0f);  // j* (nothing where only rho* goes)
         }
       },
       [&](vk::CommandBuffer cmd) {
@@ -1179,13 +1203,14 @@ BandField BandVulkanSolver::storedField(int back)
   // Moment 0 of every brick of the copy: the first quarter of each slot.
   const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
   BandField out = r_->initial.sameShape();
-  r_->downloadUnits(copy, r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot, out.values().data(),
-                    [](vk::CommandBuffer cmd) {
-                      cmd.pipelineBarrier(
-                          vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
-                          vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {},
-                          {});
-                    });
+  r_->downloadUnits(
+      copy, r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot, out.values().data(),
+      [](vk::CommandBuffer cmd) {
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
+                            vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {},
+                            {});
+      },
+      r_->context.copiesCrossABus());
   return out;
 }
 

@@ -3,7 +3,9 @@
 // other back end.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -639,6 +641,50 @@ TEST_P(BandSolverTest, FrozenBricksKeepTheirFieldAndRefuseWhatTheyCannotFollow)
 }
 
 LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
+
+// Where copies cross a bus (LBMSHAPE_STAGED_READBACK=1 on lavapipe) the
+// band's start uploads whole slots and the stored field comes back as
+// whole slots, one region a chunk: the same start, steps, stored fields
+// and restart as the strided copies, bit for bit, with chunks of a few
+// bricks so that many chunks run.
+class BandCopiesAcrossABus : public testing::GpuTest {};
+
+TEST_F(BandCopiesAcrossABus, WholeSlotsGiveTheSameFieldsAsStridedCopies)
+{
+  setenv("LBMSHAPE_STAGED_READBACK", "1", 1);
+  gpu::GpuOptions options;
+  options.validation = true;
+  const std::unique_ptr<gpu::GpuContext> acrossABus = gpu::GpuContext::open(options);
+  unsetenv("LBMSHAPE_STAGED_READBACK");
+  ASSERT_TRUE(acrossABus->copiesCrossABus());
+  if (gpu().copiesCrossABus()) GTEST_SKIP() << "the shared device's copies cross a bus already";
+
+  const Extent3 extent{37, 29, 45};
+  const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
+  auto bricks = testing::bricksNear(field, 8.0);
+  BandField start = testing::bandOf(field, bricks);
+  const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 11);
+  for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
+  const uint64_t staging = 3 * 4 * brickCells * 4;  // three bricks' moments a chunk
+  BandVulkanSolver strided(gpu(), bricks, staging), whole(*acrossABus, bricks, staging);
+  ASSERT_GT(bricks->activeCount(), 12u);
+  for (BandVulkanSolver* s : {&strided, &whole}) {
+    s->setUniformGamma(0.3);
+    s->holdFieldForRestart();
+    s->initialize(start, 6.0);
+    s->step(4);
+  }
+  EXPECT_EQ(whole.field().values(), strided.field().values());
+  EXPECT_EQ(whole.storedField(1).values(), strided.storedField(1).values());
+  EXPECT_EQ(whole.storedField(2).values(), strided.storedField(2).values());
+  for (BandVulkanSolver* s : {&strided, &whole}) {
+    s->restart();
+    s->step(3);
+  }
+  EXPECT_EQ(whole.field().values(), strided.field().values());
+  EXPECT_NE(whole.field().values(), start.values());
+  EXPECT_EQ(acrossABus->validationMessages(), 0);
+}
 
 // The Vulkan solver against the CPU reference: near the grid's faces, with
 // a source, with gamma per cell. Tolerance scaled by the field's magnitude,

@@ -11,6 +11,6 @@ lbmshape_test(lbm_tests
   ${CMAKE_CURRENT_LIST_DIR}/source_term_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/step_timing_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_change_test.cpp
-  DEVICE_SUITES BandSolverTest BandSurfacePass SurfacesOnTheDevice BandVulkanMatchesReference BandVulkanPools BandVulkanSource BandVulkanStaging Conservation CurvatureMotion
+  DEVICE_SUITES BandSolverTest BandCopiesAcrossABus BandSurfacePass SurfacesOnTheDevice BandVulkanMatchesReference BandVulkanPools BandVulkanSource BandVulkanStaging Conservation CurvatureMotion
                 DiffusionCoefficient GpuMatchesReference PaperRuleOnTheDevice SourceTerm StartUpTransient
 )

@@ -200,8 +200,10 @@ TEST(StopSignal, TheSignedDistanceStopsWithinItsPart)
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (text().find("(exact band)") == std::string::npos && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  const bool inThePart = text().find("(exact band)") != std::string::npos;
   kill(pid, SIGTERM);
   const int status = testing::waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(inThePart) << "the stage never said it began the exact band: " << text();
   ASSERT_TRUE(WIFEXITED(status)) << text();
   EXPECT_EQ(WEXITSTATUS(status), 143) << text();
   EXPECT_EQ(text().find("(far field)"), std::string::npos) << "it went on to the next part: " << text();

@@ -16,12 +16,11 @@ set -u
 results=/tmp/gpu-results
 rm -rf "$results" && mkdir -p "$results"
 save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
-# GPU_PHASES: which phases run (default all but probe and program): figures (bench,
+# GPU_PHASES: which phases run (default all but probe): figures (bench,
 # the armadillo's denoises and the morph at 256, with their traces), probe
 # (the driver's start, an open scan's distances, a band at 640 traced),
 # scale (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline
-# (this build and the baseline alternately), program (GPU_PROGRAM
-# alone, in 16 shards), tests.
+# (this build and the baseline alternately), tests.
 wanted() { [[ " ${GPU_PHASES:-figures scale jobs baseline tests} " == *" $1 "* ]]; }
 trap save EXIT
 root=$PWD
@@ -128,22 +127,14 @@ if wanted baseline; then
   save
 fi
 
-# One program in 16 shards at once (GPU_PROGRAM, default cli_tests), for at most
-# GPU_TEST_SECONDS: a program the whole suite's run leaves unfinished.
-if wanted program; then
-  (cd build/tests && seq 0 15 | timeout -s KILL "${GPU_TEST_SECONDS:-150}" xargs -P 16 -I{} sh -c \
-    "GTEST_TOTAL_SHARDS=16 GTEST_SHARD_INDEX={} ./${GPU_PROGRAM:-cli_tests} --gtest_brief=1 >$results/program-{}.log 2>&1; echo \"{} exit \$?\"" \
-    >"$results/program.summary" 2>&1)
-  grep -h '^\[  FAILED  \]' "$results"/program-*.log | sort -u >"$results/program.failed"
-  save
-fi
 # The suite, validation on (each program's main sets it), GPU_SHARDS shards
 # a program (default 8: with 4, cli_tests' first shard did not finish in
-# 150 s on the H100, 2026-11-28).
+# 150 s on the H100, 2026-11-28); GPU_PROGRAMS names some programs instead
+# of all (GPU_PROGRAMS=cli_tests GPU_SHARDS=16: one program on every core).
 wanted tests || exit 0
 cd build/tests
 shards=${GPU_SHARDS:-8}
-ls *_tests | while read -r program; do for shard in $(seq 0 $((shards - 1))); do echo "$program $shard"; done; done |
+ls ${GPU_PROGRAMS:-*_tests} | while read -r program; do for shard in $(seq 0 $((shards - 1))); do echo "$program $shard"; done; done |
   timeout -s KILL "${GPU_TEST_SECONDS:-150}" xargs -P "$(nproc)" -n 2 sh -c \
     'GTEST_TOTAL_SHARDS='"$shards"' GTEST_SHARD_INDEX=$1 ./$0 --gtest_brief=1 >'"$results"'/test-$0-$1.log 2>&1; echo "$0 $1 exit $?"' \
     >"$results/tests.summary" 2>&1

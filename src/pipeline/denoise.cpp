@@ -234,7 +234,8 @@ int mostSmootherSteps(const DenoiseOptions& o, bool twiced)
 }
 int mostSmoothingSteps(const DenoiseOptions& o)
 {
-  return (mayBeTwiced(o) ? 2 : 1) * mostSmootherSteps(o, mayBeTwiced(o));
+  const bool twiced = mayBeTwiced(o);
+  return (twiced ? 2 : 1) * mostSmootherSteps(o, twiced);
 }
 
 // The steps of one start of `solver` from `x0`: --steps of them, or as many

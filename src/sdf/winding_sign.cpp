@@ -25,6 +25,13 @@ constexpr double kUsefulGrowth = 0.25;
 // One voxel, with room for the float rounding of the stored distances.
 constexpr float kOneVoxel = 1.0f + 1e-4f;
 
+// One fast winding-number evaluation at cell i (within kEvaluationError).
+template <class Cells>
+float windingAt(const Cells& cells, const TriangleBvh& bvh, const GridFrame& frame, size_t i)
+{
+  return float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(i)))));
+}
+
 // The flood's first part for a closed surface, where w does not change
 // along a certified segment (no growth anywhere): every cell of a region
 // takes the value of the region's first cell more than a voxel from the
@@ -59,8 +66,7 @@ bool signRegionsAtOnce(const Cells& cells, const TriangleBvh& bvh, const GridFra
   std::vector<std::pair<uint32_t, uint32_t>> seeds(seedOf.begin(), seedOf.end());
   std::vector<float> seedValue(seeds.size());
 #pragma omp parallel for schedule(dynamic, 1)
-  for (size_t k = 0; k < seeds.size(); ++k)
-    seedValue[k] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(seeds[k].second)))));
+  for (size_t k = 0; k < seeds.size(); ++k) seedValue[k] = windingAt(cells, bvh, frame, seeds[k].second);
   evaluations += seeds.size();
   for (float v : seedValue)
     if (!(std::abs(v - 0.5f) > kEvaluationError)) return false;
@@ -114,9 +120,18 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   evaluations = upFront;
 
   auto evaluate = [&](size_t i) {
-    value[i] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(i)))));
+    value[i] = windingAt(cells, bvh, frame, i);
     radius[i] = kEvaluationError;
     ++evaluations;
+  };
+  // The same for a list of cells (any vector of indices), on every thread.
+  auto evaluateAll = [&](const auto& list) {
+#pragma omp parallel for schedule(dynamic, 16) if (list.size() >= 64)
+    for (size_t k = 0; k < list.size(); ++k) {
+      value[list[k]] = windingAt(cells, bvh, frame, list[k]);
+      radius[list[k]] = kEvaluationError;
+    }
+    evaluations += list.size();
   };
   // Breadth-first, so intervals widen with the path length from the
   // evaluated cell; every cell enters the queue once. Level by level: a
@@ -130,13 +145,6 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
   if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("too many cells for the sign's flood");
   std::vector<uint32_t> queue, toEvaluate;
   size_t head = 0;
-  auto evaluateLevel = [&] {
-#pragma omp parallel for schedule(dynamic, 16) if (toEvaluate.size() >= 64)
-    for (size_t k = 0; k < toEvaluate.size(); ++k)
-      value[toEvaluate[k]] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(toEvaluate[k])))));
-    evaluations += toEvaluate.size();
-    toEvaluate.clear();
-  };
   auto flood = [&](size_t seed) {
     queue.push_back(uint32_t(seed));
     while (head < queue.size()) {
@@ -159,7 +167,8 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
           queue.push_back(uint32_t(j));
         });
       }
-      evaluateLevel();
+      evaluateAll(toEvaluate);
+      toEvaluate.clear();
     }
   };
   // Cells clear of the surface first: they flood the big regions (one
@@ -221,15 +230,7 @@ std::vector<uint8_t> insideFlood(const Cells& cells, const TriangleBvh& bvh, con
     left.resize(kept);
     if (!progress) break;
   }
-  size_t evaluatedLast = 0;
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : evaluatedLast)
-  for (size_t k = 0; k < left.size(); ++k) {
-    const size_t i = left[k];
-    value[i] = float(bvh.windingNumber(frame.toWorld(glm::dvec3(cells.coords(i)))));
-    radius[i] = kEvaluationError;
-    ++evaluatedLast;
-  }
-  evaluations += evaluatedLast;
+  evaluateAll(left);
 
   std::vector<uint8_t> inside(count);
 #pragma omp parallel for schedule(static)

@@ -642,6 +642,24 @@ TEST_P(BandSolverTest, FrozenBricksKeepTheirFieldAndRefuseWhatTheyCannotFollow)
 
 LBMSHAPE_ON_BOTH_BACKENDS(BandSolverTest);
 
+// A noisy sphere's band on a grid whose sides are no multiple of 8 and
+// which the sphere reaches: where the Vulkan band solver starts in the
+// tests that hold it to another path.
+struct NoisySphereBand {
+  static constexpr Extent3 extent{37, 29, 45};
+  std::shared_ptr<BrickSet> bricks;
+  BandField start;
+};
+NoisySphereBand noisySphereBand()
+{
+  const Volume field = testing::sphereDistance(NoisySphereBand::extent, 18.0, 14.5, 22.0, 17.0);
+  auto bricks = testing::bricksNear(field, 8.0);
+  BandField start = testing::bandOf(field, bricks);
+  const Volume noise = testing::randomField(NoisySphereBand::extent, -0.3f, 0.3f, 11);
+  for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
+  return {std::move(bricks), std::move(start)};
+}
+
 // Where copies cross a bus (LBMSHAPE_STAGED_READBACK=1 on lavapipe) the
 // band's start uploads whole slots and the stored field comes back as
 // whole slots, one region a chunk: the same start, steps, stored fields
@@ -659,12 +677,9 @@ TEST_F(BandCopiesAcrossABus, WholeSlotsGiveTheSameFieldsAsStridedCopies)
   ASSERT_TRUE(acrossABus->copiesCrossABus());
   if (gpu().copiesCrossABus()) GTEST_SKIP() << "the shared device's copies cross a bus already";
 
-  const Extent3 extent{37, 29, 45};
-  const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
-  auto bricks = testing::bricksNear(field, 8.0);
-  BandField start = testing::bandOf(field, bricks);
-  const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 11);
-  for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
+  const NoisySphereBand sphere = noisySphereBand();
+  const std::shared_ptr<BrickSet>& bricks = sphere.bricks;
+  const BandField& start = sphere.start;
   const uint64_t staging = 3 * 4 * brickCells * 4;  // three bricks' moments a chunk
   BandVulkanSolver strided(gpu(), bricks, staging), whole(*acrossABus, bricks, staging);
   ASSERT_GT(bricks->activeCount(), 12u);
@@ -708,12 +723,10 @@ TEST_P(BandVulkanMatchesReference, FieldAgreesAfterItsSteps)
   // rule with the steps going on from the state it read (no new start), 7
   // a source with held bricks (setHeldBricks), 8 frozen bricks that thaw
   const int variant = GetParam();
-  const Extent3 extent{37, 29, 45};  // sides that are no multiple of 8; the sphere reaches the faces
-  const Volume field = testing::sphereDistance(extent, 18.0, 14.5, 22.0, 17.0);
-  auto bricks = testing::bricksNear(field, 8.0);
-  BandField start = testing::bandOf(field, bricks);
-  const Volume noise = testing::randomField(extent, -0.3f, 0.3f, 11);
-  for (size_t i = 0; i < start.values().size(); ++i) start.values()[i] += noise.values()[i % noise.size()];
+  const Extent3 extent = NoisySphereBand::extent;
+  const NoisySphereBand sphere = noisySphereBand();
+  const std::shared_ptr<BrickSet>& bricks = sphere.bricks;
+  const BandField& start = sphere.start;
   auto gpu = testing::makeBandSolver(Backend::Vulkan, bricks),
        cpu = testing::makeBandSolver(Backend::Reference, bricks);
   for (BandSolver* s : {gpu.get(), cpu.get()}) {

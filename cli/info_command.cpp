@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "core/memory_sizes.hpp"
+#include "core/process_settings.hpp"
 #include "gpu/vulkan_instance.hpp"
 #include "pipeline/compute_device.hpp"
 
@@ -42,14 +43,15 @@ void runInfo(const CommonOptions& common)
     nlohmann::json list = nlohmann::json::array();
     for (size_t i = 0; i < devices.size(); ++i) list.push_back(describe(devices[i], i == selected));
     const char* waitPolicy =
-        std::getenv("OMP_WAIT_POLICY");  // how OpenMP's idle threads wait (core/passive_waiting.hpp)
+        std::getenv("OMP_WAIT_POLICY");  // how OpenMP's idle threads wait (core/process_settings.hpp)
     common.report({{"version", LBMSHAPE_VERSION},
                    {"devices", list},
                    {"selected", reference ? nlohmann::json("reference") : nlohmann::json(devices[selected].index)},
                    {"validation", instance.validationEnabled()},
                    {"sdf_on", distancesOn},
                    {"extract_on", framesOn},
-                   {"openmp_wait_policy", waitPolicy ? nlohmann::json(waitPolicy) : nlohmann::json(nullptr)}});
+                   {"openmp_wait_policy", waitPolicy ? nlohmann::json(waitPolicy) : nlohmann::json(nullptr)},
+                   {"malloc_huge_pages", mallocAsksForHugePages()}});
     return;
   }
   std::cout << "lbmshape " << LBMSHAPE_VERSION << "\n";

@@ -18,7 +18,7 @@
 #include "core/interrupt.hpp"
 #include "core/last_resort.hpp"
 #include "core/parameter_names.hpp"
-#include "core/passive_waiting.hpp"
+#include "core/process_settings.hpp"
 #include "core/worker_threads.hpp"
 
 namespace {
@@ -75,7 +75,7 @@ CLI::CheckedTransformer runsOnNames()
 int main(int argc, char** argv)
 {
   using namespace lbmshape;
-  restartWithPassiveOpenMpWaiting(argv);            // before anything else (core/passive_waiting.hpp)
+  restartWithProcessSettings(argv);                 // before anything else (core/process_settings.hpp)
   useParameterNames(ParameterNaming::CommandLine);  // messages name the flags
   CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan");
   app.set_version_flag("--version", LBMSHAPE_VERSION);

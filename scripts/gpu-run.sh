@@ -19,6 +19,9 @@ save() { (cd "$results" && tar czf "$OUT/results.tgz" .); }
 # GPU_PHASES: which phases run (default all but probe): figures (bench,
 # the armadillo's denoises and the morph at 256, with their traces), probe
 # (the driver's start, an open scan's distances, a band at 640 traced),
+# choices (every shared mesh with --sdf auto and cpu in fresh processes at
+# 128 and 256, the jobs file with --sdf cpu, a morph's frames with
+# --extract auto and cpu: what the auto rules are set by),
 # scale (bench-scale.sh beside OpenVDB), jobs (the 12 meshes), baseline
 # (this build and the baseline alternately), tests.
 wanted() { [[ " ${GPU_PHASES:-figures scale jobs baseline tests} " == *" $1 "* ]]; }
@@ -42,6 +45,7 @@ export VK_DRIVER_FILES=$driver VK_ICD_FILENAMES=$driver
 mkdir -p "$root/../shared" && tar xJf .gpu/assets.tar.xz -C "$root/../shared"
 [[ $root == /work/main ]] || { mkdir -p /work && rm -rf /work/main && ln -s "$root" /work/main; }
 [[ -e /work/shared ]] || ln -s "$(cd "$root/../shared" && pwd)" /work/shared
+[[ -f .gpu/tests.tar.xz ]] && tar xJf .gpu/tests.tar.xz -C .gpu  # packed by gpu-bundle.sh
 mkdir -p build/tests scripts && cp .gpu/bin/lbmshape build/ && cp .gpu/tests/* build/tests/
 cp .gpu/bench-scale.sh .gpu/make-sphere.py scripts/ 2>/dev/null
 if [[ -f .gpu/peer.tar.xz ]]; then
@@ -58,6 +62,39 @@ if wanted probe; then
     done
     LBMSHAPE_DEVICE_TRACE=1 timeout 60 lbmshape -v denoise /tmp/sphere.obj /tmp/s640.glb --res 640 --sdf cpu 2>&1 | grep -v "\.\.\. [0-9.]* s$"
   } >"$results/probe.log" 2>&1
+  save
+fi
+if wanted choices; then
+  { lbmshape -q denoise $assets/bunny.obj /tmp/warm.glb --res 64   # the pipelines compiled once
+    for run in 1 2 3; do /usr/bin/time -f "lbmshape --version: %e s" lbmshape --version >/dev/null; done
+    for res in 128 256; do
+      for m in $assets/*.obj; do
+        for sdf in auto cpu auto cpu; do
+          /usr/bin/time -f "$(basename $m) $res --sdf $sdf: %e s, %M KB" timeout 30 lbmshape -v denoise $m /tmp/choice.glb --res $res --sdf $sdf 2>&1 |
+            grep -E "band distances|^lbmshape: (read|sdf|lbm) |wrote .* in |closed in| s, "
+        done
+      done
+    done
+  } >"$results/choices-sdf.log" 2>&1
+  save
+  python3 - "$assets" >/tmp/jobs.json <<'PY'
+import json, os, sys
+print(json.dumps([{"command": "denoise", "input": f"{sys.argv[1]}/{m}", "output": f"/tmp/jobs-{m[:-4]}.glb", "res": 128}
+                  for m in sorted(os.listdir(sys.argv[1])) if m.endswith(".obj")]))
+PY
+  { for run in 1 2 3; do
+      for sdf in auto cpu; do
+        rm -rf /tmp/jobs-cache
+        XDG_CACHE_HOME=/tmp/jobs-cache /usr/bin/time -f "jobs file --sdf $sdf: %e s, %M KB" timeout 60 lbmshape -q --sdf $sdf run /tmp/jobs.json >/dev/null
+      done
+    done
+    for run in 1 2 3; do
+      for extract in auto cpu; do
+        /usr/bin/time -f "morph 256 --extract $extract: %e s, %M KB" timeout 60 lbmshape -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force --extract $extract 2>&1 |
+          grep -E "band distances|^lbmshape: [a-z]+ +[0-9.]+ ms|waited|animation|closed in| s, "
+      done
+    done
+  } >"$results/choices-jobs-morph.log" 2>&1
   save
 fi
 # Figures, on a quiet machine.
@@ -109,19 +146,33 @@ PY
   fi; } >"$results/jobs.log" 2>&1
 fi
 save
-# Whole-process times of the morph as a user runs it (no --json), on the
-# grid and on the band, then this build and the baseline alternately.
+# Whole-process times of denoises and of the morph as a user runs it (no
+# --json), this build and the baseline alternately: the baseline is a binary
+# (BASELINE= for gpu-bundle.sh) or this one in another environment
+# (GPU_AB_ENV="NAME=value ...": a setting's effect on the same build).
 if wanted baseline; then
   builds=(lbmshape)
   [[ -x .gpu/bin/lbmshape-baseline ]] && builds+=(lbmshape-baseline)
-  { for run in $(seq "${GPU_BASELINE_RUNS:-2}"); do
+  [[ -n ${GPU_AB_ENV:-} ]] && builds+=("env $GPU_AB_ENV lbmshape")
+  { cat /sys/kernel/mm/transparent_hugepage/enabled 2>&1 | sed 's/^/transparent_hugepage: /'
+    # What a frame's durable write costs there: a 3.6 MB file and its folder synced.
+    python3 -c "
+import os, time, statistics
+t = []
+for k in range(10):
+    s = time.perf_counter()
+    with open(f'/tmp/sync{k}', 'wb') as f: f.write(os.urandom(3600000)); f.flush(); os.fsync(f.fileno())
+    d = os.open('/tmp', os.O_RDONLY); os.fsync(d); os.close(d)
+    t.append((time.perf_counter() - s) * 1000)
+print('a 3.6 MB file written and synced with its folder: median %.1f ms (%.1f-%.1f)' % (statistics.median(t), min(t), max(t)))"
+    for run in $(seq "${GPU_BASELINE_RUNS:-2}"); do
       for b in "${builds[@]}"; do
-        /usr/bin/time -f "$b denoise 512: %e s, %M KB" timeout 30 $b -v denoise $assets/armadillo.obj /tmp/d512.glb --res 512 2>&1 |
-          grep -E "band distances|^lbmshape: (sdf|lbm|extract) | s, "
-        /usr/bin/time -f "$b morph 256: %e s, %M KB" timeout 60 $b -q morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force
-        /usr/bin/time -f "$b morph 256 --band: %e s, %M KB" timeout 60 $b -q morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256b --res 256 --align none --force --band
-        timeout 60 $b morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force --json 2>/dev/null |
-          python3 -c "import json,sys; d=json.load(sys.stdin); print('$b morph 256 stages:', {k: round(v) for k, v in d['ms'].items()})"
+        for res in 128 256 512; do
+          /usr/bin/time -f "$b denoise $res: %e s, %M KB" timeout 30 $b -v denoise $assets/armadillo.obj /tmp/d$res.glb --res $res 2>&1 |
+            grep -E "band distances|^lbmshape: (sdf|lbm|extract) |closed in| s, "
+        done
+        /usr/bin/time -f "$b morph 256: %e s, %M KB" timeout 60 $b -v morph /tmp/sphere.obj $assets/armadillo.obj /tmp/m256 --res 256 --align none --force 2>&1 |
+          grep -E "band distances|^lbmshape: [a-z]+ +[0-9.]+ ms|waited|closed in| s, "
       done
     done; } >"$results/baseline.log" 2>&1
   save

@@ -8,7 +8,7 @@ target_sources(lbmshape_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/log.cpp
   ${CMAKE_CURRENT_LIST_DIR}/memory_sizes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parameter_names.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/passive_waiting.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/process_settings.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mapped_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/progress.cpp
   ${CMAKE_CURRENT_LIST_DIR}/temporary_files.cpp

@@ -16,10 +16,11 @@ namespace lbmshape {
 int prepareParallelRegions();
 
 // Runs `here` on this thread and `there` on another at the same time, the
-// parallel regions of each on one thread: two jobs of about the same size
-// that parallelise less than perfectly (memory-bound loops, serial parts)
-// end sooner side by side than one after the other with every thread each
-// (a morph's two distance fields at 128^3: 824 -> 658 ms on two cores).
+// parallel regions of each on half the threads (one each on two cores):
+// two jobs of about the same size that parallelise less than perfectly
+// (memory-bound loops, serial parts) end sooner side by side than one after
+// the other with every thread each (a morph's two distance fields at 128^3:
+// 824 -> 658 ms on two cores).
 // Under an address-space limit (`ulimit -v`), or where no thread can be
 // started, runs them one after the other as they are. An exception from
 // either reaches the caller once both have ended.

@@ -3,7 +3,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <string_view>
 #include <system_error>
 
 #include <unistd.h>
@@ -40,6 +42,7 @@ PipelineCacheFile::PipelineCacheFile(const vk::raii::Device& device, std::filesy
   vk::PipelineCacheCreateInfo info({}, data.size(), data.data());
   cache_ = vk::raii::PipelineCache(device, info);
   loadedBytes_ = data.size();
+  loadedHash_ = std::hash<std::string_view>()(std::string_view(data.data(), data.size()));
 }
 
 PipelineCacheFile::~PipelineCacheFile()
@@ -47,6 +50,8 @@ PipelineCacheFile::~PipelineCacheFile()
   if (path_.empty() || !*cache_) return;
   try {
     std::vector<uint8_t> data = cache_.getData();
+    const std::string_view bytes(reinterpret_cast<const char*>(data.data()), data.size());
+    if (data.size() == loadedBytes_ && std::hash<std::string_view>()(bytes) == loadedHash_) return;
     std::error_code ec;
     std::filesystem::create_directories(path_.parent_path(), ec);
     std::filesystem::path temporary = path_;

@@ -45,24 +45,35 @@ void checkNotTheInput(const std::filesystem::path& output, const std::filesystem
                    " to replace the input");
 }
 
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty,
-               GltfCompression compression)
+std::unique_ptr<AtomicFile> writeMeshUncommitted(const TriangleMesh& mesh, const std::filesystem::path& path,
+                                                 EmptyMesh empty, GltfCompression compression)
 {
   const auto format = outputFormat(path);
   requireCompressible(format, path, compression);
   requireWritable(mesh, path, "the mesh", empty);
-  AtomicFile file(path);
+  auto file = std::make_unique<AtomicFile>(path);
   switch (format) {
-  case MeshFormat::Obj: writeObj(mesh, file); break;
+  case MeshFormat::Obj: writeObj(mesh, *file); break;
   case MeshFormat::Ply:
   case MeshFormat::Off:
-  case MeshFormat::Stl: writeWithOpenMesh(mesh, format, file); break;
+  case MeshFormat::Stl: writeWithOpenMesh(mesh, format, *file); break;
   case MeshFormat::Gltf:
-  case MeshFormat::Glb: writeGltf(mesh, format, file, compression); break;
+  case MeshFormat::Glb: writeGltf(mesh, format, *file, compression); break;
   }
+  return file;
+}
+
+void commitMesh(AtomicFile& file, size_t vertices, size_t triangles)
+{
   file.commit();
-  log::verbose("wrote " + path.string() + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
-               std::to_string(mesh.triangleCount()) + " triangles");
+  log::verbose("wrote " + file.target().string() + ": " + std::to_string(vertices) + " vertices, " +
+               std::to_string(triangles) + " triangles");
+}
+
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, EmptyMesh empty,
+               GltfCompression compression)
+{
+  commitMesh(*writeMeshUncommitted(mesh, path, empty, compression), mesh.vertexCount(), mesh.triangleCount());
 }
 
 }  // namespace lbmshape

@@ -35,6 +35,7 @@ FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, st
       inspect_(std::move(inspect)), compression_(compression), decorate_(std::move(decorate)), sink_(std::move(sink))
 {
   thread_ = std::thread([this] { run(); });
+  if (!sink_) committer_ = std::thread([this] { commitFrames(); });
 }
 
 FrameWriter::~FrameWriter()
@@ -43,9 +44,11 @@ FrameWriter::~FrameWriter()
     std::lock_guard lock(mutex_);
     stopping_ = true;
     queue_.clear();
+    toCommit_.clear();  // their temporary files removed
   }
   changed_.notify_all();
   thread_.join();
+  if (committer_.joinable()) committer_.join();
 }
 
 bool FrameWriter::isFrameName(const std::filesystem::path& file)
@@ -75,7 +78,7 @@ double FrameWriter::push(int index, FrameField field)
 std::vector<TriangleMesh> FrameWriter::finish()
 {
   std::unique_lock lock(mutex_);
-  changed_.wait(lock, [&] { return (queue_.empty() && !busy_) || error_; });
+  changed_.wait(lock, [&] { return (queue_.empty() && !busy_ && toCommit_.empty() && !committing_) || error_; });
   if (error_) std::rethrow_exception(error_);
   return std::move(meshes_);
 }
@@ -91,8 +94,9 @@ int FrameWriter::stop()
   std::unique_lock lock(mutex_);
   stopping_ = true;
   queue_.clear();
+  toCommit_.clear();  // their temporary files removed
   changed_.notify_all();
-  changed_.wait(lock, [&] { return !busy_; });
+  changed_.wait(lock, [&] { return !busy_ && !committing_; });
   return written_;
 }
 double FrameWriter::extractMs() const
@@ -150,20 +154,27 @@ void FrameWriter::run()
                              ", or place the shapes to overlap with " + nameOf(Parameter::Align));
       const double extractMs = extract.ms();
       Stopwatch write;
+      std::unique_ptr<AtomicFile> file;
       if (sink_)
         sink_(job.first, mesh);
       else
-        writeMesh(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
+        file = writeMeshUncommitted(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
       const double writeMs = write.ms();
       if (inspect_) inspect_(job.first, job.second, mesh);
       previousField = job.second;
       std::lock_guard lock(mutex_);
       if (empty) emptyFrames_.push_back(job.first);
+      const size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
       if (keep_ == Keep::LastFrame && !meshes_.empty())
         meshes_.back() = std::move(mesh);
       else
         meshes_.push_back(std::move(mesh));
-      ++written_;
+      if (!file)
+        ++written_;  // a sink's frame is done once it is handed over
+      else if (!stopping_)
+        toCommit_.push_back({std::move(file), vertices, triangles});
+      else
+        file.reset();  // dropped: its temporary file goes before stop() returns
       extractMs_ += extractMs;
       writeMs_ += writeMs;
       busy_ = false;
@@ -171,6 +182,37 @@ void FrameWriter::run()
       std::lock_guard lock(mutex_);
       if (!error_) error_ = std::current_exception();
       busy_ = false;
+    }
+    changed_.notify_all();
+  }
+}
+
+void FrameWriter::commitFrames()
+{
+  for (;;) {
+    MadeFile made;
+    {
+      std::unique_lock lock(mutex_);
+      // After an error nothing more is committed: the frames on disk stay
+      // the first ones, in order.
+      changed_.wait(lock, [&] { return stopping_ || (!toCommit_.empty() && !error_); });
+      if (stopping_) return;
+      made = std::move(toCommit_.front());
+      toCommit_.pop_front();
+      committing_ = true;
+    }
+    try {
+      Stopwatch commit;
+      commitMesh(*made.file, made.vertices, made.triangles);
+      const double ms = commit.ms();
+      std::lock_guard lock(mutex_);
+      ++written_;
+      writeMs_ += ms;
+      committing_ = false;
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+      committing_ = false;
     }
     changed_.notify_all();
   }

@@ -1,7 +1,10 @@
 // Turns the fields of a morph into frame files on a thread of its own, so
 // that the lattice computes frame k+1 while frame k is extracted and written.
 // What is written does not depend on this: every frame is a copy of the field
-// taken between steps, and the files are written in order.
+// taken between steps, and the files are written in order. A second thread
+// commits the files, in the same order (forced to disk, then renamed:
+// AtomicFile), while the first makes the next frame: on the H100's host a
+// frame's commit took longer than its making.
 #pragma once
 
 #include <condition_variable>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "band/band_field.hpp"
+#include "core/atomic_file.hpp"
 #include "core/volume.hpp"
 #include "mesh/gltf_compression.hpp"
 #include "mesh/triangle_mesh.hpp"
@@ -79,8 +83,9 @@ public:
   // writing it.
   std::vector<int> emptyFrames() const;
 
-  // Stops: the frame being written is finished, the queued ones are
-  // dropped. Returns the frames complete on disk, all of them final.
+  // Stops: the frame being committed is finished, the queued ones and the
+  // one being made are dropped (their temporary files removed). Returns the
+  // frames complete on disk, all of them final: the first ones, in order.
   int stop();
   double extractMs() const;
   double writeMs() const;
@@ -89,8 +94,8 @@ private:
   // Both public constructors: files when `sink` is empty.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink,
               int frameCount, Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate);
-  void run();
-  void rethrowError();
+  void run();           // makes each frame: its mesh, its figures, its temporary file
+  void commitFrames();  // puts each made file under its name, in order
 
   GridFrame grid_;
   std::filesystem::path folder_;
@@ -113,7 +118,13 @@ private:
   int written_ = 0;
   std::vector<int> emptyFrames_;
   double extractMs_ = 0.0, writeMs_ = 0.0;
-  std::thread thread_;
+  struct MadeFile {
+    std::unique_ptr<AtomicFile> file;
+    size_t vertices = 0, triangles = 0;
+  };
+  std::deque<MadeFile> toCommit_;  // no bound: each waits on disk, not in memory
+  bool committing_ = false;
+  std::thread thread_, committer_;
 };
 
 }  // namespace lbmshape

@@ -76,6 +76,38 @@ TEST(JsonResults, InfoShowsOpenMpThreadsWaitPassivelyUnlessTheUserChose)
   EXPECT_EQ(chosenByTheUser["openmp_wait_policy"], "active");
 }
 
+// lbmshape starts itself again with malloc asking for huge pages, unless
+// the user's GLIBC_TUNABLES says otherwise (another tunable of theirs
+// does not stop it) or an address-space limit is set.
+TEST(JsonResults, InfoShowsMallocAsksForHugePagesUnlessTheUserChose)
+{
+  const char* old = std::getenv("GLIBC_TUNABLES");
+  const std::string inherited = old ? old : "";
+  auto infoWith = [](const char* tunables) {
+    if (tunables)
+      setenv("GLIBC_TUNABLES", tunables, 1);
+    else
+      unsetenv("GLIBC_TUNABLES");
+    return parseStdout(testing::runLbmshape({"info", "--json"}));
+  };
+  const auto chosenByLbmshape = infoWith(nullptr);
+  const auto besideAnotherTunable = infoWith("glibc.malloc.check=0");
+  const auto refusedByTheUser = infoWith("glibc.malloc.hugetlb=0");
+  unsetenv("GLIBC_TUNABLES");
+  const testing::CliResult limited = testing::runLbmshapeWithin(8192, {"info", "--json"});
+  if (old)
+    setenv("GLIBC_TUNABLES", inherited.c_str(), 1);
+  else
+    unsetenv("GLIBC_TUNABLES");
+  EXPECT_EQ(chosenByLbmshape["malloc_huge_pages"], true);
+  EXPECT_EQ(besideAnotherTunable["malloc_huge_pages"], true);
+  EXPECT_EQ(refusedByTheUser["malloc_huge_pages"], false);
+  if (testing::addressSpaceLimitsWork()) {
+    ASSERT_EQ(limited.exitCode, 0) << limited.err;
+    EXPECT_EQ(parseStdout(limited)["malloc_huge_pages"], false);
+  }
+}
+
 std::string selectedDeviceName()
 {
   auto info = parseStdout(testing::runLbmshape({"info", "--json"}));
@@ -186,7 +218,8 @@ TEST(JsonResults, BenchPaperTimesTheLatticesOfTableOne)
 }
 
 // The second run of a process finds the pipeline cache the first one saved in
-// $XDG_CACHE_HOME/lbmshape.
+// $XDG_CACHE_HOME/lbmshape, and a third that compiles nothing new leaves
+// the file as it was.
 TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
 {
   testing::ScratchFolder cache;
@@ -195,6 +228,14 @@ TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
   const std::vector<std::string> bench = {"bench", "--json", "--size", "16,16,16", "--steps", "1", "--runs", "1"};
   auto first = parseStdout(testing::runLbmshape(bench));
   auto second = parseStdout(testing::runLbmshape(bench));
+  auto cacheFile = [&cache] {
+    for (const auto& entry : std::filesystem::directory_iterator(cache / "lbmshape"))
+      if (entry.path().extension() == ".bin") return entry.path();
+    return std::filesystem::path();
+  };
+  const auto savedBySecond = std::filesystem::last_write_time(cacheFile());
+  parseStdout(testing::runLbmshape(bench));
+  const auto afterThird = std::filesystem::last_write_time(cacheFile());
   setenv("XDG_CACHE_HOME", previous.c_str(), 1);
 
   EXPECT_EQ(first["startup"]["pipeline_cache_loaded_bytes"].get<size_t>(), 0u) << "a fresh cache folder";
@@ -204,6 +245,7 @@ TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
   for (const auto& entry : std::filesystem::directory_iterator(cache / "lbmshape"))
     files += entry.path().extension() == ".bin";
   EXPECT_EQ(files, 1u);
+  EXPECT_EQ(afterThird, savedBySecond) << "the third run compiled nothing new, yet wrote the cache again";
 }
 
 TEST(JsonResults, ReferenceDeviceRunsWithoutVulkan)

@@ -4,6 +4,7 @@ lbmshape_test(core_tests
   ${CMAKE_CURRENT_LIST_DIR}/last_resort_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parameter_names_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parallel_copy_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/process_settings_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/progress_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/worker_threads_test.cpp
 )

@@ -24,11 +24,11 @@ int regionThreads()
 }
 
 // Both run, on two threads, at once (each waits to see the other start),
-// each with one-thread parallel regions; the caller's regions get their
-// threads back.
-TEST(RunSideBySide, RunsBothAtOnceEachOnOneThread)
+// each with half the caller's threads for its parallel regions (one each
+// of two); the caller's regions get their threads back.
+void expectSideBySideWithHalfTheThreadsEach(int threads, int expectedHere, int expectedThere)
 {
-  omp_set_num_threads(2);
+  omp_set_num_threads(threads);
   std::atomic<int> started{0};
   int hereThreads = 0, thereThreads = 0;
   std::thread::id hereId, thereId;
@@ -49,10 +49,20 @@ TEST(RunSideBySide, RunsBothAtOnceEachOnOneThread)
       });
   EXPECT_EQ(hereId, std::this_thread::get_id());
   EXPECT_NE(thereId, hereId);
-  EXPECT_EQ(hereThreads, 1);
-  EXPECT_EQ(thereThreads, 1);
-  EXPECT_EQ(omp_get_max_threads(), 2);
-  EXPECT_EQ(regionThreads(), 2);
+  EXPECT_EQ(hereThreads, expectedHere) << "of " << threads;
+  EXPECT_EQ(thereThreads, expectedThere) << "of " << threads;
+  EXPECT_EQ(omp_get_max_threads(), threads);
+  EXPECT_EQ(regionThreads(), threads);
+}
+
+TEST(RunSideBySide, RunsBothAtOnceWithHalfTheThreadsEach)
+{
+  const int before = omp_get_max_threads();
+  expectSideBySideWithHalfTheThreadsEach(2, 1, 1);
+  expectSideBySideWithHalfTheThreadsEach(1, 1, 1);
+  expectSideBySideWithHalfTheThreadsEach(5, 3, 2);
+  expectSideBySideWithHalfTheThreadsEach(8, 4, 4);
+  omp_set_num_threads(before);
 }
 
 // An exception from either reaches the caller, after both have ended; the

@@ -5,6 +5,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/denoise_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/device_warm_up_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/feature_probe_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/frame_writer_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/in_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_arrival_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/passive_waiting.hpp"
+#include "core/process_settings.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,10 @@ int main(int argc, char** argv)
 {
   // OpenMP's idle threads wait passively, as in lbmshape itself: ctest -j2
   // runs two tests on two cores, and each one's spinning took the core the
-  // other needed (core/passive_waiting.hpp). It changes no result.
-  lbmshape::restartWithPassiveOpenMpWaiting(argv);
+  // other needed (core/process_settings.hpp). It changes no result. Huge
+  // pages are left to the lbmshape processes the tests start (they inherit
+  // this environment, and under an address-space limit go without).
+  lbmshape::restartWithProcessSettings(argv, false);
   // The Khronos validation layer on for every GPU test, and for every
   // lbmshape process a CLI test starts; any message fails the test.
   setenv("LBMSHAPE_VALIDATION", "1", 1);

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string>
 
+#include <sys/auxv.h>
 #include <unistd.h>
 
 #include "core/host_memory.hpp"
@@ -23,6 +24,9 @@ std::string environment(const char* name)
 
 void restartWithProcessSettings(char** argv, bool hugePages)
 {
+  // A set-user-ID or capability-raising start (AT_SECURE): glibc drops the
+  // tunables there, so a restart would find them missing again, and again.
+  if (getauxval(AT_SECURE)) return;
   bool changed = false;
   if (!std::getenv("OMP_WAIT_POLICY")) {
     setenv("OMP_WAIT_POLICY", "passive", 1);

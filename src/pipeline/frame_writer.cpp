@@ -1,9 +1,11 @@
 #include "pipeline/frame_writer.hpp"
 
 #include <cstdio>
+#include <system_error>
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "core/host_memory.hpp"
 #include "core/parameter_names.hpp"
 #include "core/stopwatch.hpp"
 #include "core/worker_threads.hpp"
@@ -14,7 +16,8 @@
 namespace lbmshape {
 namespace {
 constexpr size_t queueCapacity = 2;
-}
+constexpr size_t kCommitsWaiting = 2;
+}  // namespace
 
 FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, int frameCount,
                          Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate)
@@ -34,8 +37,33 @@ FrameWriter::FrameWriter(const GridFrame& grid, std::filesystem::path folder, st
       digits_(std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()))), keep_(keep),
       inspect_(std::move(inspect)), compression_(compression), decorate_(std::move(decorate)), sink_(std::move(sink))
 {
-  thread_ = std::thread([this] { run(); });
-  if (!sink_) committer_ = std::thread([this] { commitFrames(); });
+  // The commits go to a thread of their own where one can be had: not
+  // under an address-space limit (a thread costs a malloc arena, and
+  // lavapipe's own threads need the room: see runSideBySide), nor where
+  // none can be started. There the writer's thread commits each frame itself.
+  if (!sink_ && addressSpaceUnlimited()) {
+    try {
+      committer_ = std::thread([this] { commitFrames(); });
+    } catch (const std::system_error&) {}
+  }
+  commitBeside_ = committer_.joinable();
+  try {
+    thread_ = std::thread([this] { run(); });
+  } catch (...) {
+    stopCommitter();
+    throw;
+  }
+}
+
+void FrameWriter::stopCommitter()
+{
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    toCommit_.clear();  // their temporary files removed
+  }
+  changed_.notify_all();
+  if (committer_.joinable()) committer_.join();
 }
 
 FrameWriter::~FrameWriter()
@@ -48,7 +76,7 @@ FrameWriter::~FrameWriter()
   }
   changed_.notify_all();
   thread_.join();
-  if (committer_.joinable()) committer_.join();
+  stopCommitter();
 }
 
 bool FrameWriter::isFrameName(const std::filesystem::path& file)
@@ -159,24 +187,34 @@ void FrameWriter::run()
         sink_(job.first, mesh);
       else
         file = writeMeshUncommitted(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
+      const size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+      if (file && !commitBeside_) {
+        commitMesh(*file, vertices, triangles);
+        file.reset();
+      }
       const double writeMs = write.ms();
       if (inspect_) inspect_(job.first, job.second, mesh);
       previousField = job.second;
-      std::lock_guard lock(mutex_);
+      std::unique_lock lock(mutex_);
       if (empty) emptyFrames_.push_back(job.first);
-      const size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
       if (keep_ == Keep::LastFrame && !meshes_.empty())
         meshes_.back() = std::move(mesh);
       else
         meshes_.push_back(std::move(mesh));
-      if (!file)
-        ++written_;  // a sink's frame is done once it is handed over
-      else if (!stopping_)
-        toCommit_.push_back({std::move(file), vertices, triangles});
-      else
-        file.reset();  // dropped: its temporary file goes before stop() returns
       extractMs_ += extractMs;
       writeMs_ += writeMs;
+      if (file) {
+        // At most kCommitsWaiting frames wait for their commit: each holds a
+        // temporary file, listed for the last-resort cleanup (which has room
+        // for a few), and the frames must not pile up on disk.
+        changed_.wait(lock, [&] { return toCommit_.size() < kCommitsWaiting || stopping_ || error_; });
+        if (stopping_ || error_)
+          file.reset();  // dropped: its temporary file goes before stop() returns
+        else
+          toCommit_.push_back({std::move(file), vertices, triangles});
+      } else {
+        ++written_;  // committed here, or handed to the sink
+      }
       busy_ = false;
     } catch (...) {
       std::lock_guard lock(mutex_);
@@ -201,17 +239,16 @@ void FrameWriter::commitFrames()
       toCommit_.pop_front();
       committing_ = true;
     }
+    // (Its time is not added to the write stage's: it runs beside it.)
     try {
-      Stopwatch commit;
       commitMesh(*made.file, made.vertices, made.triangles);
-      const double ms = commit.ms();
       std::lock_guard lock(mutex_);
       ++written_;
-      writeMs_ += ms;
       committing_ = false;
     } catch (...) {
       std::lock_guard lock(mutex_);
       if (!error_) error_ = std::current_exception();
+      made.file.reset();  // its temporary file goes before stop() or finish() returns
       committing_ = false;
     }
     changed_.notify_all();

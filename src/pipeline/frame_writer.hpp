@@ -4,7 +4,8 @@
 // taken between steps, and the files are written in order. A second thread
 // commits the files, in the same order (forced to disk, then renamed:
 // AtomicFile), while the first makes the next frame: on the H100's host a
-// frame's commit took longer than its making.
+// frame's commit took longer than its making. (Under an address-space
+// limit, or where no second thread starts, the first commits them itself.)
 #pragma once
 
 #include <condition_variable>
@@ -44,8 +45,9 @@ public:
   // frame repeats when its field is the same, and the morph's figures use).
   enum class Keep { EveryFrame, LastFrame };
 
-  // Runs on the writer's thread after frame k's file is written, with its
-  // field and mesh (the morph's per-frame figures).
+  // Runs on the writer's thread once frame k's file is written (perhaps not
+  // yet committed under its name), with its field and mesh (the morph's
+  // per-frame figures).
   using Inspect = std::function<void(int frame, const FrameField& field, const TriangleMesh& mesh)>;
   // Runs on the writer's thread on each frame's mesh before it is written
   // (vertex colours).
@@ -57,7 +59,7 @@ public:
   // Frame k goes to `sink` instead of a file.
   FrameWriter(const GridFrame& grid, FrameSink sink, int frameCount, Keep keep, Inspect inspect = {},
               Decorate decorate = {});
-  ~FrameWriter();  // stops the thread; frames still queued are dropped
+  ~FrameWriter();  // stops both threads; frames queued or not yet committed are dropped
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
 
@@ -68,12 +70,12 @@ public:
   // Queues frame `index`'s field (pass the same pointer again for a frame
   // identical to the previous one: it is written without extracting again).
   // Blocks while two frames are already waiting, and returns the
-  // milliseconds it waited. Rethrows an error of the writer thread.
+  // milliseconds it waited. Rethrows an error of either thread.
   double push(int index, FrameField field);
 
-  // Waits until every queued frame is written; returns the meshes kept, in
-  // frame order (with Keep::LastFrame, the last one alone). Rethrows an error
-  // of the writer thread.
+  // Waits until every queued frame is written and committed; returns the
+  // meshes kept, in frame order (with Keep::LastFrame, the last one alone).
+  // Rethrows an error of either thread.
   std::vector<TriangleMesh> finish();
 
   // A frame may have no surface where the shape passes through nothing on
@@ -94,8 +96,9 @@ private:
   // Both public constructors: files when `sink` is empty.
   FrameWriter(const GridFrame& grid, std::filesystem::path folder, std::string extension, FrameSink sink,
               int frameCount, Keep keep, Inspect inspect, GltfCompression compression, Decorate decorate);
-  void run();           // makes each frame: its mesh, its figures, its temporary file
-  void commitFrames();  // puts each made file under its name, in order
+  void run();            // makes each frame: its mesh, its figures, its temporary file
+  void commitFrames();   // puts each made file under its name, in order
+  void stopCommitter();  // ends commitFrames(), dropping what waits
 
   GridFrame grid_;
   std::filesystem::path folder_;
@@ -124,6 +127,7 @@ private:
   };
   std::deque<MadeFile> toCommit_;  // no bound: each waits on disk, not in memory
   bool committing_ = false;
+  bool commitBeside_ = false;  // committer_ runs; set before either thread starts
   std::thread thread_, committer_;
 };
 

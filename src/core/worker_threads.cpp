@@ -69,7 +69,7 @@ void runSideBySide(const std::function<void()>& here, const std::function<void()
   }
   // The threads shared out, half each: one each on two cores, as
   // measured there; on the H100's 16 cores one each made a morph's two
-  // signs at 256 take 0.6-1.1 s, single-threaded, beside 15 idle cores.
+  // signs at 256 take 0.6-1.1 s, single-threaded, beside 14 idle cores.
   const int threads = omp_get_max_threads();
   const int thereThreads = std::max(1, threads / 2), hereThreads = std::max(1, threads - thereThreads);
   std::future<void> other;

@@ -72,11 +72,10 @@ FrameWriter::~FrameWriter()
     std::lock_guard lock(mutex_);
     stopping_ = true;
     queue_.clear();
-    toCommit_.clear();  // their temporary files removed
   }
   changed_.notify_all();
   thread_.join();
-  stopCommitter();
+  stopCommitter();  // drops the frames still waiting for their commit
 }
 
 bool FrameWriter::isFrameName(const std::filesystem::path& file)

@@ -136,6 +136,11 @@ double FrameWriter::writeMs() const
   std::lock_guard lock(mutex_);
   return writeMs_;
 }
+double FrameWriter::commitMs() const
+{
+  std::lock_guard lock(mutex_);
+  return commitMs_;
+}
 
 void FrameWriter::run()
 {
@@ -187,11 +192,14 @@ void FrameWriter::run()
       else
         file = writeMeshUncommitted(mesh, framePath(job.first), EmptyMesh::Allowed, compression_);
       const size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+      double commitMs = 0.0;
       if (file && !commitBeside_) {
+        const Stopwatch commit;
         commitMesh(*file, vertices, triangles);
         file.reset();
+        commitMs = commit.ms();
       }
-      const double writeMs = write.ms();
+      const double writeMs = write.ms() - commitMs;
       if (inspect_) inspect_(job.first, job.second, mesh);
       previousField = job.second;
       std::unique_lock lock(mutex_);
@@ -202,6 +210,7 @@ void FrameWriter::run()
         meshes_.push_back(std::move(mesh));
       extractMs_ += extractMs;
       writeMs_ += writeMs;
+      commitMs_ += commitMs;
       if (file) {
         // At most kCommitsWaiting frames wait for their commit: each holds a
         // temporary file, listed for the last-resort cleanup (which has room
@@ -238,10 +247,12 @@ void FrameWriter::commitFrames()
       toCommit_.pop_front();
       committing_ = true;
     }
-    // (Its time is not added to the write stage's: it runs beside it.)
+    // (Its time is not the write stage's, beside which it runs: commitMs().)
     try {
+      const Stopwatch commit;
       commitMesh(*made.file, made.vertices, made.triangles);
       std::lock_guard lock(mutex_);
+      commitMs_ += commit.ms();
       ++written_;
       committing_ = false;
     } catch (...) {

@@ -91,6 +91,9 @@ public:
   int stop();
   double extractMs() const;
   double writeMs() const;
+  // The commits' time (forcing each file to disk, renaming it), on the
+  // second thread beside the writing where it runs, so not in writeMs().
+  double commitMs() const;
 
 private:
   // Both public constructors: files when `sink` is empty.
@@ -120,7 +123,7 @@ private:
   std::vector<TriangleMesh> meshes_;
   int written_ = 0;
   std::vector<int> emptyFrames_;
-  double extractMs_ = 0.0, writeMs_ = 0.0;
+  double extractMs_ = 0.0, writeMs_ = 0.0, commitMs_ = 0.0;
   struct MadeFile {
     std::unique_ptr<AtomicFile> file;
     size_t vertices = 0, triangles = 0;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <system_error>
+#include <tuple>
 
 #include <unistd.h>  // access
 
@@ -421,7 +422,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       sinceProgress.restart();
     }
   }
-  std::vector<TriangleMesh> meshes = writer.finish();
+  // The writer's last frames, made and committed after the lattice's last
+  // step: timed, so that the whole process's time adds up.
+  std::vector<TriangleMesh> meshes = clock.time("last_frames", [&] { return writer.finish(); });
   const int steps = currentStep;  // the last frame's (a converged morph may have run one more)
   const double updates = double(lattice->cells()) * solver.stepsTaken();
   const nlohmann::json latticeDescription = lattice->describe();
@@ -439,10 +442,14 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   clock.record("download", downloadMs);
   clock.record("extract", writer.extractMs());
   clock.record("write", writer.writeMs());
+  clock.record("commit", writer.commitMs());
   clock.record("frame_figures", figuresMs);
   StageClock::report("lbm", lbmMs, clock.deviceMs("lbm"));
   StageClock::report("extract", writer.extractMs());
   StageClock::report("write", writer.writeMs());
+  if (writer.commitMs() > 0.0)
+    log::verbose("the frames' commits (each file forced to disk, then renamed): " +
+                 std::to_string(int(writer.commitMs())) + " ms");
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
   interrupt::check(std::to_string(o.frames) + " complete frames" + (to.folder ? " in " + to.folder->string() : ""));
@@ -465,14 +472,15 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                  "a little off it; a larger " +
                  nameOf(Parameter::Tolerance) + " accepts that");
 
-  if (!targetTree) targetTree = std::make_shared<const TriangleBvh>(target, TriangleBvh::Queries::ClosestOnly);
-  const TriangleBvh lastTree(meshes.back(), TriangleBvh::Queries::ClosestOnly);
-  const SurfaceComparison final =
-      compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false});
-  // Against what the grid can hold of the target, every vertex included: how
-  // far the morph is from arriving.
-  const SurfaceComparison arrival = frameReport.compareWithTargetLevel(meshes.back(), lastTree);
-  const MeshTopology last = analyzeTopology(meshes.back());
+  const auto [final, arrival, last] = clock.time("final_figures", [&] {
+    if (!targetTree) targetTree = std::make_shared<const TriangleBvh>(target, TriangleBvh::Queries::ClosestOnly);
+    const TriangleBvh lastTree(meshes.back(), TriangleBvh::Queries::ClosestOnly);
+    // Against what the grid can hold of the target, every vertex included:
+    // how far the morph is from arriving.
+    return std::tuple{
+        compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false}),
+        frameReport.compareWithTargetLevel(meshes.back(), lastTree), analyzeTopology(meshes.back())};
+  });
   return {
       {"command", "morph"},
       {"source", sourcePath.string()},

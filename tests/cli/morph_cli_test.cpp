@@ -62,7 +62,8 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
   auto report = nlohmann::json::parse(r.out);
   for (const char* key : {"steps", "frames", "converged_at_step", "ms", "mlups", "final"})
     EXPECT_TRUE(report.contains(key)) << key;
-  for (const char* stage : {"sdf", "lbm", "extract", "write"}) EXPECT_TRUE(report["ms"].contains(stage)) << stage;
+  for (const char* stage : {"sdf", "lbm", "extract", "write", "commit", "last_frames", "final_figures"})
+    EXPECT_TRUE(report["ms"].contains(stage)) << stage;
   EXPECT_GT(report["device_ms"].value("lbm", 0.0), 0.0) << report["device_ms"];
   for (const auto& [stage, ms] : report["device_ms"].items())
     EXPECT_LE(ms.get<double>(), report["ms"][stage].get<double>()) << stage;

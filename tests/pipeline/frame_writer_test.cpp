@@ -74,5 +74,25 @@ TEST(FrameWriter, StopLeavesTheFirstFramesWholeAndNothingElse)
   }
 }
 
+// The commits' time is counted on its own (commitMs), not in the write
+// stage's, and only where there are files to commit.
+TEST(FrameWriter, CountsTheCommitsTimeApartAndOnlyForFiles)
+{
+  testing::ScratchFolder folder;
+  FrameWriter files(unitGrid(), folder.path(), ".obj", kFrames, FrameWriter::Keep::LastFrame);
+  for (int k = 0; k < kFrames; ++k) files.push(k, sphereOfFrame(k));
+  files.finish();
+  EXPECT_GT(files.commitMs(), 0.0);
+  EXPECT_GT(files.writeMs(), 0.0);
+
+  int handed = 0;
+  FrameWriter sink(
+      unitGrid(), [&](int, const TriangleMesh&) { ++handed; }, kFrames, FrameWriter::Keep::LastFrame);
+  for (int k = 0; k < kFrames; ++k) sink.push(k, sphereOfFrame(k));
+  sink.finish();
+  EXPECT_EQ(handed, kFrames);
+  EXPECT_EQ(sink.commitMs(), 0.0);
+}
+
 }  // namespace
 }  // namespace lbmshape

@@ -189,6 +189,14 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh)
       int64_t(referenced) - int64_t(result.edges) + int64_t(result.triangles - result.degenerateTriangles);
   if (result.closedManifold) result.genus = (2 * int64_t(result.components) - result.eulerCharacteristic) / 2;
 
+  const AreaAndVolume sums = areaAndSignedVolume(mesh);
+  result.area = sums.area;
+  result.signedVolume = sums.signedVolume;
+  return result;
+}
+
+AreaAndVolume areaAndSignedVolume(const TriangleMesh& mesh)
+{
   // Volume about the box centre, so that a mesh far from the origin does not
   // lose its digits to cancellation. Summed in chunks of a fixed size,
   // added in order: the same sums whatever the number of threads.
@@ -205,8 +213,9 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh)
       areas[k] += 0.5 * glm::length(glm::cross(b - a, c - a));
       volumes[k] += glm::dot(a, glm::cross(b, c)) / 6.0;
     }
-  for (size_t k = 0; k < chunks; ++k) result.area += areas[k], result.signedVolume += volumes[k];
-  return result;
+  AreaAndVolume sums;
+  for (size_t k = 0; k < chunks; ++k) sums.area += areas[k], sums.signedVolume += volumes[k];
+  return sums;
 }
 
 }  // namespace lbmshape

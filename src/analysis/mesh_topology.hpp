@@ -41,4 +41,11 @@ struct MeshTopology {
 // Throws InputError when a triangle refers to a vertex the mesh lacks.
 MeshTopology analyzeTopology(const TriangleMesh& mesh);
 
+// MeshTopology's area and signedVolume alone (the same sums, in the same
+// order), for a mesh whose indices are known to be in range.
+struct AreaAndVolume {
+  double area = 0.0, signedVolume = 0.0;
+};
+AreaAndVolume areaAndSignedVolume(const TriangleMesh& mesh);
+
 }  // namespace lbmshape

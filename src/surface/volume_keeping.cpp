@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "surface/field_sampling.hpp"
+
 namespace lbmshape {
 namespace {
 
@@ -83,6 +85,59 @@ void shiftField(Volume& field, double d)
 void shiftField(BandField& field, double d)
 {
   for (float& x : field.values()) x = float(double(x) + d);
+}
+
+namespace {
+
+// Below this |grad X| (voxels a voxel) a vertex is taken to move as if
+// |grad X| were this: where two fronts meet, a blend's gradient can vanish.
+constexpr double leastGradient = 0.25;
+
+template <class Field>
+double volumePerShiftOf(const Field& field, const GridFrame& frame, const TriangleMesh& level)
+{
+  // Per vertex, 1 / |grad X|; then per triangle, a third of its area to each
+  // corner. Summed in chunks of a fixed size, added in order: the same sum
+  // whatever the number of threads.
+  std::vector<double> speed(level.positions.size());
+#pragma omp parallel for schedule(static)
+  for (size_t v = 0; v < speed.size(); ++v) {
+    const glm::dvec3 gradient = sampleWithGradient(field, frame.toGrid(level.positions[v])).second;
+    speed[v] = 1.0 / std::max(glm::length(gradient), leastGradient);
+  }
+  constexpr size_t chunk = 16384;
+  const size_t chunks = (level.triangles.size() + chunk - 1) / chunk;
+  std::vector<double> sums(chunks, 0.0);
+#pragma omp parallel for schedule(static)
+  for (size_t k = 0; k < chunks; ++k)
+    for (size_t i = k * chunk; i < std::min(level.triangles.size(), (k + 1) * chunk); ++i) {
+      const glm::uvec3& t = level.triangles[i];
+      const glm::dvec3 &a = level.positions[t.x], &b = level.positions[t.y], &c = level.positions[t.z];
+      const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+      sums[k] += area * (speed[t.x] + speed[t.y] + speed[t.z]) / 3.0;
+    }
+  double perShift = 0.0;
+  for (double s : sums) perShift += s;
+  return perShift * frame.voxel;
+}
+
+}  // namespace
+
+double volumePerShift(const Volume& field, const GridFrame& frame, const TriangleMesh& level)
+{
+  return volumePerShiftOf(field, frame, level);
+}
+
+double volumePerShift(const BandField& field, const GridFrame& frame, const TriangleMesh& level)
+{
+  return volumePerShiftOf(field, frame, level);
+}
+
+double meshVolumeShift(double wanted, double volume, double perShift, double mostRelative)
+{
+  const double missing = wanted - volume;
+  if (!(perShift > 0.0) || !(std::abs(missing) <= mostRelative * std::abs(wanted))) return 0.0;
+  return missing / perShift;
 }
 
 }  // namespace lbmshape

@@ -95,7 +95,7 @@ TEST_F(Denoise, KeepsTheVolumeOfACleanShapeUnlessAskedToShrink)
   options.grid.resolution = 64;
   options.steps = 7;
   const DenoiseResult kept = run(torus, options);
-  EXPECT_NEAR(analyzeTopology(kept.mesh).signedVolume / volume, 1.0, 0.005);
+  EXPECT_NEAR(analyzeTopology(kept.mesh).signedVolume / volume, 1.0, 0.001);
   EXPECT_GT(kept.report["volume_shift_voxels"].get<double>(), 0.05);
   options.keepVolume = false;
   const DenoiseResult shrunk = run(torus, options);
@@ -105,6 +105,25 @@ TEST_F(Denoise, KeepsTheVolumeOfACleanShapeUnlessAskedToShrink)
   // the same surface but for the offset (and marching cubes' triangles), so
   // their normals agree (measured: 1.3 degrees).
   EXPECT_LT(compareSurfaces(kept.mesh, shrunk.mesh, ComparisonOptions{20000}).meanNormalAngle, 2.0);
+}
+
+// On a coarse grid the field's cells keep the volume but marching cubes'
+// triangles, chords of the curved surface, enclose less (on this torus at
+// 32 cells: 1.3 % less on the band, 1.5 % on the grid, without the
+// triangles' shift); the output's triangles are given the input mesh's
+// volume by one more shift of the field.
+TEST_F(Denoise, KeepsTheInputMeshsVolumeOnACoarseGrid)
+{
+  const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 96, 48);
+  const double volume = analyzeTopology(torus).signedVolume;
+  for (bool dense : {false, true}) {
+    DenoiseOptions options;
+    options.grid.resolution = 32;
+    options.dense = dense;
+    const DenoiseResult r = run(torus, options);
+    EXPECT_NEAR(analyzeTopology(r.mesh).signedVolume / volume, 1.0, 0.002) << (dense ? "grid" : "band");
+    EXPECT_NEAR(r.report["volume_change"].get<double>(), 0.0, 0.002);
+  }
 }
 
 // Sharp edges are what --preserve-features is for: on a clean box, isotropic

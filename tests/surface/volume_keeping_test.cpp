@@ -5,6 +5,8 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "analysis/mesh_topology.hpp"
+#include "surface/marching_cubes.hpp"
 #include "surface/volume_keeping.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
@@ -60,6 +62,61 @@ TEST(VolumeKeeping, TheBandGivesTheGridsShift)
   EXPECT_NEAR(d, volumeKeepingShift(grid, enclosedVoxels(sphere(12.0)), 2.0), 1e-3);
   shiftField(band, d);
   EXPECT_NEAR(enclosedVoxels(band), enclosed, 1e-6 * enclosed);
+}
+
+// The triangles' side of keeping the volume: how fast a zero level's volume
+// grows as the field is shifted, and the shift that gives the triangles
+// the volume wanted.
+const GridFrame unitFrame{glm::dvec3(0.0), 1.0, extent};
+
+TEST(VolumeKeeping, TheVolumePerShiftIsTheAreaOverTheGradient)
+{
+  const Volume distance = sphere(12.0);
+  const TriangleMesh level = extractSurface(distance, unitFrame);
+  const double area = areaAndSignedVolume(level).area;
+  EXPECT_NEAR(volumePerShift(distance, unitFrame, level), area, 0.01 * area);
+  // Half the gradient: the surface moves twice as far a shift.
+  Volume halved = distance;
+  for (float& x : halved.values()) x *= 0.5f;
+  EXPECT_NEAR(volumePerShift(halved, unitFrame, level), 2.0 * area, 0.02 * area);
+  // In world units: volume per voxel of shift.
+  const GridFrame coarse{glm::dvec3(0.0), 0.5, extent};
+  const TriangleMesh scaled = extractSurface(distance, coarse);
+  EXPECT_NEAR(volumePerShift(distance, coarse, scaled), 0.5 * areaAndSignedVolume(scaled).area,
+              0.01 * 0.5 * areaAndSignedVolume(scaled).area);
+}
+
+TEST(VolumeKeeping, TheMeshShiftGivesTheTrianglesTheVolumeWanted)
+{
+  // Marching cubes' chords enclose less than the sphere they cut.
+  const double radius = 7.3;
+  const double exact = 4.0 / 3.0 * glm::pi<double>() * radius * radius * radius;
+  Volume field = sphere(radius);
+  const TriangleMesh before = extractSurface(field, unitFrame);
+  const double missingBefore = exact - areaAndSignedVolume(before).signedVolume;
+  ASSERT_GT(missingBefore, 0.002 * exact) << "the chords' bias this test is about";
+  const double d =
+      meshVolumeShift(exact, areaAndSignedVolume(before).signedVolume, volumePerShift(field, unitFrame, before), 0.1);
+  EXPECT_GT(d, 0.0);
+  shiftField(field, d);
+  const double after = areaAndSignedVolume(extractSurface(field, unitFrame)).signedVolume;
+  EXPECT_NEAR(after, exact, 0.1 * missingBefore);
+}
+
+TEST(VolumeKeeping, AVolumeFarOffIsNotTheTrianglesBias)
+{
+  EXPECT_DOUBLE_EQ(meshVolumeShift(100.0, 95.0, 10.0, 0.1), 0.5);
+  EXPECT_DOUBLE_EQ(meshVolumeShift(100.0, 105.0, 10.0, 0.1), -0.5);
+  EXPECT_EQ(meshVolumeShift(100.0, 80.0, 10.0, 0.1), 0.0);
+  EXPECT_EQ(meshVolumeShift(100.0, 95.0, 0.0, 0.1), 0.0);
+}
+
+TEST(VolumeKeeping, TheBandGivesTheGridsVolumePerShift)
+{
+  const Volume grid = sphere(11.0);
+  const BandField band = testing::bandOf(grid, testing::bricksNear(grid, 6.0));
+  const TriangleMesh level = extractSurface(grid, unitFrame);
+  EXPECT_NEAR(volumePerShift(band, unitFrame, level), volumePerShift(grid, unitFrame, level), 1e-9);
 }
 
 }  // namespace

@@ -10,6 +10,9 @@
 namespace lbmshape {
 namespace {
 
+// The longest side of a grid, in cells (cell indices stay well inside int).
+constexpr int maxCellsASide = 1 << 16;
+
 void checkBox(const Bounds& box)
 {
   const glm::dvec3 s = box.size();
@@ -33,10 +36,10 @@ GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
     // Cell centres span the box plus the margin on both sides.
     double span = size[a] / voxel + 2.0 * marginVoxels;
     double count = std::ceil(span - 1e-9) + 1.0;
-    if (count > 1 << 16) {
+    if (count > maxCellsASide) {
       std::ostringstream m;
-      m << "a voxel of " << voxel << " makes the grid " << count << " cells long; use a larger "
-        << nameOf(Parameter::Voxel) << " or " << nameOf(Parameter::Resolution);
+      m << "a voxel of " << voxel << " makes the grid " << count << " cells long, more than " << maxCellsASide
+        << "; use a larger " << nameOf(Parameter::Voxel);
       throw UsageError(m.str());
     }
     cells[a] = int(count);
@@ -56,6 +59,9 @@ GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVo
       << " voxels; use at least " << int(std::ceil(2.0 * marginVoxels + 4.0));
     throw UsageError(m.str());
   }
+  if (resolution > maxCellsASide)
+    throw UsageError(nameOf(Parameter::Resolution) + " " + std::to_string(resolution) + " is more than " +
+                     std::to_string(maxCellsASide) + " cells a side; use a smaller one");
   const glm::dvec3 size = box.size();
   const double longest = std::max({size.x, size.y, size.z});
   // resolution = longest/voxel + 2 margin + 1 cell centres along the longest side

@@ -3,9 +3,12 @@
 // side, and the box in the middle, whatever the mesh's position and units.
 #include <cmath>
 
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "core/parameter_names.hpp"
 #include "pipeline/denoise.hpp"
 #include "sdf/grid_frame.hpp"
 
@@ -89,6 +92,28 @@ TEST(GridFrame, RejectsWhatCannotBeAGrid)
   EXPECT_THROW(frameWithVoxel(kBox, 0.0, kMargin), UsageError);
   EXPECT_THROW(frameWithVoxel(kBox, 1e-6, kMargin), UsageError) << "millions of cells along a side";
   EXPECT_THROW(frameWithVoxel(Bounds{{1, 1, 1}, {1, 1, 1}}, 0.1, kMargin), InputError) << "a point has no size";
+}
+
+// Too many cells a side is the option's fault, and the message says which
+// way to change it: a smaller resolution, a larger voxel.
+TEST(GridFrame, TooLongAGridNamesTheWayBack)
+{
+  try {
+    frameWithResolution(kBox, 100000, kMargin);
+    FAIL() << "a grid of 100000 cells a side";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(nameOf(Parameter::Resolution) + " 100000"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("smaller"), std::string::npos) << e.what();
+  }
+  try {
+    frameWithVoxel(kBox, 1e-6, kMargin);
+    FAIL() << "millions of cells a side";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger " + nameOf(Parameter::Voxel)), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find(nameOf(Parameter::Resolution)), std::string::npos)
+        << "a larger --res would be longer still";
+  }
+  EXPECT_NO_THROW(frameWithResolution(kBox, 1 << 16, kMargin));
 }
 
 }  // namespace

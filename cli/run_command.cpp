@@ -86,6 +86,8 @@ nlohmann::json readJobs(const fs::path& file)
     jobs = nlohmann::json::parse(text.bytes(), check);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError("cannot read " + file.string() + ": not valid JSON (" + e.what() + ")");
+  } catch (const nlohmann::json::out_of_range& e) {  // a number beyond a double's range
+    throw InputError("cannot read " + file.string() + ": a number out of range (" + e.what() + ")");
   } catch (const TooDeep&) {
     throw InputError("cannot read " + file.string() + ": its JSON nests more than " + std::to_string(maxJobsFileDepth) +
                      " levels deep (a jobs file is an array of objects of options)");

@@ -1,6 +1,7 @@
 #include "core/progress.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -11,9 +12,16 @@ namespace lbmshape {
 
 ProgressTiming ProgressTiming::current()
 {
+  // A number of milliseconds, at most a day (a wait far longer overflows the
+  // clock's arithmetic, and the reporter would spin); anything else is
+  // ignored.
   if (const char* ms = std::getenv("LBMSHAPE_PROGRESS_MS")) {
-    const double value = std::max(0.0, std::atof(ms));
-    return {value, std::max(value, 1.0)};
+    char* end = nullptr;
+    const double value = std::strtod(ms, &end);
+    if (end != ms && *end == '\0' && std::isfinite(value)) {
+      const double bounded = std::clamp(value, 0.0, 86400e3);
+      return {bounded, std::max(bounded, 1.0)};
+    }
   }
   // A terminal line is rewritten in place, so it can change often; a log
   // file keeps every line, so it gets fewer.

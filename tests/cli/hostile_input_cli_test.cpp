@@ -202,6 +202,16 @@ TEST(JobsFileInput, NestedWithoutBoundIsAnInputErrorNotAStackOverflow)
   EXPECT_NE(result.err.find("nests more than"), std::string::npos) << result.err;
 }
 
+TEST(JobsFileInput, ANumberBeyondADoubleIsAnInputError)
+{
+  testing::ScratchFolder folder;
+  writeBytes(folder / "jobs.json", R"([{"command": "denoise", "input": "a.obj", "output": "b.obj", "gamma": 1e999}])");
+  const auto result = testing::runLbmshape({"run", (folder / "jobs.json").string()});
+  EXPECT_EQ(result.exitCode, 3) << result.err;
+  EXPECT_NE(result.err.find("out of range"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find("internal error"), std::string::npos) << result.err;
+}
+
 TEST(JobsFileInput, AFolderIsAnInputError)
 {
   testing::ScratchFolder folder;

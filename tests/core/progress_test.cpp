@@ -105,5 +105,34 @@ TEST_F(ProgressLine, QuietMeansNoLine)
   EXPECT_EQ(err.text(), "");
 }
 
+// LBMSHAPE_PROGRESS_MS: a number of milliseconds, at most a day; what is
+// not a finite number is ignored. (A huge value once made every wait of the
+// reporter return at once: a stage never ended.)
+TEST_F(ProgressLine, TheIntervalFromTheEnvironmentIsBounded)
+{
+  setenv("LBMSHAPE_PROGRESS_MS", "250", 1);
+  EXPECT_EQ(ProgressTiming::current().firstMs, 250.0);
+  setenv("LBMSHAPE_PROGRESS_MS", "0", 1);
+  EXPECT_EQ(ProgressTiming::current().firstMs, 0.0);
+  EXPECT_EQ(ProgressTiming::current().everyMs, 1.0);
+  for (const char* huge : {"1e13", "inf", "99999999999999999999"}) {
+    setenv("LBMSHAPE_PROGRESS_MS", huge, 1);
+    EXPECT_LE(ProgressTiming::current().firstMs, 86400e3) << huge;
+  }
+  unsetenv("LBMSHAPE_PROGRESS_MS");
+  const ProgressTiming unset = ProgressTiming::current();
+  for (const char* bad : {"abc", "nan", "12ms", ""}) {
+    setenv("LBMSHAPE_PROGRESS_MS", bad, 1);
+    EXPECT_EQ(ProgressTiming::current().firstMs, unset.firstMs) << bad;
+  }
+  // A stage under a bound a day long ends at once.
+  setenv("LBMSHAPE_PROGRESS_MS", "1e13", 1);
+  const Stopwatch clock;
+  {
+    Progress progress("stage");
+  }
+  EXPECT_LT(clock.ms(), 60e3);
+}
+
 }  // namespace
 }  // namespace lbmshape

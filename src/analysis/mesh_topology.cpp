@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/ordered_sum.hpp"
 
 namespace lbmshape {
 namespace {
@@ -198,24 +199,16 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh)
 AreaAndVolume areaAndSignedVolume(const TriangleMesh& mesh)
 {
   // Volume about the box centre, so that a mesh far from the origin does not
-  // lose its digits to cancellation. Summed in chunks of a fixed size,
-  // added in order: the same sums whatever the number of threads.
+  // lose its digits to cancellation; the same sums whatever the number of
+  // threads (orderedSum).
   const glm::dvec3 centre = bounds(mesh).centre();
-  constexpr size_t chunk = 16384;
-  const size_t chunks = (mesh.triangles.size() + chunk - 1) / chunk;
-  std::vector<double> areas(chunks, 0.0), volumes(chunks, 0.0);
-#pragma omp parallel for schedule(static)
-  for (size_t k = 0; k < chunks; ++k)
-    for (size_t i = k * chunk; i < std::min(mesh.triangles.size(), (k + 1) * chunk); ++i) {
-      const glm::uvec3& t = mesh.triangles[i];
-      const glm::dvec3 a = mesh.positions[t[0]] - centre, b = mesh.positions[t[1]] - centre,
-                       c = mesh.positions[t[2]] - centre;
-      areas[k] += 0.5 * glm::length(glm::cross(b - a, c - a));
-      volumes[k] += glm::dot(a, glm::cross(b, c)) / 6.0;
-    }
-  AreaAndVolume sums;
-  for (size_t k = 0; k < chunks; ++k) sums.area += areas[k], sums.signedVolume += volumes[k];
-  return sums;
+  const glm::dvec2 sums = orderedSum<glm::dvec2>(mesh.triangles.size(), [&](size_t i) {
+    const glm::uvec3& t = mesh.triangles[i];
+    const glm::dvec3 a = mesh.positions[t[0]] - centre, b = mesh.positions[t[1]] - centre,
+                     c = mesh.positions[t[2]] - centre;
+    return glm::dvec2(0.5 * glm::length(glm::cross(b - a, c - a)), glm::dot(a, glm::cross(b, c)) / 6.0);
+  });
+  return {sums.x, sums.y};
 }
 
 }  // namespace lbmshape

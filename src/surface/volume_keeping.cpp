@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ordered_sum.hpp"
 #include "surface/field_sampling.hpp"
 
 namespace lbmshape {
@@ -97,27 +98,18 @@ template <class Field>
 double volumePerShiftOf(const Field& field, const GridFrame& frame, const TriangleMesh& level)
 {
   // Per vertex, 1 / |grad X|; then per triangle, a third of its area to each
-  // corner. Summed in chunks of a fixed size, added in order: the same sum
-  // whatever the number of threads.
+  // corner (orderedSum: the same sum whatever the number of threads).
   std::vector<double> speed(level.positions.size());
 #pragma omp parallel for schedule(static)
   for (size_t v = 0; v < speed.size(); ++v) {
     const glm::dvec3 gradient = sampleWithGradient(field, frame.toGrid(level.positions[v])).second;
     speed[v] = 1.0 / std::max(glm::length(gradient), leastGradient);
   }
-  constexpr size_t chunk = 16384;
-  const size_t chunks = (level.triangles.size() + chunk - 1) / chunk;
-  std::vector<double> sums(chunks, 0.0);
-#pragma omp parallel for schedule(static)
-  for (size_t k = 0; k < chunks; ++k)
-    for (size_t i = k * chunk; i < std::min(level.triangles.size(), (k + 1) * chunk); ++i) {
-      const glm::uvec3& t = level.triangles[i];
-      const glm::dvec3 &a = level.positions[t.x], &b = level.positions[t.y], &c = level.positions[t.z];
-      const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
-      sums[k] += area * (speed[t.x] + speed[t.y] + speed[t.z]) / 3.0;
-    }
-  double perShift = 0.0;
-  for (double s : sums) perShift += s;
+  const double perShift = orderedSum<double>(level.triangles.size(), [&](size_t i) {
+    const glm::uvec3& t = level.triangles[i];
+    const glm::dvec3 &a = level.positions[t.x], &b = level.positions[t.y], &c = level.positions[t.z];
+    return 0.5 * glm::length(glm::cross(b - a, c - a)) * (speed[t.x] + speed[t.y] + speed[t.z]) / 3.0;
+  });
   return perShift * frame.voxel;
 }
 

@@ -13,6 +13,7 @@
 #include "bench/paper_table.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/parameter_bounds.hpp"
 #include "gpu/gpu_context.hpp"
 #include "lbm/band_width.hpp"
 #include "lbm/lattice_memory.hpp"
@@ -21,6 +22,7 @@
 #include "lbm/vulkan_solver.hpp"
 #include "pipeline/denoise.hpp"
 #include "pipeline/smoothing_stop.hpp"
+#include "sdf/grid_frame.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -123,8 +125,10 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
 {
   // Everything the user chose is checked before the device is touched.
   relaxation::checkGamma(options.settings.gamma, "--gamma");
-  if (options.settings.steps < 1) throw UsageError("--steps must be at least 1");
-  if (options.settings.runs < 1) throw UsageError("--runs must be at least 1");
+  if (options.settings.steps < 1 || options.settings.steps > parameter_bounds::maxSteps)
+    throw UsageError("--steps must be from 1 to " + std::to_string(parameter_bounds::maxSteps));
+  if (options.settings.runs < 1 || options.settings.runs > parameter_bounds::maxBenchRuns)
+    throw UsageError("--runs must be from 1 to " + std::to_string(parameter_bounds::maxBenchRuns));
   std::vector<Extent3> sizes;
   if (options.paper) {
     for (const auto& row : paper::table1) sizes.push_back(row.size);
@@ -132,6 +136,15 @@ void runBench(const CommonOptions& common, const BenchOptions& options)
     sizes.push_back(Extent3{options.size[0], options.size[1], options.size[2]});
   }
   for (const auto& e : sizes) checkExtent(e);
+  // A single size is also timed as a whole denoise at --res of its longest
+  // side, which must hold the default margin: refused now, not after the
+  // lattice's timings.
+  const int leastSide = leastResolution(GridOptions{}.marginVoxels);
+  if (!options.paper && std::max({options.size[0], options.size[1], options.size[2]}) < leastSide)
+    throw UsageError("--size " + sizes.front().toString() +
+                     " is too small: its longest side is also timed as a whole "
+                     "denoise at --res, which needs at least " +
+                     std::to_string(leastSide));
   if (options.band) {
     const double halfWidth =
         options.halfWidth.value_or(streamingHalfWidth(options.settings.gamma, smoothing_stop::mostSteps));

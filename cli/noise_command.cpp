@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/number_text.hpp"
 #include "mesh/mesh_geometry.hpp"
 #include "mesh/mesh_noise.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -51,8 +52,8 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
                  {"mean_edge_length", edge},
                  {"seed", args.seed}});
   if (!common.json)
-    log::info("wrote " + args.output + " (noise sigma " + std::to_string(args.sigma * unit) + " = " +
-              std::to_string(args.sigma) + " " + unitName + ")");
+    log::info("wrote " + args.output + " (noise sigma " + numberText(args.sigma * unit) + " = " +
+              numberText(args.sigma) + " " + unitName + ")");
 }
 
 }  // namespace

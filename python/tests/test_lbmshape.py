@@ -112,7 +112,7 @@ class Denoise(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "^gamma must be a positive number"):
             lbmshape.denoise(v, f, gamma=-1)
         # The keyword, not the command line's flag (--res) or the C++ field.
-        with self.assertRaisesRegex(ValueError, "^res must be at least 8$"):
+        with self.assertRaisesRegex(ValueError, "^res 4 is too coarse for a margin of 4 voxels; use at least 12$"):
             lbmshape.denoise(v, f, res=4)
         with self.assertRaisesRegex(ValueError, "^cs must be a morphing speed"):
             lbmshape.morph(v, f, v, f, cs=2)

@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "core/stopwatch.hpp"
 #include "lbm/lattice_memory.hpp"
 
@@ -39,9 +40,14 @@ StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, doub
   solver.step(1);
   timing.firstStepMs = first.ms();
   Stopwatch warm;
+  // A stop is honoured between steps and runs: one run of the user's
+  // --steps is the longest wait.
+  const std::string nothingPrinted = "the timing was stopped before its figures";
+  interrupt::check(nothingPrinted);
   while (warm.ms() < settings.warmupMs) {
     solver.step(1);
     ++timing.warmupSteps;
+    interrupt::check(nothingPrinted);
   }
   const double warmMs = warm.ms();
 
@@ -56,6 +62,7 @@ StepTiming timeSteps(SteppingSolver& solver, const BenchSettings& settings, doub
     Stopwatch watch;
     solver.step(timing.stepsPerRun);
     perStep.push_back(watch.ms() / timing.stepsPerRun);
+    interrupt::check(nothingPrinted);
   }
   std::sort(perStep.begin(), perStep.end());
   timing.msPerStep = perStep[perStep.size() / 2];

@@ -10,6 +10,8 @@ namespace lbmshape::parameter_bounds {
 // Lattice steps of one denoise or one whole morph: a million steps of a
 // 128^3 band take hours; more is a typo.
 inline constexpr long maxSteps = 1'000'000;
+// Timed runs of one bench: the median of more tells nothing new.
+inline constexpr int maxBenchRuns = 1000;
 // Frames of one morph: each is a mesh file.
 inline constexpr int maxFrames = 100'000;
 // gamma, voxels^2 per step. Above 1, tau = 3 gamma + 1/2 > 3.5 and the

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/number_text.hpp"
 #include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
 #include "lbm/d3q19.hpp"
@@ -22,13 +23,13 @@ void checkGamma(double gamma, std::string_view what)
   const auto name = [what] { return what.empty() ? nameOf(Parameter::Gamma) : std::string(what); };
   if (!std::isfinite(gamma) || gamma <= 0.0) {
     std::ostringstream message;
-    message << name() << " must be a positive number of voxels^2 per step (got " << gamma
+    message << name() << " must be a positive number of voxels^2 per step (got " << numberText(gamma)
             << "); it sets tau = 3*gamma + 1/2, and tau <= 1/2 is unstable";
     throw UsageError(message.str());
   }
   if (gamma > parameter_bounds::maxGamma) {
     std::ostringstream message;
-    message << name() << " = " << gamma << " is above " << parameter_bounds::maxGamma
+    message << name() << " = " << numberText(gamma) << " is above " << parameter_bounds::maxGamma
             << " voxel^2 per step, where the lattice stops following the diffusion equation (tau = 3*gamma + 1/2 > 3.5"
             << " relaxes too slowly); for more smoothing, give more steps";
     throw UsageError(message.str());
@@ -36,7 +37,8 @@ void checkGamma(double gamma, std::string_view what)
   // The reason left: the lattice computes in fp32, and below about 5e-9
   // omega = 1/tau rounds to exactly 2, which is tau = 1/2 again.
   std::ostringstream message;
-  message << name() << " = " << gamma << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
+  message << name() << " = " << numberText(gamma)
+          << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
           << " where the scheme is unstable; use at least 1e-7";
   throw UsageError(message.str());
 }

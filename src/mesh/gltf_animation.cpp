@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/log.hpp"
 #include "mesh/glb_stream.hpp"
 #include "mesh/gltf_builder.hpp"
@@ -54,6 +55,12 @@ struct GltfAnimation::Model {
   std::optional<GlbStream> stream;
 };
 
+bool timeableInSinglePrecision(size_t frameCount, double fps)
+{
+  // Keys closer than float resolution would not be increasing any more.
+  return frameCount == 0 || float(double(frameCount) / fps) > float(double(frameCount - 1) / fps);
+}
+
 GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, double fps, GltfCompression compression)
     : path_(std::move(path)), frameCount_(frameCount), fps_(fps)
 {
@@ -64,11 +71,10 @@ GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, doub
                      path_.extension().string() + "'");
   if (frameCount == 0) throw UsageError(prefix + "the animation has no frames");
   if (!std::isfinite(fps) || fps <= 0)
-    throw UsageError(prefix + "the frame rate must be a positive number, not " + std::to_string(fps));
-  // Keys closer than float resolution would not be increasing any more.
-  if (float(double(frameCount) / fps) <= float(double(frameCount - 1) / fps))
-    throw UsageError(prefix + std::to_string(frameCount) + " frames at " + std::to_string(fps) +
-                     " per second are too many to time in single precision");
+    throw UsageError(prefix + "the frame rate must be a positive number, not " + numberText(fps));
+  if (!timeableInSinglePrecision(frameCount, fps))
+    throw UsageError(prefix + std::to_string(frameCount) + " frames at " + numberText(fps) +
+                     " per second are closer together than single precision can time; use a lower frame rate");
   model_ = std::make_unique<Model>(compression);
   if (format == MeshFormat::Glb && compression == GltfCompression::None)
     model_->stream.emplace(path_, jsonRoomBase + jsonRoomPerFrame * frameCount);
@@ -83,7 +89,7 @@ void GltfAnimation::add(const TriangleMesh& frame)
     throw std::logic_error("the animation of " + std::to_string(frameCount_) + " frames was given one more");
   const std::string name = "frame " + std::to_string(i);
   // A frame may be empty (a morph through nothing): its node has no mesh.
-  requireWritable(frame, path_, name, EmptyMesh::Allowed);
+  requireWritable(frame, path_, name, EmptyMesh::Allowed, CoordinatePrecision::Single);
   GltfBuilder& builder = model_->builder;
   // At rest (no animation playing) only frame 0 is shown.
   const int node = builder.addNode(builder.addMesh(frame, name), name,

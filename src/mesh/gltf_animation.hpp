@@ -32,6 +32,11 @@ void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, con
 // checks and errors as writeGltfAnimation(): the arguments' in the
 // constructor (which also makes the temporary file, so an unwritable folder
 // is reported at once), a frame's in add(), a frame missing in write().
+// Whether glTF's single-precision key times tell `frameCount` frames at
+// `fps` apart: at a high enough rate the last frames' times round to the
+// same float.
+bool timeableInSinglePrecision(size_t frameCount, double fps);
+
 class GltfAnimation {
 public:
   GltfAnimation(std::filesystem::path path, size_t frameCount, double fps,

@@ -50,7 +50,8 @@ std::unique_ptr<AtomicFile> writeMeshUncommitted(const TriangleMesh& mesh, const
 {
   const auto format = outputFormat(path);
   requireCompressible(format, path, compression);
-  requireWritable(mesh, path, "the mesh", empty);
+  requireWritable(mesh, path, "the mesh", empty,
+                  format == MeshFormat::Obj ? CoordinatePrecision::Double : CoordinatePrecision::Single);
   auto file = std::make_unique<AtomicFile>(path);
   switch (format) {
   case MeshFormat::Obj: writeObj(mesh, *file); break;

@@ -1,12 +1,15 @@
 #include "mesh/writable_mesh.hpp"
 
+#include <limits>
+
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
 
 void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what,
-                     EmptyMesh empty)
+                     EmptyMesh empty, CoordinatePrecision precision)
 {
   const std::string prefix = "cannot write " + path.string() + ": " + what;
   if (mesh.triangles.empty() && empty == EmptyMesh::Refused) throw OutputError(prefix + " has no triangles");
@@ -15,6 +18,12 @@ void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path
       throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");
   for (const auto& p : mesh.positions)
     if (!isFinite(p)) throw OutputError(prefix + " has a coordinate that is not a finite number");
+  const double largest = double(std::numeric_limits<float>::max());
+  if (precision == CoordinatePrecision::Single)
+    for (const auto& p : mesh.positions)
+      if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(largest))))
+        throw OutputError(prefix + " has a coordinate beyond single precision (" + numberText(largest) + "), which " +
+                          path.extension().string() + " stores; write .obj, which keeps doubles");
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +
                       std::to_string(mesh.positions.size()) + " vertices");

@@ -14,6 +14,7 @@
 #include "analysis/surface_comparison.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parameter_names.hpp"
 #include "core/folder_lock.hpp"
 #include "core/parameter_bounds.hpp"
@@ -235,6 +236,9 @@ void checkMorphOptions(const MorphOptions& o)
                      nameOf(Parameter::StepsPerFrame) + " times " + nameOf(Parameter::Frames) + " - 1); at most " +
                      std::to_string(parameter_bounds::maxSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError(nameOf(Parameter::Fps) + " must be positive");
+  if (o.animation && !timeableInSinglePrecision(size_t(std::max(o.frames, 0)), o.fps))
+    throw UsageError(nameOf(Parameter::Fps) + " " + numberText(o.fps) + " is too high: the animation's " +
+                     std::to_string(o.frames) + " frames would be closer together than single precision times them");
   if (!(o.tolerance > 0.0)) throw UsageError(nameOf(Parameter::Tolerance) + " must be positive");
   if (!meshFormatOf("x." + o.format))
     throw UsageError(nameOf(Parameter::Format) + " " + o.format +

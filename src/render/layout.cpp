@@ -83,16 +83,22 @@ Framing frame(const Picture& picture, const Rect& cell)
   // Half extents of the box's projection, and its radius for the depth range.
   const glm::dvec3 half = 0.5 * (hi - lo);
   const auto reach = [&](const glm::dvec3& axis) { return glm::dot(half, glm::abs(axis)); };
-  const double halfWidth = std::max(reach(axes.right), 1e-300), halfHeight = std::max(reach(axes.up), 1e-300);
   const double radius = std::max(glm::length(half), 1e-300) * 1.01;
+  // A flat mesh seen edge-on is a line: its thickness no less than a
+  // millionth of its size, so the scale stays finite.
+  const double halfWidth = std::max(reach(axes.right), 1e-6 * radius);
+  const double halfHeight = std::max(reach(axes.up), 1e-6 * radius);
+  framing.unit = radius;
   framing.pixelsPerUnit = 0.92 * std::min(cell.width / (2.0 * halfWidth), cell.height / (2.0 * halfHeight));
-  const double sx = 2.0 * framing.pixelsPerUnit / cell.width, sy = -2.0 * framing.pixelsPerUnit / cell.height;
+  // Clip space from the unit-ball coordinates the vertices are sent in.
+  const double sx = 2.0 * framing.pixelsPerUnit * radius / cell.width;
+  const double sy = -2.0 * framing.pixelsPerUnit * radius / cell.height;
   // Rows are glm's columns: clip = M * (p, 1).
   glm::dmat4 clip(0.0), view(0.0);
   for (int k = 0; k < 3; ++k) {
     clip[k][0] = sx * axes.right[k];
     clip[k][1] = sy * axes.up[k];
-    clip[k][2] = -0.5 / radius * axes.towardsViewer[k];
+    clip[k][2] = -0.5 * axes.towardsViewer[k];
     view[k][0] = axes.right[k];
     view[k][1] = axes.up[k];
     view[k][2] = axes.towardsViewer[k];

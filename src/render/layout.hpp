@@ -31,11 +31,15 @@ int columnsFor(int panels, int asked = 0);
 glm::ivec2 defaultPictureSize(int panels, bool labels, bool legend, int columns = 0);
 Layout arrange(const Picture& picture);
 
-// The camera of a picture: positions relative to `centre` (floats keep
-// their precision there), projected so that the union of the meshes'
-// bounding boxes fills 92 % of a mesh cell in its tighter direction.
+// The camera of a picture, projecting the union of the meshes' bounding
+// boxes to fill 92 % of a mesh cell in its tighter direction. The GPU draws
+// in floats, which keep their precision near 0 but survive neither a mesh
+// 1e38 across (overflow) nor one 1e-40 across (denormals, flushed to zero):
+// a position is sent as (p - centre) / unit, within the unit ball, and the
+// matrices map those coordinates.
 struct Framing {
   glm::dvec3 centre{0.0};
+  double unit = 1.0;                // the meshes' radius about the centre, in the mesh's units
   glm::mat4 clipFromCentred{1.0f};  // Vulkan clip space: y down, depth 0 nearest
   glm::mat4 viewFromCentred{1.0f};  // the camera's rotation (x right, y up, z towards the viewer)
   double pixelsPerUnit = 1.0;       // in the mesh's units

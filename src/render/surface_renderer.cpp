@@ -83,7 +83,7 @@ size_t cornerCount(const Picture& picture)
   return corners;
 }
 
-std::vector<Draw> gather(const Picture& picture, const glm::dvec3& centre, float* vertices)
+std::vector<Draw> gather(const Picture& picture, const Framing& framing, float* vertices)
 {
   std::vector<Draw> draws;
   size_t first = 0;
@@ -95,7 +95,7 @@ std::vector<Draw> gather(const Picture& picture, const glm::dvec3& centre, float
 #pragma omp parallel for schedule(static)
     for (long c = 0; c < long(3 * mesh.triangleCount()); ++c) {
       const uint32_t v = mesh.triangles[size_t(c) / 3][int(c % 3)];
-      const glm::vec3 p(mesh.positions[v] - centre), n = normals[size_t(c)];
+      const glm::vec3 p((mesh.positions[v] - framing.centre) / framing.unit), n = normals[size_t(c)];
       const glm::vec3 colour = panel.colours.empty() ? plainSurfaceColour() : panel.colours[v];
       float* o = out + size_t(c) * RENDER_VERTEX_FLOATS;
       o[0] = p.x, o[1] = p.y, o[2] = p.z, o[3] = n.x, o[4] = n.y, o[5] = n.z, o[6] = colour.r, o[7] = colour.g,
@@ -266,7 +266,7 @@ Image drawSurfaces(gpu::GpuContext& context, const Picture& picture, const Layou
   const gpu::GpuBuffer vertices(context,
                                 std::max<size_t>(cornerCount(picture) * RENDER_VERTEX_FLOATS * sizeof(float), 4),
                                 vk::BufferUsageFlagBits::eVertexBuffer, gpu::MemoryUse::Upload);
-  const std::vector<Draw> draws = gather(picture, framing.centre, reinterpret_cast<float*>(vertices.mapped()));
+  const std::vector<Draw> draws = gather(picture, framing, reinterpret_cast<float*>(vertices.mapped()));
   gpu::GpuBuffer readback(context, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst,
                           gpu::MemoryUse::Readback);
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parameter_names.hpp"
 
 namespace lbmshape {
@@ -21,16 +22,35 @@ void checkBox(const Bounds& box)
   if (std::max({s.x, s.y, s.z}) <= 0.0) throw InputError("the mesh's bounding box has zero size");
 }
 
+// The fewest voxels the mesh's longest side may span: fewer, and no grid
+// resolves its shape (frameWithResolution's least --res, 2 margins + 4).
+constexpr double leastVoxelsAcross = 3.0;
+
 }  // namespace
+
+void checkMargin(double marginVoxels, double leastMarginVoxels)
+{
+  // The largest margin that leaves a grid of at most maxCellsASide cells
+  // room for the least mesh; inf or 1e9 would overflow the arithmetic below.
+  const double mostMargin = (maxCellsASide - leastVoxelsAcross - 1.0) / 2.0;
+  if (!(marginVoxels >= leastMarginVoxels && marginVoxels <= mostMargin))
+    throw UsageError(nameOf(Parameter::Margin) + " must be a number of voxels from " + numberText(leastMarginVoxels) +
+                     " to " + numberText(mostMargin) + ", not " + numberText(marginVoxels));
+}
 
 GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
 {
   checkBox(box);
   if (!(voxel > 0.0) || !std::isfinite(voxel)) throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
-  if (!(marginVoxels >= 0.0)) throw UsageError(nameOf(Parameter::Margin) + " must be zero or more voxels");
+  checkMargin(marginVoxels);
+  const glm::dvec3 size = box.size();
+  const double longest = std::max({size.x, size.y, size.z});
+  if (longest / voxel < leastVoxelsAcross * (1.0 - 1e-12))  // --res at its least gives exactly 3
+    throw UsageError(nameOf(Parameter::Voxel) + " " + numberText(voxel) +
+                     " is too large for the mesh: its longest side (" + numberText(longest) + ") would span under " +
+                     numberText(leastVoxelsAcross) + " voxels; use at most " + numberText(longest / leastVoxelsAcross));
   GridFrame frame;
   frame.voxel = voxel;
-  const glm::dvec3 size = box.size();
   int cells[3];
   for (int a = 0; a < 3; ++a) {
     // Cell centres span the box plus the margin on both sides.
@@ -49,14 +69,22 @@ GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels)
   return frame;
 }
 
+int leastResolution(double marginVoxels)
+{
+  checkMargin(marginVoxels);
+  // The longest side spans leastVoxelsAcross voxels between the margins:
+  // one more cell centre than voxels.
+  return int(std::ceil(2.0 * marginVoxels + leastVoxelsAcross + 1.0));
+}
+
 GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVoxels)
 {
   checkBox(box);
-  if (!(marginVoxels >= 0.0)) throw UsageError(nameOf(Parameter::Margin) + " must be zero or more voxels");
-  if (resolution < 2.0 * marginVoxels + 4.0) {
+  checkMargin(marginVoxels);
+  if (resolution < leastResolution(marginVoxels)) {
     std::ostringstream m;
-    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of " << marginVoxels
-      << " voxels; use at least " << int(std::ceil(2.0 * marginVoxels + 4.0));
+    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of "
+      << numberText(marginVoxels) << " voxels; use at least " << leastResolution(marginVoxels);
     throw UsageError(m.str());
   }
   if (resolution > maxCellsASide)

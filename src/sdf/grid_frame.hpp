@@ -26,6 +26,13 @@ struct GridFrame {
 // margin, and InputError for an empty or non-finite box.
 GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVoxels);
 
+// UsageError naming --margin unless `marginVoxels` is from the least given
+// to the most a grid of 65536 cells a side has room for.
+void checkMargin(double marginVoxels, double leastMarginVoxels = 0.0);
+
+// The least resolution frameWithResolution accepts with this margin.
+int leastResolution(double marginVoxels);
+
 // The same with a given voxel size (world units) instead of a resolution.
 GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels);
 

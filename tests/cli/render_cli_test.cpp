@@ -200,6 +200,40 @@ TEST(Preview, ABadPreviewPathIsRefusedBeforeAnyWork)
   }
 }
 
+TEST(Preview, APreviewThatCannotBeWrittenLeavesNoMeshEither)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "in.obj");
+  const std::vector<std::string> job = {
+      "denoise",   (folder / "in.obj").string(), (folder / "out.glb").string(), "--res", "24", "--compress",
+      "--preview", (folder / "cmp.png").string()};
+  // The sizes the limit falls between: a small mesh, a larger picture.
+  ASSERT_EQ(testing::runLbmshape(job).exitCode, 0);
+  const auto meshBytes = fs::file_size(folder / "out.glb"), pictureBytes = fs::file_size(folder / "cmp.png");
+  const uintmax_t limitBytes = 20 * 1024;
+  ASSERT_LT(meshBytes, limitBytes);
+  ASSERT_GT(pictureBytes, limitBytes);
+  fs::remove(folder / "out.glb");
+  fs::remove(folder / "cmp.png");
+  const auto before = folder.entries();
+
+  // A file-size limit fails the picture's write as a full disk would
+  // (SIGXFSZ ignored: the write returns EFBIG instead of killing).
+  // (prlimit, not the shell's ulimit -f, whose unit differs between shells.)
+  std::string command =
+      "trap '' XFSZ; exec prlimit --fsize=" + std::to_string(limitBytes) + " '" + testing::lbmshapeBinary() + "'";
+  for (const std::string& argument : job) command += " '" + argument + "'";
+  command += " 2>'" + (folder / "err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+  std::ifstream err(folder / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("cmp.png"), std::string::npos) << message;
+  fs::remove(folder / "err.txt");
+  EXPECT_EQ(folder.entries(), before) << "neither the picture nor the mesh";
+}
+
 TEST(Preview, MorphDrawsAContactSheetIntoItsOwnFolder)
 {
   testing::ScratchFolder folder;

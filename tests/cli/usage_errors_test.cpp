@@ -66,6 +66,23 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"compare_too_many_samples",
                   {"compare", "a.obj", "b.obj", "--samples", "4000000000"},
                   "--samples must be from 1 to 10000000"},
+        // Checked before any timing: the whole denoise timed last runs at
+        // --res of the longest side, which needs 12 with the default margin.
+        UsageCase{"size_too_small_for_the_denoise_line", {"bench", "--size", "8,8,11"}, "--size 8x8x11 is too small"},
+        UsageCase{"too_many_runs", {"bench", "--runs", "1001", "--size", "16,16,16"}, "--runs must be from 1 to 1000"},
+        UsageCase{"too_many_bench_steps",
+                  {"bench", "--steps", "1000001", "--size", "16,16,16"},
+                  "--steps must be from 1 to 1000000"},
+        // The value as typed, not rounded to six digits ("1 is above 1").
+        UsageCase{"denoise_gamma_just_above_one",
+                  {"denoise", "in.obj", "out.glb", "--gamma", "1.0000001"},
+                  "--gamma = 1.0000001 is above 1"},
+        UsageCase{"denoise_infinite_margin",
+                  {"denoise", "in.obj", "out.glb", "--margin", "inf"},
+                  "--margin must be a number of voxels from 1 to 32766, not inf"},
+        UsageCase{"morph_fps_too_high_to_time",
+                  {"morph", "a.obj", "b.obj", "frames", "--fps", "1e300"},
+                  "--fps 1e+300 is too high"},
         UsageCase{"half_width_without_band", {"bench", "--half-width", "4", "--size", "8,8,8"}, "--band"},
         UsageCase{
             "band_half_width_zero", {"bench", "--band", "--half-width", "0.5", "--size", "16,16,16"}, "--half-width"},

@@ -68,7 +68,7 @@ TEST(ParameterNames, ALibraryCallerIsToldTheOptionNotTheFlag)
   denoise = DenoiseOptions();
   denoise.grid.resolution = 4;
   message = usageMessage([&] { checkDenoiseOptions(denoise); });
-  EXPECT_EQ(message, "grid.resolution must be at least 8");
+  EXPECT_EQ(message, "grid.resolution 4 is too coarse for a margin of 4 voxels; use at least 12");
 
   MorphOptions morph;
   morph.steps = 10;
@@ -88,13 +88,16 @@ TEST(ParameterNames, TheCommandLineIsToldTheFlagAndPythonTheKeyword)
   o.grid.resolution = 4;
   {
     NamingFor commandLine(ParameterNaming::CommandLine);
-    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "--res must be at least 8");
+    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }),
+              "--res 4 is too coarse for a margin of 4 voxels; use at least 12");
   }
   {
     NamingFor python(ParameterNaming::Python);
-    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "res must be at least 8");
+    EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }),
+              "res 4 is too coarse for a margin of 4 voxels; use at least 12");
   }
-  EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }), "grid.resolution must be at least 8");
+  EXPECT_EQ(usageMessage([&] { checkDenoiseOptions(o); }),
+            "grid.resolution 4 is too coarse for a margin of 4 voxels; use at least 12");
 }
 
 }  // namespace

@@ -144,6 +144,21 @@ std::vector<BadCase> badCases()
          mesh.positions[3].y = std::nan("");
          writeMesh(mesh, p);
        }},
+      // A .glb, .ply, .stl or .off keeps floats: beyond 3.4e38 a coordinate
+      // would be written as infinity (a glTF's bounds null).
+      {"CoordinateBeyondSinglePrecisionInAGlb", ExitCode::Output, [](const fs::path& f) { return f / "huge.glb"; },
+       [](const fs::path& p) {
+         writeMesh(testing::box({0, 0, 0}, {1e39, 1, 1}), p);
+       }},
+      {"CoordinateBeyondSinglePrecisionInAPly", ExitCode::Output, [](const fs::path& f) { return f / "huge.ply"; },
+       [](const fs::path& p) {
+         writeMesh(testing::box({-1e300, 0, 0}, {1, 1, 1}), p);
+       }},
+      {"CoordinateBeyondSinglePrecisionInAnimation", ExitCode::Output,
+       [](const fs::path& f) { return f / "morph.glb"; },
+       [](const fs::path& p) {
+         writeGltfAnimation({testing::box({0, 0, 0}, {1, 1, 1e39})}, 24, p);
+       }},
       {"AnimationWithObjExtension", ExitCode::Usage, [](const fs::path& f) { return f / "morph.obj"; },
        [](const fs::path& p) { writeGltfAnimation({testing::icosphere(0)}, 24, p); }},
       {"AnimationWithoutFrames", ExitCode::Usage, [](const fs::path& f) { return f / "morph.glb"; },

@@ -84,7 +84,7 @@ TEST(Framing, EveryMeshFitsItsCellAtOneScale)
     double widest = 0.0;
     for (const TriangleMesh& m : meshes)
       for (const glm::dvec3& q : m.positions) {
-        const glm::vec4 clip = f.clipFromCentred * glm::vec4(glm::vec3(q - f.centre), 1.0f);
+        const glm::vec4 clip = f.clipFromCentred * glm::vec4(glm::vec3((q - f.centre) / f.unit), 1.0f);
         EXPECT_LE(std::abs(clip.x), 0.921f) << view;
         EXPECT_LE(std::abs(clip.y), 0.921f) << view;
         EXPECT_GE(clip.z, 0.0f) << view;
@@ -106,7 +106,7 @@ TEST(Framing, TheBoxFillsNinetyTwoPercentOfTheTighterDirection)
     const Framing f = frame(p, arrange(p).meshCells[0]);
     double widest = 0.0;
     for (const glm::dvec3& q : meshes[0].positions) {
-      const glm::vec4 clip = f.clipFromCentred * glm::vec4(glm::vec3(q - f.centre), 1.0f);
+      const glm::vec4 clip = f.clipFromCentred * glm::vec4(glm::vec3((q - f.centre) / f.unit), 1.0f);
       widest = std::max(widest, double(std::max(std::abs(clip.x), std::abs(clip.y))));
     }
     EXPECT_NEAR(widest, 0.92, 1e-5) << view;

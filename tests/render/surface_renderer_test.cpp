@@ -55,6 +55,25 @@ TEST_F(SurfaceRenderer, ACubeFromTheFrontIsASquare)
   EXPECT_NEAR(double(testing::coveredPixels(image, {0, 0, kSize, kSize})) / (side * side), 1.0, 0.015);
 }
 
+TEST_F(SurfaceRenderer, AMeshLooksTheSameAtAnyScaleADoubleHolds)
+{
+  // The GPU draws in floats: a cube 6e38 across overflowed them, one 2e-40
+  // across became denormals flushed to zero, and both drew a blank picture.
+  const TriangleMesh unit = testing::box({-1, -1, -1}, {1, 1, 1});
+  const Image reference = testing::draw(gpu(), testing::plainPicture({&unit}, kSize, kSize));
+  for (const double scale : {3e38, 1e-40}) {
+    TriangleMesh scaled = unit;
+    for (glm::dvec3& p : scaled.positions) p = p * scale + glm::dvec3(5.0 * scale);
+    const Image image = testing::draw(gpu(), testing::plainPicture({&scaled}, kSize, kSize));
+    ASSERT_EQ(image.rgba.size(), reference.rgba.size());
+    long differing = 0;
+    for (size_t i = 0; i < image.rgba.size(); ++i)
+      differing += std::abs(int(image.rgba[i]) - int(reference.rgba[i])) > 2;
+    EXPECT_EQ(differing, 0) << "a cube " << 2.0 * scale << " across";
+    EXPECT_GT(testing::coveredPixels(image, {0, 0, kSize, kSize}), kSize * kSize / 2) << scale;
+  }
+}
+
 TEST_F(SurfaceRenderer, PixelsAreLitAsTheCpuReferenceLightsTheirNormal)
 {
   const TriangleMesh sphere = testing::icosphere(5, 1.0);

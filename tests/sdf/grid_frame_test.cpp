@@ -2,12 +2,13 @@
 // the requested count along the longest side, at least the margin on every
 // side, and the box in the middle, whatever the mesh's position and units.
 #include <cmath>
-
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parameter_names.hpp"
 #include "pipeline/denoise.hpp"
 #include "sdf/grid_frame.hpp"
@@ -114,6 +115,46 @@ TEST(GridFrame, TooLongAGridNamesTheWayBack)
         << "a larger --res would be longer still";
   }
   EXPECT_NO_THROW(frameWithResolution(kBox, 1 << 16, kMargin));
+}
+
+// A voxel larger than a third of the mesh is --res below its least: the
+// grid would hold the mesh in a voxel or two (1e300 made a grid whose far
+// corner overflowed single precision, and a mesh of NaNs).
+TEST(GridFrame, AVoxelLargerThanTheMeshSaysWhatFits)
+{
+  const double longest = kBox.size().y;
+  for (const double voxel : {1e300, 2.0 * longest, 0.34 * longest}) {
+    try {
+      frameWithVoxel(kBox, voxel, kMargin);
+      FAIL() << "a voxel of " << voxel << " around a mesh " << longest << " long";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find(nameOf(Parameter::Voxel) + " " + numberText(voxel)), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("at most " + numberText(longest / 3.0)), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(frameWithVoxel(kBox, longest / 3.0, kMargin));
+  // The least --res is exactly that voxel.
+  EXPECT_NO_THROW(frameWithResolution(kBox, leastResolution(kMargin), kMargin));
+  EXPECT_EQ(leastResolution(kMargin), 12);
+}
+
+// A margin is a number of voxels a grid has room for: inf and 1e9 made the
+// least --res overflow an int ("use at least -2147483648").
+TEST(GridFrame, TheMarginIsBoundedByTheLongestGrid)
+{
+  for (const double margin : {-1.0, 1e9, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    try {
+      frameWithResolution(kBox, 128, margin);
+      FAIL() << "a margin of " << margin;
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find(nameOf(Parameter::Margin) + " must be a number of voxels from 0 to 32766"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_THROW(frameWithVoxel(kBox, 0.1, margin), UsageError) << margin;
+  }
+  EXPECT_NO_THROW(frameWithResolution(kBox, 65536, 32766.0));
 }
 
 }  // namespace

@@ -25,11 +25,12 @@ namespace {
 
 // What to say when memory runs out: a grid is what usually takes it, and
 // the commands that have one can be told to use a coarser one.
-std::string outOfMemory(const CLI::App& app)
+std::string outOfMemory(const CLI::App& app, const std::string& where = "")
 {
+  const std::string what = "out of memory" + (where.empty() ? "" : " " + where);
   for (const CLI::App* command : app.get_subcommands())
-    if (command->get_option_no_throw("--res")) return "out of memory; use a coarser grid (--res)";
-  return "out of memory";
+    if (command->get_option_no_throw("--res")) return what + "; use a coarser grid (--res)";
+  return what;
 }
 
 // CLI11 reports a first word that names no command as "A subcommand is
@@ -142,6 +143,10 @@ int main(int argc, char** argv)
     return fail(ExitCode::Usage, usageMessage(app, e));
   } catch (const Error& e) {
     return fail(e.code(), e.what());
+  } catch (const vk::OutOfDeviceMemoryError& e) {
+    return fail(ExitCode::Device, outOfMemory(app, std::string("on the Vulkan device (") + e.what() + ")"));
+  } catch (const vk::OutOfHostMemoryError& e) {
+    return fail(ExitCode::Device, outOfMemory(app, std::string("in the Vulkan driver (") + e.what() + ")"));
   } catch (const vk::SystemError& e) {
     return fail(ExitCode::Device, std::string("Vulkan: ") + e.what());
   } catch (const std::filesystem::filesystem_error& e) {

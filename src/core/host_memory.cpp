@@ -57,12 +57,17 @@ uint64_t hostMemoryBytes()
 
 bool addressSpaceUnlimited() { return !addressSpaceLimit(); }
 
-void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power)
+void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power,
+                     double fixedBytes)
 {
   const double allowed = double(hostMemoryBytes());
   if (neededBytes <= allowed) return;
+  const std::string fits = allowed > fixedBytes
+                               ? gridThatWouldFit(extent, neededBytes - fixedBytes, allowed - fixedBytes, power)
+                               : "no grid would fit beside the " + mebibytes(uint64_t(fixedBytes)) +
+                                     " that any needs; raise the memory limit";
   throw DeviceError(what + " needs about " + mebibytes(uint64_t(neededBytes)) + " but this machine allows " +
-                    mebibytes(uint64_t(allowed)) + "; " + gridThatWouldFit(extent, neededBytes, allowed, power));
+                    mebibytes(uint64_t(allowed)) + "; " + fits);
 }
 
 void returnFreedHeapMemory()

@@ -17,8 +17,10 @@ uint64_t hostMemoryBytes();
 // Throws DeviceError when `neededBytes` exceed hostMemoryBytes(): "`what`
 // needs about N MiB but this machine allows M MiB; a grid of about ...
 // would fit" (gridThatWouldFit, for a job on `extent` whose size grows as
-// its side to the power `power`).
-void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power);
+// its side to the power `power`, but for `fixedBytes` of it that any grid
+// needs).
+void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power,
+                     double fixedBytes = 0.0);
 
 // Whether the process may map memory without limit (no `ulimit -v`).
 bool addressSpaceUnlimited();

@@ -25,6 +25,11 @@ inline constexpr double maxGamma = 1.0;
 // change of sign beyond. Past 1 a morph is over in a few steps, too few for
 // the diffusion that keeps the shapes in between smooth.
 inline constexpr double maxCs = 1.0;
+// Below this a morph that arrives (its steps chosen by the distance to go)
+// needs more than maxSteps: each step closes about Cs of the distance left,
+// and arriving from 100 voxels away within 0.01 takes ln(1e4)/Cs = 92,000
+// steps at 1e-4. (--cs 1e-9 ran into maxSteps, hours, without a word.)
+inline constexpr double minCs = 1e-4;
 // Surface samples of compare, per mesh: about 100 bytes each.
 inline constexpr std::size_t maxSamples = 10'000'000;
 

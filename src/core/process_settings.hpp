@@ -36,7 +36,13 @@ namespace lbmshape {
 // The test programs pass hugePages = false: the lbmshape processes that
 // they start inherit their environment, and must choose for themselves
 // under the limits some tests set.
+// Calls fitMallocToTheAddressSpace() first, in either process.
 void restartWithProcessSettings(char** argv, bool hugePages = true);
+
+// Under an address-space limit (ulimit -v), at most two malloc arenas
+// (process_settings.cpp says why); a no-op without one or outside glibc.
+// Before the process starts its threads.
+void fitMallocToTheAddressSpace();
 
 // Whether GLIBC_TUNABLES asks malloc for huge pages (glibc.malloc.hugetlb
 // set to anything but 0), for `lbmshape info`.

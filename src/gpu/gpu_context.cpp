@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/host_memory.hpp"
+#include "core/memory_sizes.hpp"
 #include "core/parameter_names.hpp"
 #include "core/log.hpp"
 #include "core/stopwatch.hpp"
@@ -114,10 +116,21 @@ ComputeProgram& GpuContext::program(const ProgramSpec& spec)
   std::string key = spec.key();
   auto it = programs_.find(key);
   if (it != programs_.end()) return *it->second;
+  requireRoomToCompile();
   Stopwatch watch;
   auto program = std::make_unique<ComputeProgram>(device_, pipelineCache_->cache(), spec);
   pipelineCreationMs_ += watch.ms();
   return *programs_.emplace(key, std::move(program)).first->second;
+}
+
+void GpuContext::requireRoomToCompile() const
+{
+  if (description_.type != "cpu" || addressSpaceUnlimited()) return;
+  const uint64_t left = hostMemoryBytes();
+  if (left < compileHeadroomBytes)
+    throw DeviceError("out of memory: " + mebibytes(left) + " of address space is left, and " + description_.name +
+                      " needs about " + mebibytes(compileHeadroomBytes) +
+                      " to compile its shaders; raise the limit (ulimit -v) or use a coarser grid (--res)");
 }
 
 void GpuContext::runAndWait(const std::function<void(vk::CommandBuffer)>& record)

@@ -83,6 +83,12 @@ public:
   // The same as runAndWait, on the graphics queue (requireDrawing first).
   void drawAndWait(const std::function<void(vk::CommandBuffer)>& record);
   const vk::raii::PipelineCache& pipelineCache() { return pipelineCache_->cache(); }
+  // Before a pipeline is compiled: on a CPU device (lavapipe) under an
+  // address-space limit, DeviceError unless compileHeadroomBytes are left.
+  // LLVM compiles there and does not survive running out: it crashed the
+  // process (SIGSEGV) where a denoise under `ulimit -v 400000` left it less.
+  void requireRoomToCompile() const;
+  static constexpr uint64_t compileHeadroomBytes = uint64_t(96) << 20;
 
   // Time spent creating pipelines so far (ms): the start-up cost the
   // pipeline cache is there to cut.

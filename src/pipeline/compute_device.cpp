@@ -58,12 +58,15 @@ void ComputeDevice::warmUpForTheBand(BandRunKind kind) const
   // two). Without one they load on the warm-up's thread too, beside the
   // distances (lavapipe and its LLVM: 0.2 s of one core, which was the
   // first 0.2 s of a morph at 128^3).
+  // Nor are the pipelines compiled beside the distances there: LLVM
+  // (lavapipe) crashes when an allocation fails, and the distances may take
+  // the room it counted on (GpuContext::requireRoomToCompile); they are
+  // compiled when first used, once the distances' memory is returned.
   if (!addressSpaceUnlimited()) {
     try {
       description();
-    } catch (...) {
-      return;  // the first real use meets the same failure
-    }
+    } catch (...) {}
+    return;  // a failure here: the first real use meets it
   }
   try {
     warmUp_ = std::async(std::launch::async, [this, kind] {
@@ -191,21 +194,6 @@ namespace {
 constexpr double gridReferenceBytesPerCell = 30 + 2 * 19 * 4 + 4;
 constexpr double bandReferenceBytesPerCell = 30 + 2 * 16 + 4 + 1;
 
-}  // namespace
-
-void ComputeDevice::checkFits(const Extent3& extent) const
-{
-  LatticeLayout layout = latticeLayout(extent);
-  if (!isReference()) {
-    checkFitsDevice(layout, description());
-    return;
-  }
-  checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()),
-                  "the reference solver's " + extent.toString() + " grid", extent, 3.0);
-}
-
-namespace {
-
 // Lavapipe allocates as it runs a dispatch (the frames of its shader
 // threads) and does not check those allocations: under an address-space
 // limit that leaves it less than this, a morph at `ulimit -v 800000` had 11
@@ -213,6 +201,29 @@ namespace {
 // run in ten. A solver that leaves less is refused, with exit 5, as any
 // other allocation that fails.
 constexpr uint64_t driverHeadroomBytes = uint64_t(64) << 20;
+
+// What a Vulkan device's lattice takes of the host beside its buffers where
+// the device's memory is the host's (lavapipe): the driver's room to
+// compile and run.
+constexpr double driverBytesBeside = double(driverHeadroomBytes + gpu::GpuContext::compileHeadroomBytes);
+
+}  // namespace
+
+void ComputeDevice::checkFits(const Extent3& extent) const
+{
+  LatticeLayout layout = latticeLayout(extent);
+  if (!isReference()) {
+    checkFitsDevice(layout, description());
+    if (description().type == "cpu")
+      checkHostMemory(double(layout.totalBytes) + driverBytesBeside,
+                      "the " + extent.toString() + " lattice on " + description().name, extent, 3.0, driverBytesBeside);
+    return;
+  }
+  checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()),
+                  "the reference solver's " + extent.toString() + " grid", extent, 3.0);
+}
+
+namespace {
 
 template <class Solver>
 std::unique_ptr<Solver> withDriverHeadroom(std::unique_ptr<Solver> solver)
@@ -247,6 +258,13 @@ void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, boo
 {
   if (!isReference()) {
     BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
+    // The staging buffer's size is the same on any grid.
+    const double cellBytes = BandVulkanSolver::deviceBytesPerCell(perCellOmega, source) * double(bricks.storedCells());
+    const double fixedBytes = driverBytesBeside + double(BandVulkanSolver::defaultStagingBytes);
+    if (description().type == "cpu")
+      checkHostMemory(cellBytes + fixedBytes,
+                      "the narrow band of " + std::to_string(bricks.storedCells()) + " cells on " + description().name,
+                      bricks.cells(), 2.0, fixedBytes);
     return;
   }
   checkHostMemory(

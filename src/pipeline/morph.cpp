@@ -211,10 +211,10 @@ std::string frameRanges(const std::vector<int>& frames)
 void checkMorphOptions(const MorphOptions& o)
 {
   relaxation::checkGamma(o.gamma);
-  if (!(o.cs > 0.0 && o.cs <= parameter_bounds::maxCs))
-    throw UsageError(nameOf(Parameter::Cs) +
-                     " must be a morphing speed above 0 and at most 1 per step (the paper uses 0.1 to 0.3; at 1 "
-                     "each step closes two thirds of the distance to the target)");
+  if (!(o.cs >= parameter_bounds::minCs && o.cs <= parameter_bounds::maxCs))
+    throw UsageError(nameOf(Parameter::Cs) + " must be a morphing speed from " + numberText(parameter_bounds::minCs) +
+                     " to " + numberText(parameter_bounds::maxCs) + " per step, not " + numberText(o.cs) +
+                     " (the paper uses 0.1 to 0.3; at 1 each step closes two thirds of the distance to the target)");
   if (o.frames < 2 || o.frames > parameter_bounds::maxFrames)
     throw UsageError(nameOf(Parameter::Frames) + " must be from 2 (the source and the result) to " +
                      std::to_string(parameter_bounds::maxFrames));

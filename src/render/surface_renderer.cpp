@@ -199,6 +199,7 @@ vk::raii::Pipeline makePipeline(gpu::GpuContext& context, const vk::raii::Pipeli
   const vk::PipelineDynamicStateCreateInfo dynamicState({}, dynamic);
   const vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster,
                                             &multisample, &depth, &blending, &dynamicState, *layout, *pass, 0);
+  context.requireRoomToCompile();
   return vk::raii::Pipeline(device, context.pipelineCache(), info);
 }
 

@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <fstream>
+#include <regex>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
@@ -139,6 +141,34 @@ TEST(MemoryPressure, TheReferenceSolverRefusesAJobTheHostCannotHold)
     EXPECT_NE(lines[0].find("would fit"), std::string::npos) << lines[0];
     EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.obj"}) << "nothing written";
   }
+}
+
+// Where the Vulkan device is the CPU (lavapipe), its memory is the host's:
+// a band the host cannot hold beside the driver is refused before the
+// lattice is made, with a --res that does fit (it used to fail inside the
+// driver, "vkAllocateMemory: ErrorOutOfDeviceMemory", or crash in LLVM
+// compiling under `ulimit -v 400000`; glibc's arenas alone reserved 500 MB
+// of address space).
+TEST(MemoryPressure, ACpuDeviceRefusesABandTheHostCannotHoldNamingAResThatFits)
+{
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
+  const nlohmann::json info = nlohmann::json::parse(testing::runLbmshape({"info", "--json"}).out);
+  if (info["devices"][info["selected"].get<size_t>()]["type"] != "cpu")
+    GTEST_SKIP() << "the default Vulkan device has memory of its own";
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(4), folder / "a.obj");
+  const std::string a = (folder / "a.obj").string(), out = (folder / "out.glb").string();
+  const size_t megabytes = 700;
+  const auto refused = testing::runLbmshapeWithin(megabytes, {"denoise", a, out, "--res", "400", "-q"});
+  EXPECT_EQ(refused.exitCode, 5) << refused.err;
+  const auto lines = testing::messageLines(refused.err);
+  ASSERT_EQ(lines.size(), 1u) << refused.err;
+  EXPECT_NE(lines[0].find("the narrow band of"), std::string::npos) << lines[0];
+  std::smatch fits;
+  ASSERT_TRUE(std::regex_search(lines[0], fits, std::regex(R"(\(--res ([0-9]+)\) would fit)"))) << lines[0];
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.obj"}) << "nothing written";
+  const auto suggested = testing::runLbmshapeWithin(megabytes, {"denoise", a, out, "--res", fits[1].str(), "-q"});
+  EXPECT_EQ(suggested.exitCode, 0) << "--res " << fits[1].str() << ": " << suggested.err;
 }
 
 TEST(MemoryPressure, AnAnimationThatCannotFitIsRefusedBeforeAnyWorkSayingWhatWould)

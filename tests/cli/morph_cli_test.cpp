@@ -275,6 +275,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},
         BadMorph{"zero_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "0"}},
         BadMorph{"negative_cs", 2, {"SPHERE", "TORUS", "OUT", "--cs", "-0.1"}},
+        BadMorph{"cs_too_slow_to_arrive", 2, {"SPHERE", "TORUS", "OUT", "--cs", "1e-9"}},
         BadMorph{"bad_format", 2, {"SPHERE", "TORUS", "OUT", "--format", "xyz"}},
         BadMorph{"bad_align", 2, {"SPHERE", "TORUS", "OUT", "--align", "sideways"}},
         BadMorph{"both_step_options", 2, {"SPHERE", "TORUS", "OUT", "--steps", "9", "--steps-per-frame", "2"}},

@@ -324,6 +324,7 @@ struct Smoothed {
   bool distancesOnDevice = false;      // where the signed distance's distances were computed (--sdf)
   std::vector<double> speeds;          // --steps auto's readings (SmoothedField)
   std::optional<float> twicingWeight;  // twiced, with this weight (SmoothedField)
+  double inputFieldVoxels = 0;         // cells inside the input's field, with the volume kept (else 0)
 };
 
 // The largest level-set shift that keeping the volume may apply, in voxels:
@@ -407,7 +408,8 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
           shift,
           false,
           std::move(smoothed.speeds),
-          smoothed.twicingWeight};
+          smoothed.twicingWeight,
+          enclosed};
 }
 
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
@@ -449,7 +451,8 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
           shift,
           distanceStats.onDevice,
           std::move(smoothed.speeds),
-          smoothed.twicingWeight};
+          smoothed.twicingWeight,
+          enclosed};
 }
 
 }  // namespace
@@ -509,14 +512,17 @@ GridFrame placeGrid(const Bounds& bounds, const GridOptions& options)
 
 namespace {
 
-// A result whose volume is still far from the input's after the volume was
-// kept lost parts the grid cannot hold (the Eight at --res 16: both holes
-// closed, 55 % of its volume gone), which the user should not have to find
-// by looking.
-void warnIfMuchVolumeWasLost(const TriangleMesh& result, std::optional<double> meshVolume, double voxel)
+// A result whose volume is still far from what the input's field enclosed,
+// after the volume was kept, lost parts the grid cannot hold (the Eight at
+// --res 16: both holes closed, 55 % of its volume gone), which the user
+// should not have to find by looking. Against the field's volume, not the
+// mesh's: a mesh that overlaps itself counts the overlap twice, and its
+// union is the right result.
+void warnIfMuchVolumeWasLost(const TriangleMesh& result, std::optional<double> meshVolume, double inputFieldVoxels,
+                             double voxel)
 {
-  if (!meshVolume) return;
-  const double change = areaAndSignedVolume(result).signedVolume / *meshVolume - 1.0;
+  if (!meshVolume || !(inputFieldVoxels > 0.0)) return;
+  const double change = areaAndSignedVolume(result).signedVolume / (inputFieldVoxels * voxel * voxel * voxel) - 1.0;
   if (std::abs(change) <= mostTriangleBias) return;
   std::ostringstream m;
   m << std::fixed << std::setprecision(0) << "the result encloses " << std::abs(change) * 100.0 << " % "
@@ -563,7 +569,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology,
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
                          " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) +
                          " or a finer " + nameOf(Parameter::Resolution));
-  warnIfMuchVolumeWasLost(result, meshVolume, frame.voxel);
+  warnIfMuchVolumeWasLost(result, meshVolume, smoothed.inputFieldVoxels, frame.voxel);
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });
   if (!o.steps) relaxation::warnIfInaccurate(o.gamma, smoothed.steps);

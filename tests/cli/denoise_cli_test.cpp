@@ -437,6 +437,27 @@ TEST(DenoiseCli, WarnsOnlyWhenGammaAndStepsAreOutsideTheAccurateRange)
   EXPECT_NE(warnings[0].find("more steps at a smaller --gamma"), std::string::npos) << warnings[0];
 }
 
+// A ring thinner than the grid resolves vanishes in the smoothing: the user
+// is told, and told the way back (a finer grid). Not for a mesh that
+// overlaps itself, whose union encloses less than its triangles count.
+TEST(DenoiseCli, WarnsWhenThinPartsVanishOnACoarseGrid)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::torusMesh(1.0, 0.12, 96, 24), folder / "ring.obj");
+  writeMesh(testing::merged(testing::icosphere(3), testing::icosphere(3, 1.0, {0.8, 0.0, 0.0})),
+            folder / "overlapping.obj");
+  const auto warned = [&](const std::string& mesh, const std::string& res) {
+    const testing::CliResult r =
+        testing::runLbmshape({"denoise", (folder / mesh).string(), (folder / "out.glb").string(), "--res", res, "-q"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return r.err.find("volume than the input: parts thinner than about two voxels") != std::string::npos &&
+           r.err.find("a finer --res keeps them") != std::string::npos;
+  };
+  EXPECT_TRUE(warned("ring.obj", "24")) << "a ring 1.6 voxels thick";
+  EXPECT_FALSE(warned("ring.obj", "96"));
+  EXPECT_FALSE(warned("overlapping.obj", "48"));
+}
+
 TEST(DenoiseCli, TheOutputIsNotTheInputUnlessForced)
 {
   testing::ScratchFolder folder;

@@ -104,7 +104,7 @@ BandwidthMeasurement measureDeviceBandwidth(gpu::GpuContext& context, vk::Device
 
 BandwidthMeasurement measureMemoryBandwidth(gpu::GpuContext* context)
 {
-  if (!context || context->description().type == "cpu") return hostBandwidth();
+  if (!context || context->description().isCpu()) return hostBandwidth();
   return measureDeviceBandwidth(*context, arrayBytes, 500.0);
 }
 

@@ -19,6 +19,10 @@ struct DeviceDescription {
   uint64_t maxTexelBufferElements = 0;
   uint64_t maxAllocationBytes = 0;
   uint32_t maxWorkgroupCount[3] = {0, 0, 0};
+
+  // The CPU (lavapipe): the device's memory is the host's, and a copy
+  // between them crosses no bus.
+  bool isCpu() const { return type == "cpu"; }
 };
 
 // Lower is better: discrete GPUs first, the CPU (lavapipe) as the fallback.

@@ -125,7 +125,7 @@ ComputeProgram& GpuContext::program(const ProgramSpec& spec)
 
 void GpuContext::requireRoomToCompile() const
 {
-  if (description_.type != "cpu" || addressSpaceUnlimited()) return;
+  if (!description_.isCpu() || addressSpaceUnlimited()) return;
   const uint64_t left = hostMemoryBytes();
   if (left < compileHeadroomBytes)
     throw DeviceError("out of memory: " + mebibytes(left) + " of address space is left, and " + description_.name +

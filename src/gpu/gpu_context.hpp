@@ -62,7 +62,7 @@ public:
   // moved one 2 KB region a brick at about 1 GB/s): any device but a CPU
   // one (lavapipe copies with memcpy), and any under
   // LBMSHAPE_STAGED_READBACK=1, so that lavapipe runs that path too.
-  bool copiesCrossABus() const { return stagedReadback_ || description_.type != "cpu"; }
+  bool copiesCrossABus() const { return stagedReadback_ || !description_.isCpu(); }
 
   // The compiled program for this shader and specialization, built once.
   ComputeProgram& program(const ProgramSpec& spec);

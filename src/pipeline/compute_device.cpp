@@ -50,18 +50,17 @@ void ComputeDevice::finishWarmUp() const
 void ComputeDevice::warmUpForTheBand(BandRunKind kind) const
 {
   if (isReference() || gpu_ || warmUp_.valid()) return;
-  // Under an address-space limit the Vulkan loader and driver are loaded
-  // here, on the caller's thread: loaded on the warm-up's, a library
-  // constructor that throws (out of memory) leaves the dynamic loader's
-  // lock held by a thread that then ends, and the next dlopen of the
-  // process waits forever (a morph under `ulimit -v 150000` hung one run in
-  // two). Without one they load on the warm-up's thread too, beside the
-  // distances (lavapipe and its LLVM: 0.2 s of one core, which was the
-  // first 0.2 s of a morph at 128^3).
-  // Nor are the pipelines compiled beside the distances there: LLVM
-  // (lavapipe) crashes when an allocation fails, and the distances may take
-  // the room it counted on (GpuContext::requireRoomToCompile); they are
-  // compiled when first used, once the distances' memory is returned.
+  // Under an address-space limit there is no warm-up. The Vulkan loader and
+  // driver are loaded here, on the caller's thread: loaded on the warm-up's,
+  // a library constructor that throws (out of memory) leaves the dynamic
+  // loader's lock held by a thread that then ends, and the next dlopen of
+  // the process waits forever (a morph under `ulimit -v 150000` hung one run
+  // in two). And the pipelines are compiled when first used, once the
+  // distances' memory is returned, not beside them: LLVM (lavapipe) crashes
+  // when an allocation fails, and the distances may take the room it counted
+  // on (GpuContext::requireRoomToCompile). Without a limit both happen on
+  // the warm-up's thread, beside the distances (lavapipe and its LLVM: 0.2 s
+  // of one core, which was the first 0.2 s of a morph at 128^3).
   if (!addressSpaceUnlimited()) {
     try {
       description();
@@ -214,7 +213,7 @@ void ComputeDevice::checkFits(const Extent3& extent) const
   LatticeLayout layout = latticeLayout(extent);
   if (!isReference()) {
     checkFitsDevice(layout, description());
-    if (description().type == "cpu")
+    if (description().isCpu())
       checkHostMemory(double(layout.totalBytes) + driverBytesBeside,
                       "the " + extent.toString() + " lattice on " + description().name, extent, 3.0, driverBytesBeside);
     return;
@@ -261,7 +260,7 @@ void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, boo
     // The staging buffer's size is the same on any grid.
     const double cellBytes = BandVulkanSolver::deviceBytesPerCell(perCellOmega, source) * double(bricks.storedCells());
     const double fixedBytes = driverBytesBeside + double(BandVulkanSolver::defaultStagingBytes);
-    if (description().type == "cpu")
+    if (description().isCpu())
       checkHostMemory(cellBytes + fixedBytes,
                       "the narrow band of " + std::to_string(bricks.storedCells()) + " cells on " + description().name,
                       bricks.cells(), 2.0, fixedBytes);

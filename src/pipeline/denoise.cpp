@@ -8,7 +8,6 @@
 
 #include "analysis/mesh_topology.hpp"
 #include "core/error.hpp"
-#include "core/number_text.hpp"
 #include "core/host_memory.hpp"
 #include "core/parameter_names.hpp"
 #include "core/parameter_bounds.hpp"
@@ -463,10 +462,7 @@ void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
     throw UsageError(nameOf(Parameter::Voxel) + " must be a positive size");
   // A margin of a voxel at least: the surface's cells need neighbours.
   checkMargin(grid.marginVoxels, 1.0);
-  if (!grid.voxel && grid.resolution < leastResolution(grid.marginVoxels))
-    throw UsageError(nameOf(Parameter::Resolution) + " " + std::to_string(grid.resolution) +
-                     " is too coarse for a margin of " + numberText(grid.marginVoxels) + " voxels; use at least " +
-                     std::to_string(leastResolution(grid.marginVoxels)));
+  if (!grid.voxel) checkResolution(grid.resolution, grid.marginVoxels);
   if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude))
     throw UsageError(nameOf(Parameter::Noise) + " must be zero or positive");
 }

@@ -77,19 +77,22 @@ int leastResolution(double marginVoxels)
   return int(std::ceil(2.0 * marginVoxels + leastVoxelsAcross + 1.0));
 }
 
-GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVoxels)
+void checkResolution(int resolution, double marginVoxels)
 {
-  checkBox(box);
-  checkMargin(marginVoxels);
-  if (resolution < leastResolution(marginVoxels)) {
-    std::ostringstream m;
-    m << nameOf(Parameter::Resolution) << " " << resolution << " is too coarse for a margin of "
-      << numberText(marginVoxels) << " voxels; use at least " << leastResolution(marginVoxels);
-    throw UsageError(m.str());
-  }
+  const int least = leastResolution(marginVoxels);
+  if (resolution < least)
+    throw UsageError(nameOf(Parameter::Resolution) + " " + std::to_string(resolution) +
+                     " is too coarse for a margin of " + numberText(marginVoxels) + " voxels; use at least " +
+                     std::to_string(least));
   if (resolution > maxCellsASide)
     throw UsageError(nameOf(Parameter::Resolution) + " " + std::to_string(resolution) + " is more than " +
                      std::to_string(maxCellsASide) + " cells a side; use a smaller one");
+}
+
+GridFrame frameWithResolution(const Bounds& box, int resolution, double marginVoxels)
+{
+  checkBox(box);
+  checkResolution(resolution, marginVoxels);
   const glm::dvec3 size = box.size();
   const double longest = std::max({size.x, size.y, size.z});
   // resolution = longest/voxel + 2 margin + 1 cell centres along the longest side

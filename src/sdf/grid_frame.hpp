@@ -32,6 +32,9 @@ void checkMargin(double marginVoxels, double leastMarginVoxels = 0.0);
 
 // The least resolution frameWithResolution accepts with this margin.
 int leastResolution(double marginVoxels);
+// UsageError naming --res unless `resolution` is from leastResolution() to
+// the most cells a side (65536); and checkMargin()'s.
+void checkResolution(int resolution, double marginVoxels);
 
 // The same with a given voxel size (world units) instead of a resolution.
 GridFrame frameWithVoxel(const Bounds& box, double voxel, double marginVoxels);

@@ -485,6 +485,10 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false}),
         frameReport.compareWithTargetLevel(meshes.back(), lastTree), analyzeTopology(meshes.back())};
   });
+  // A morph that starts at its target takes no step, and has no last one.
+  const auto ofTheLastStep = [&](double value) {
+    return schedule.totalSteps() > 0 ? nlohmann::json(value) : nlohmann::json(nullptr);
+  };
   return {
       {"command", "morph"},
       {"source", sourcePath.string()},
@@ -497,8 +501,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
        {{"kind", stepsGiven(o) ? "given steps, constant gamma" : "arrive"},
         {"steps", schedule.totalSteps()},
         {"closing_from_step", schedule.annealed() ? nlohmann::json(schedule.annealFrom()) : nlohmann::json(nullptr)},
-        {"final_gamma", schedule.gammaAt(schedule.totalSteps() - 1)},
-        {"final_cs", schedule.csAt(schedule.totalSteps() - 1)},
+        {"final_gamma", ofTheLastStep(schedule.gammaAt(schedule.totalSteps() - 1))},
+        {"final_cs", ofTheLastStep(schedule.csAt(schedule.totalSteps() - 1))},
         {"initial_error_voxels", initialError}}},
       {"converged", converged},
       {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},

@@ -25,7 +25,8 @@ MorphSchedule MorphSchedule::fixed(const MorphOptions& o)
 
 int MorphSchedule::stepsToArrive(double initialError, double cs, double tolerance)
 {
-  if (!(initialError > tolerance)) return 1;
+  // Already there (a shape into itself): no step, every frame the source.
+  if (!(initialError > tolerance)) return 0;
   const double shrinkPerStep = std::log((1.0 + cs / 2.0) / (1.0 - cs / 2.0));  // ln(1/rho)
   const double steps = std::ceil(std::log(initialError / tolerance) / shrinkPerStep);
   return int(std::clamp(steps, 1.0, double(parameter_bounds::maxSteps)));

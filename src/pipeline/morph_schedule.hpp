@@ -46,7 +46,7 @@ public:
   // |X_source - X_target| (voxels) near the target's surface.
   static MorphSchedule arriving(const MorphOptions& options, double initialError);
   // Steps for the source term alone to shrink `initialError` below
-  // `tolerance` at speed Cs; at least 1.
+  // `tolerance` at speed Cs; 0 where it is not above it.
   static int stepsToArrive(double initialError, double cs, double tolerance);
 
   bool annealed() const { return annealFrom_ < totalSteps_ && (gammaEnd_ != gamma_ || csEnd_ != cs_); }

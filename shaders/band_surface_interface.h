@@ -1,5 +1,5 @@
 // What the device's marching cubes on the narrow band (band_surface.comp)
-// and its host side (src/lbm/band_vulkan_solver.cpp, src/surface/surface_pieces.hpp)
+// and its host side (src/lbm/band_surface_pass.cpp, src/surface/surface_pieces.hpp)
 // agree on, written once for both: GLSL includes this file, and so does C++.
 //
 // The pass reads the field buffer (a float a stored cell, BandField's order)

@@ -7,5 +7,6 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/gpu_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pipeline_cache_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recorded_commands.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/staged_copies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vulkan_instance.cpp
 )

@@ -5,19 +5,21 @@
 #include <bit>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <numeric>
 
 #include <glm/glm.hpp>
 
 #include "band_interface.h"
-#include "band_surface_interface.h"
 #include "core/parallel_copy.hpp"
 #include "core/error.hpp"
 #include "core/memory_sizes.hpp"
 #include "gpu/gpu_buffer.hpp"
 #include "gpu/gpu_context.hpp"
+#include "gpu/staged_copies.hpp"
 #include "lbm/adaptive_gamma.hpp"
 #include "lbm/band_state.hpp"
+#include "lbm/band_surface_pass.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/frozen_bricks.hpp"
 #include "lbm/relaxation.hpp"
@@ -84,52 +86,6 @@ gpu::ProgramSpec speedProgram()
           sizeof(band_shader::SpeedParameters)};
 }
 
-gpu::ProgramSpec surfaceProgram()
-{
-  using T = vk::DescriptorType;
-  return {"band_surface",
-          {{SURFACE_BINDING_FIELD, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_NEIGHBOURS, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_ORIGINS, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_FAR_SIDES, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_BASE, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_COUNTERS, T::eStorageBuffer, 1, {}},
-           {SURFACE_BINDING_CROSSINGS, T::eStorageBuffer, 1, {}},
-           {SURFACE_BINDING_CUBES, T::eStorageBuffer, 1, {}},
-           {SURFACE_BINDING_PROBES, T::eUniformTexelBuffer, 1, {}},
-           {SURFACE_BINDING_PROBE_VALUES, T::eStorageBuffer, 1, {}}},
-          {},
-          sizeof(surface_shader::Parameters)};
-}
-
-// The device's records are SurfaceCrossing's and SurfaceCube's bytes (a
-// little-endian 64-bit key or index in two words, then the rest as the
-// structs lay it out): read back straight into the host's lists.
-static_assert(sizeof(SurfaceCrossing) == 32 && offsetof(SurfaceCrossing, lower) == 8 &&
-                  offsetof(SurfaceCrossing, upper) == 12 && offsetof(SurfaceCrossing, normal) == 16,
-              "band_surface.comp's crossing records");
-static_assert(sizeof(SurfaceCube) == 16 && offsetof(SurfaceCube, cubeCase) == 8 && offsetof(SurfaceCube, order) == 12,
-              "band_surface.comp's cube records");
-static_assert(std::endian::native == std::endian::little, "band_surface.comp's keys are two little-endian words");
-
-// Per slot, the bits of band_surface_interface.h's SURFACE_BINDING_FAR_SIDES:
-// which of the 27 bricks around it are not stored and inside.
-std::vector<uint32_t> farSidesAround(const BandField& field)
-{
-  const BrickSet& bricks = field.bricks();
-  std::vector<uint32_t> bits(bricks.activeCount(), 0u);
-  for (size_t s = 0; s < bits.size(); ++s) {
-    const glm::ivec3 b = bricks.brick(int32_t(s));
-    for (int k = 0; k < 27; ++k) {
-      const glm::ivec3 n = b + glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
-      if (bricks.bricks().contains(n.x, n.y, n.z) && bricks.slot(n.x, n.y, n.z) == noBrick &&
-          field.farSide(n.x, n.y, n.z) > 0)
-        bits[s] |= 1u << k;
-    }
-  }
-  return bits;
-}
-
 }  // namespace
 
 // How the band's buffers split into pools of whole bricks, each within the
@@ -167,8 +123,8 @@ struct BandVulkanSolver::Resources {
         origins(c, 16 * bricks->activeCount(), texels, MemoryUse::Device),
         work(c, 4 * 3 * bricks->activeCount(), texels, MemoryUse::Device), omega(c, 16, perCell, MemoryUse::Device),
         source(c, 16, texels, MemoryUse::Device), partials(c, 16, speedPartials, MemoryUse::Device),
-        staging(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount()),
-                vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback)
+        copies(c, std::clamp<uint64_t>(stagingBytes, momentBytesPerSlot, momentBytesPerSlot * bricks->activeCount())),
+        surface(c, copies)
   {
     std::array<vk::DescriptorPoolSize, 2> sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, 4 * 7),
@@ -210,8 +166,9 @@ struct BandVulkanSolver::Resources {
   // them. omega holds omega per cell, or under the paper's rule gamma per
   // cell, which the steps update.
   GpuBuffer omega, source;
-  GpuBuffer partials;  // the surface-speed pass's sums per row (SurfaceChangeSums); its size once it is used
-  GpuBuffer staging;
+  GpuBuffer partials;        // the surface-speed pass's sums per row (SurfaceChangeSums); its size once it is used
+  gpu::StagedCopies copies;  // every upload and read-back, through its staging buffer
+  BandSurfacePass surface;   // the frames' marching cubes (a morph's)
   std::vector<vk::raii::BufferView> views;
   vk::raii::DescriptorPool descriptorPool{nullptr};
   // [k]: reads copy k, writes the other; [2 + k]: reads and writes copy k
@@ -222,24 +179,6 @@ struct BandVulkanSolver::Resources {
   std::vector<vk::raii::BufferView> speedViews;
   vk::raii::DescriptorPool speedPool{nullptr};
   std::vector<vk::raii::DescriptorSet> speedSets;
-  // The surface pass's (band_surface.comp), made at its first use: a
-  // denoise never asks for it.
-  struct SurfacePass {
-    GpuBuffer farSides, counters, countersRead, crossings, cubes;
-    // The probes' stored cells (those of a request's probes that are
-    // stored, in order), and their values.
-    GpuBuffer probes, probeValues;
-    std::vector<glm::ivec3> probesAsked{};  // the request they were made for
-    std::vector<int64_t> probeStored{};     // per probe asked: its stored cell, or -1
-    std::vector<vk::raii::BufferView> views{};
-    vk::raii::DescriptorPool pool{nullptr};
-    vk::raii::DescriptorSets sets{nullptr};
-  };
-  std::unique_ptr<SurfacePass> surface;
-  // Its set reads buffers that were replaced since it was written (the
-  // field buffer, the source buffer: writeDescriptors() says so).
-  bool surfaceSetStale = true;
-  uint64_t lastCrossings = 0, lastCubes = 0;  // the lengths of the last lists: the next ones' room
   // Batches of steps, recorded once each (by count, first copy, slots, push
   // constants and pipeline) and replayed; writeDescriptors() clears them.
   gpu::RecordedCommandCache recordedSteps;
@@ -271,8 +210,8 @@ struct BandVulkanSolver::Resources {
   // buffer is replaced.
   void writeDescriptors()
   {
-    recordedSteps.clear();   // they bind these sets
-    surfaceSetStale = true;  // it reads the field and the source buffers too
+    recordedSteps.clear();    // they bind these sets
+    surface.readsReplaced();  // it reads the field and the source buffers too
     using T = vk::DescriptorType;
     views.clear();
     const vk::BufferView copyViews[2] = {view(moments[0], vk::Format::eR32G32B32A32Sfloat),
@@ -361,121 +300,6 @@ struct BandVulkanSolver::Resources {
     context.device().updateDescriptorSets(writes, {});
   }
 
-  // Fills `bytes` of a device buffer through the staging buffer, a chunk of
-  // whole `unit`s at a time: fill(first, count, to) writes units
-  // [first, first + count) at `to`.
-  template <class Fill>
-  void uploadUnits(const GpuBuffer& target, uint64_t bytes, uint64_t unit, Fill fill, uint64_t targetOffset = 0)
-  {
-    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unit), units = (bytes + unit - 1) / unit;
-    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
-      const uint64_t count = std::min(unitsPerChunk, units - first);
-      const uint64_t chunk = std::min(count * unit, bytes - first * unit);
-      fill(first, count, staging.mapped());
-      context.runAndWait([&](vk::CommandBuffer cmd) {
-        cmd.copyBuffer(staging.handle(), target.handle(), vk::BufferCopy(0, targetOffset + first * unit, chunk));
-      });
-    }
-  }
-
-  // Fills `units` pieces of `unitBytes` of a device buffer, piece u at offset
-  // u * targetStride, through the staging buffer a chunk at a time:
-  // fill(first, count, to) packs pieces [first, first + count) at `to`.
-  // `before` is recorded ahead of the first chunk's copy, with its own
-  // barrier, and `after` behind the last one's, in the same submissions.
-  // Pieces that follow one another (targetStride == unitBytes) go as one
-  // region a chunk.
-  template <class Fill, class Before, class After>
-  void uploadStrided(const GpuBuffer& target, uint64_t units, uint64_t unitBytes, uint64_t targetStride, Fill fill,
-                     Before before, After after)
-  {
-    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / unitBytes);
-    std::vector<vk::BufferCopy> regions;
-    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
-      const uint64_t count = std::min(unitsPerChunk, units - first);
-      fill(first, count, staging.mapped());
-      regions.clear();
-      if (targetStride == unitBytes)
-        regions.emplace_back(0, first * unitBytes, count * unitBytes);
-      else
-        for (uint64_t k = 0; k < count; ++k) regions.emplace_back(k * unitBytes, (first + k) * targetStride, unitBytes);
-      context.runAndWait([&](vk::CommandBuffer cmd) {
-        if (first == 0) before(cmd);
-        cmd.copyBuffer(staging.handle(), target.handle(), regions);
-        if (first + count >= units) after(cmd);
-      });
-    }
-  }
-
-  // Copies `bytes` from host memory into a device buffer, from `targetOffset` on.
-  void upload(const void* data, uint64_t bytes, const GpuBuffer& target, uint64_t targetOffset = 0)
-  {
-    uploadUnits(
-        target, bytes, 1,
-        [&](uint64_t first, uint64_t count, std::byte* to) {
-          std::memcpy(to, static_cast<const std::byte*>(data) + first, count);
-        },
-        targetOffset);
-  }
-
-  // Copies `units` pieces of `unitBytes` of a device buffer, piece u at
-  // offset u * sourceStride, packed into host memory, through the staging
-  // buffer a chunk at a time, after what the command buffer `before`
-  // records (a barrier to transfer reads included). With `wholeStrides`
-  // the staging takes every stride whole, one region a chunk, and the host
-  // keeps each piece (where the copies cross a bus: startFrom() says why).
-  template <class Before>
-  void downloadUnits(const GpuBuffer& source, uint64_t units, uint64_t unitBytes, uint64_t sourceStride, void* data,
-                     Before before, bool wholeStrides = false)
-  {
-    if (source.mapped() && sourceStride == unitBytes) {  // readable where it lies: no staging copy
-      context.runAndWait([&](vk::CommandBuffer cmd) {
-        before(cmd);
-        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer,
-                            vk::PipelineStageFlagBits::eHost, {},
-                            vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eTransferWrite,
-                                              vk::AccessFlagBits::eHostRead),
-                            {}, {});
-      });
-      parallelCopy(static_cast<std::byte*>(data), source.mapped(), units * unitBytes);
-      return;
-    }
-    wholeStrides = wholeStrides && sourceStride != unitBytes;
-    const uint64_t stagedBytes = wholeStrides ? sourceStride : unitBytes;
-    const uint64_t unitsPerChunk = std::max<uint64_t>(1, staging.bytes() / stagedBytes);
-    std::vector<vk::BufferCopy> regions;
-    for (uint64_t first = 0; first < units; first += unitsPerChunk) {
-      const uint64_t count = std::min(unitsPerChunk, units - first);
-      regions.clear();
-      if (sourceStride == unitBytes || wholeStrides)  // contiguous: one copy
-        regions.emplace_back(first * stagedBytes, 0, count * stagedBytes);
-      else
-        for (uint64_t k = 0; k < count; ++k) regions.emplace_back((first + k) * sourceStride, k * unitBytes, unitBytes);
-      context.runAndWait([&](vk::CommandBuffer cmd) {
-        if (first == 0) before(cmd);
-        cmd.copyBuffer(source.handle(), staging.handle(), regions);
-        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
-                            vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead), {},
-                            {});
-      });
-      std::byte* to = static_cast<std::byte*>(data) + first * unitBytes;
-      if (!wholeStrides) {
-        parallelCopy(to, staging.mapped(), count * unitBytes);
-        continue;
-      }
-#pragma omp parallel for schedule(static)
-      for (uint64_t k = 0; k < count; ++k)
-        std::memcpy(to + k * unitBytes, staging.mapped() + k * sourceStride, unitBytes);
-    }
-  }
-
-  // Copies `bytes` of a device buffer into host memory (downloadUnits).
-  template <class Before>
-  void download(const GpuBuffer& source, uint64_t bytes, void* data, Before before)
-  {
-    downloadUnits(source, bytes, 1, 1, data, before);
-  }
-
   // `out` on this band's bricks with its far value and sides, its memory
   // kept where it already is (a morph's recycled frame).
   void shapeLikeTheBand(BandField& out) const
@@ -496,206 +320,13 @@ struct BandVulkanSolver::Resources {
     writeDescriptors();
   }
 
-  // The surface pass ready for lists of at least these lengths (which fit
-  // one storage-buffer binding: listSurface's room), its set reading the
-  // field buffer and the source buffer as they are now. What it replaces
-  // takes effect once all of it is made, so a failure leaves the pass as
-  // it was.
-  void prepareSurfacePass(uint64_t crossings, uint64_t cubes, const std::vector<glm::ivec3>& probes)
+  // The surface's pieces of the field that `before` writes into the field
+  // buffer (BandSurfacePass::list).
+  SurfacePieces listSurface(const SurfaceRequest& request, const std::function<void(vk::CommandBuffer)>& before,
+                            const std::function<void()>& ran)
   {
     fullFieldBuffer();
-    using B = vk::BufferUsageFlagBits;
-    const auto lists = B::eStorageBuffer | B::eTransferSrc;
-    if (!surface) {
-      const std::vector<uint32_t> bits = farSidesAround(initial);
-      auto made = std::make_unique<SurfacePass>(SurfacePass{
-          GpuBuffer(context, 4 * bits.size(), texels, MemoryUse::Device),
-          GpuBuffer(context, 4 * SURFACE_COUNTERS, lists | B::eTransferDst, MemoryUse::Device),
-          GpuBuffer(context, 4 * SURFACE_COUNTERS, B::eTransferDst, MemoryUse::Readback),
-          GpuBuffer(context, 32 * std::max<uint64_t>(crossings, 1), lists, MemoryUse::DeviceReadByHost),
-          GpuBuffer(context, 16 * std::max<uint64_t>(cubes, 1), lists, MemoryUse::DeviceReadByHost),
-          GpuBuffer(context, 4, texels, MemoryUse::Device), GpuBuffer(context, 4, lists, MemoryUse::DeviceReadByHost)});
-      upload(bits.data(), 4 * bits.size(), made->farSides);
-      using T = vk::DescriptorType;
-      const std::array<vk::DescriptorPoolSize, 2> sizes = {vk::DescriptorPoolSize(T::eUniformTexelBuffer, 6),
-                                                           vk::DescriptorPoolSize(T::eStorageBuffer, 4)};
-      made->pool = vk::raii::DescriptorPool(
-          context.device(),
-          vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, sizes));
-      const vk::DescriptorSetLayout layout = *context.program(surfaceProgram()).setLayout;
-      made->sets = vk::raii::DescriptorSets(context.device(), vk::DescriptorSetAllocateInfo(*made->pool, layout));
-      surface = std::move(made);
-      surfaceSetStale = true;
-    }
-    SurfacePass& pass = *surface;
-    if (probes != pass.probesAsked) {
-      std::vector<int64_t> probeStored;
-      std::vector<int32_t> stored;
-      for (const glm::ivec3& c : probes) {
-        if (!bricks->cells().contains(c.x, c.y, c.z)) throw std::invalid_argument("a probe beyond the grid");
-        probeStored.push_back(bricks->storedIndex(c.x, c.y, c.z));
-        if (probeStored.back() >= 0) stored.push_back(int32_t(probeStored.back()));
-      }
-      if (pass.probes.bytes() < 4 * stored.size()) {
-        GpuBuffer cells(context, 4 * stored.size(), texels, MemoryUse::Device),
-            values(context, 4 * stored.size(), lists, MemoryUse::DeviceReadByHost);
-        pass.probes = std::move(cells);
-        pass.probeValues = std::move(values);
-        surfaceSetStale = true;
-      }
-      if (!stored.empty()) upload(stored.data(), 4 * stored.size(), pass.probes);
-      pass.probeStored = std::move(probeStored);
-      pass.probesAsked = probes;
-    }
-    if (pass.crossings.bytes() < 32 * crossings) {
-      pass.crossings = GpuBuffer(context, 32 * crossings, lists, MemoryUse::DeviceReadByHost);
-      surfaceSetStale = true;
-    }
-    if (pass.cubes.bytes() < 16 * cubes) {
-      pass.cubes = GpuBuffer(context, 16 * cubes, lists, MemoryUse::DeviceReadByHost);
-      surfaceSetStale = true;
-    }
-    if (!surfaceSetStale) return;
-    using T = vk::DescriptorType;
-    std::vector<vk::raii::BufferView> views;
-    const auto viewOf = [&](const GpuBuffer& buffer, vk::Format format) {
-      views.emplace_back(context.device(), vk::BufferViewCreateInfo({}, buffer.handle(), format, 0, VK_WHOLE_SIZE));
-      return *views.back();
-    };
-    const vk::BufferView fieldView = viewOf(field, vk::Format::eR32Sfloat),
-                         neighbourView = viewOf(neighbours, vk::Format::eR32G32B32A32Sint),
-                         originView = viewOf(origins, vk::Format::eR32G32B32A32Sint),
-                         farView = viewOf(pass.farSides, vk::Format::eR32Uint),
-                         baseView = viewOf(source, vk::Format::eR32G32B32A32Sfloat),
-                         probeView = viewOf(pass.probes, vk::Format::eR32Sint);
-    const vk::DescriptorBufferInfo counterInfo(pass.counters.handle(), 0, VK_WHOLE_SIZE),
-        crossingInfo(pass.crossings.handle(), 0, VK_WHOLE_SIZE), cubeInfo(pass.cubes.handle(), 0, VK_WHOLE_SIZE),
-        probeValueInfo(pass.probeValues.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorSet set = *pass.sets[0];
-    const std::vector<vk::WriteDescriptorSet> writes = {
-        {set, SURFACE_BINDING_FIELD, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &fieldView},
-        {set, SURFACE_BINDING_NEIGHBOURS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &neighbourView},
-        {set, SURFACE_BINDING_ORIGINS, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &originView},
-        {set, SURFACE_BINDING_FAR_SIDES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &farView},
-        {set, SURFACE_BINDING_BASE, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &baseView},
-        {set, SURFACE_BINDING_COUNTERS, 0, 1, T::eStorageBuffer, nullptr, &counterInfo},
-        {set, SURFACE_BINDING_CROSSINGS, 0, 1, T::eStorageBuffer, nullptr, &crossingInfo},
-        {set, SURFACE_BINDING_CUBES, 0, 1, T::eStorageBuffer, nullptr, &cubeInfo},
-        {set, SURFACE_BINDING_PROBES, 0, 1, T::eUniformTexelBuffer, nullptr, nullptr, &probeView},
-        {set, SURFACE_BINDING_PROBE_VALUES, 0, 1, T::eStorageBuffer, nullptr, &probeValueInfo}};
-    context.device().updateDescriptorSets(writes, {});
-    pass.views = std::move(views);
-    surfaceSetStale = false;
-  }
-
-  // Records the surface pass over the field buffer (which the commands
-  // before wrote) and the copy of its counters for the host.
-  void recordSurfacePass(vk::CommandBuffer cmd, const surface_shader::Parameters& push)
-  {
-    SurfacePass& pass = *surface;
-    cmd.fillBuffer(pass.counters.handle(), 0, VK_WHOLE_SIZE, 0u);
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer,
-                        vk::PipelineStageFlagBits::eComputeShader, {},
-                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eTransferWrite,
-                                          vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite),
-                        {}, {});
-    const auto& program = context.program(surfaceProgram());
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *program.layout, 0, *pass.sets[0], {});
-    cmd.pushConstants<surface_shader::Parameters>(*program.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    const auto slots = uint32_t(push.slots);
-    cmd.dispatch(std::min<uint32_t>(slots, BAND_MAX_WORKGROUPS_X),
-                 (slots + BAND_MAX_WORKGROUPS_X - 1) / BAND_MAX_WORKGROUPS_X, 1);
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
-                        vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});
-    cmd.copyBuffer(pass.counters.handle(), pass.countersRead.handle(), vk::BufferCopy(0, 0, 4 * SURFACE_COUNTERS));
-    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eComputeShader,
-                        vk::PipelineStageFlagBits::eHost, {},
-                        vk::MemoryBarrier(vk::AccessFlagBits::eTransferWrite | vk::AccessFlagBits::eShaderWrite,
-                                          vk::AccessFlagBits::eHostRead),
-                        {}, {});
-  }
-
-  // The surface's pieces of the field that the commands `before` records
-  // write into the field buffer (and nearBand's error against the source's
-  // base), read back; `ran` runs once those commands have (a step among
-  // them is taken then, whatever follows). Where a list outgrows its
-  // buffer, the pass runs again (the field buffer still holds the field)
-  // with room for it, up to one storage-buffer binding.
-  template <class Before, class Ran>
-  SurfacePieces listSurface(const SurfaceRequest& request, Before before, Ran ran)
-  {
-    const float isovalue = request.isovalue, nearBand = sourceHost ? request.nearBand : -1.0f;
-    const uint64_t range = context.description().maxStorageBufferRange;
-    const uint64_t mostCrossings = std::min<uint64_t>(range / sizeof(SurfaceCrossing), INT32_MAX),
-                   mostCubes = std::min<uint64_t>(range / sizeof(SurfaceCube), INT32_MAX);
-    const auto room = [](uint64_t found, uint64_t most) { return std::min(found + found / 4 + 1024, most); };
-    const uint64_t slots = bricks->activeCount();
-    uint64_t crossingRoom = room(lastCrossings ? lastCrossings : 16 * slots, mostCrossings);
-    uint64_t cubeRoom = room(lastCubes ? lastCubes : 16 * slots, mostCubes);
-    for (bool first = true;; first = false) {
-      prepareSurfacePass(crossingRoom, cubeRoom, request.probes);
-      const Extent3& e = bricks->cells();
-      const auto storedProbes = int(std::count_if(surface->probeStored.begin(), surface->probeStored.end(),
-                                                  [](int64_t cell) { return cell >= 0; }));
-      const surface_shader::Parameters push{
-          e.nx,          e.ny,        e.nz, int(slots), isovalue, initial.farValue(), nearBand, int(crossingRoom),
-          int(cubeRoom), storedProbes};
-      context.runAndWait([&](vk::CommandBuffer cmd) {
-        if (first) before(cmd);
-        recordSurfacePass(cmd, push);
-      });
-      if (first) ran();
-      std::array<uint32_t, SURFACE_COUNTERS> counts;
-      std::memcpy(counts.data(), surface->countersRead.mapped(), sizeof(counts));
-      if (counts[SURFACE_COUNTER_NOT_FINITE] > 0)
-        throw NumericalError("the field holds a value that is not a finite number");
-      const uint64_t crossings = counts[SURFACE_COUNTER_CROSSINGS], cubes = counts[SURFACE_COUNTER_CUBES];
-      if (crossings > mostCrossings || cubes > mostCubes)
-        throw DeviceError("the surface has " + std::to_string(crossings) + " cut grid edges and " +
-                          std::to_string(cubes) + " cut cubes, more than one storage buffer of " +
-                          context.description().name + " holds (" + std::to_string(mostCrossings) + " and " +
-                          std::to_string(mostCubes) + "); extract the frames on the CPU (--extract cpu)");
-      if (crossings > crossingRoom || cubes > cubeRoom) {
-        crossingRoom = std::max(crossingRoom, room(crossings, mostCrossings));
-        cubeRoom = std::max(cubeRoom, room(cubes, mostCubes));
-        continue;
-      }
-      lastCrossings = crossings;
-      lastCubes = cubes;
-      SurfacePieces pieces;
-      pieces.extent = e;
-      pieces.isovalue = isovalue;
-      pieces.crossings.resize(crossings);
-      pieces.cubes.resize(cubes);
-      // The pass's submission ended with a barrier to host reads: a list
-      // the host can see where it lies (lavapipe's) is copied at once, any
-      // other through the staging buffer.
-      const auto readList = [this](const GpuBuffer& list, uint64_t count, uint64_t unit, void* to) {
-        if (count == 0) return;
-        if (list.mapped())
-          parallelCopy(static_cast<std::byte*>(to), list.mapped(), count * unit);
-        else
-          downloadUnits(list, count, unit, unit, to, [](vk::CommandBuffer) {});
-      };
-      readList(surface->crossings, crossings, sizeof(SurfaceCrossing), pieces.crossings.data());
-      readList(surface->cubes, cubes, sizeof(SurfaceCube), pieces.cubes.data());
-      std::vector<float> stored(static_cast<size_t>(storedProbes));
-      readList(surface->probeValues, stored.size(), sizeof(float), stored.data());
-      // A probe outside the stored bricks reads the far value on its side,
-      // as BandField::at() does (initial keeps the far sides, not the values).
-      for (size_t k = 0, next = 0; k < request.probes.size(); ++k) {
-        const glm::ivec3 c = request.probes[k];
-        pieces.probeValues.push_back(surface->probeStored[k] >= 0 ? stored[next++] : initial.at(c.x, c.y, c.z));
-      }
-      if (nearBand >= 0.0f) {
-        float error;
-        std::memcpy(&error, &counts[SURFACE_COUNTER_ERROR], sizeof(error));
-        pieces.errorNearBase = error;
-      }
-      pieces.tidy();
-      return pieces;
-    }
+    return surface.list(request, {field, neighbours, origins, source, initial, sourceHost.has_value()}, before, ran);
   }
 
   // The parameters of the next step made to also store the field it pulls
@@ -772,14 +403,14 @@ struct BandVulkanSolver::Resources {
     append(heldRange, stepSlots, true);
     append(fieldRange, every, false);
     append(heldFieldRange, every, true);
-    upload(lists.data(), lists.size() * 4, work);
+    copies.upload(lists.data(), lists.size() * 4, work);
   }
 
   // `slots` as the work list of one pass, after the lists uploadWork() makes.
   WorkRange extraList(const std::vector<int32_t>& slots)
   {
     const WorkRange range{int(2 * bricks->activeCount()), int(slots.size())};
-    upload(slots.data(), slots.size() * 4, work, uint64_t(range.offset) * 4);
+    copies.upload(slots.data(), slots.size() * 4, work, uint64_t(range.offset) * 4);
     return range;
   }
 
@@ -874,9 +505,9 @@ BandVulkanSolver::BandVulkanSolver(gpu::GpuContext& context, std::shared_ptr<con
   r_ = std::make_unique<Resources>(context, std::move(bricks), stagingBytes, poolBytes);
   const BrickSet& b = *r_->bricks;
   const std::vector<glm::ivec4> table = rowNeighbourTable(b);
-  r_->upload(table.data(), table.size() * 16, r_->neighbours);
+  r_->copies.upload(table.data(), table.size() * 16, r_->neighbours);
   const std::vector<glm::ivec4> origins = b.originTable();
-  r_->upload(origins.data(), origins.size() * 16, r_->origins);
+  r_->copies.upload(origins.data(), origins.size() * 16, r_->origins);
   // Lavapipe turns a pipeline into machine code at its first dispatch (some
   // 250 ms on the 2-core host, where pipeline creation took 100): one
   // dispatch of no work here puts that in the set-up, where a real GPU's
@@ -971,7 +602,7 @@ void BandVulkanSolver::setGammaPerCell(const BandField& gamma)
   r_->perCellOmega = true;
   r_->paperRuleGamma0.reset();
   r_->perCellBuffer();
-  r_->upload(omega.data(), 4 * r_->cells, r_->omega);
+  r_->copies.upload(omega.data(), 4 * r_->cells, r_->omega);
 }
 
 void BandVulkanSolver::setFeaturePreservingGamma(double gamma0, double kappaEdge)
@@ -1025,7 +656,7 @@ void BandVulkanSolver::setSource(std::optional<BandSource> source)
       r_->source = GpuBuffer(r_->context, 4 * r_->cells, texels, MemoryUse::Device);
       r_->writeDescriptors();
     }
-    r_->upload(source->base.values().data(), 4 * r_->cells, r_->source);
+    r_->copies.upload(source->base.values().data(), 4 * r_->cells, r_->source);
   }
   r_->sourceHost = std::move(source);
 }
@@ -1069,7 +700,7 @@ void BandVulkanSolver::initialize(BandField field, std::vector<uint8_t> streams)
 #pragma omp parallel for schedule(static)
   for (size_t row = 0; row < rows.size(); ++row)
     for (int x = 0; x < brickEdge; ++x) rows[row] |= uint32_t(streams[row * brickEdge + size_t(x)]) << x;
-  r_->upload(rows.data(), rows.size() * 4, r_->streams);
+  r_->copies.upload(rows.data(), rows.size() * 4, r_->streams);
   startFrom(std::move(field));
 }
 
@@ -1088,7 +719,7 @@ void BandVulkanSolver::restart()
 // rule seeded: initialize() after the streaming cells are on the device.
 void BandVulkanSolver::startFrom(BandField field)
 {
-  r_->surface.reset();  // its far sides are the last start's
+  r_->surface.forgetTheStart();  // its far sides are the last start's
   if (r_->sourceHost && r_->sourceHost->base.values().size() != r_->cells)
     throw std::logic_error("a new start with a source needs setSource() again: its values go after the first step");
   if (r_->paperRuleGamma0 && r_->omega.bytes() != 4 * r_->cells)
@@ -1113,7 +744,7 @@ void BandVulkanSolver::startFrom(BandField field)
   };
   const bool wholeSlots = r_->context.copiesCrossABus();
   const uint64_t unitBytes = wholeSlots ? momentBytesPerSlot : fieldBytesPerSlot, unitFloats = unitBytes / 4;
-  r_->uploadStrided(
+  r_->copies.uploadStrided(
       r_->moments[0], r_->bricks->activeCount(), unitBytes, momentBytesPerSlot,
       [&](uint64_t first, uint64_t count, std::byte* to) {
         float* out = reinterpret_cast<float*>(to);
@@ -1203,7 +834,7 @@ BandField BandVulkanSolver::storedField(int back)
   // Moment 0 of every brick of the copy: the first quarter of each slot.
   const GpuBuffer& copy = r_->moments[back == 1 ? r_->current : 1 - r_->current];
   BandField out = r_->initial.sameShape();
-  r_->downloadUnits(
+  r_->copies.downloadUnits(
       copy, r_->bricks->activeCount(), fieldBytesPerSlot, momentBytesPerSlot, out.values().data(),
       [](vk::CommandBuffer cmd) {
         cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
@@ -1222,7 +853,7 @@ double BandVulkanSolver::surfaceSpeed()
   const uint32_t slots = uint32_t(r_->bricks->activeCount());
   std::vector<glm::vec4> partials(size_t(slots) * 64);
   auto& program = r_->context.program(speedProgram());
-  r_->download(r_->partials, r_->partials.bytes(), partials.data(), [&](vk::CommandBuffer cmd) {
+  r_->copies.download(r_->partials, r_->partials.bytes(), partials.data(), [&](vk::CommandBuffer cmd) {
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead), {}, {});
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *program.pipeline);
@@ -1264,7 +895,7 @@ void BandVulkanSolver::fieldIntoThenStep(BandField& out, std::optional<SourceStr
   }
   r_->shapeLikeTheBand(out);
   const int first = r_->current;
-  r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
+  r_->copies.download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     r_->recordPass(cmd, first, *push);
     // The next step reads what this one wrote; the copy reads the field.
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
@@ -1289,7 +920,7 @@ void BandVulkanSolver::fieldInto(BandField& out)
   }
   r_->shapeLikeTheBand(out);
   r_->fullFieldBuffer();
-  r_->download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
+  r_->copies.download(r_->field, 4 * r_->cells, out.values().data(), [&](vk::CommandBuffer cmd) {
     r_->recordPass(cmd, r_->current, r_->parameters(true));
     cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {},
                         vk::MemoryBarrier(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead), {}, {});

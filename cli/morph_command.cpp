@@ -1,3 +1,4 @@
+#include "core/error.hpp"
 #include "core/log.hpp"
 #include "mesh_commands.hpp"
 #include "pipeline/morph.hpp"
@@ -26,6 +27,11 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   if (a.stepsGiven->count()) a.options.steps = a.steps;
   a.options.animation = !a.noAnimation;
   a.options.band = !a.dense;
+  // The paper's noise is added on the grid: the band cannot run it.
+  if (a.band && a.options.noise.amplitude > 0.0)
+    throw UsageError(
+        "--band and --noise: the noise is added to the whole grid, which runs on every cell (--noise "
+        "implies --dense); leave out --band");
   if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.colourByCurvature = a.colour == "curvature";
   a.options.frameFigures = common.json;  // only the JSON report shows them

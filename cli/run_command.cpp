@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <map>
 #include <set>
 #include <system_error>
 
@@ -60,9 +59,64 @@ struct DuplicateKey {
   std::string key;
 };
 
+// What a job writes: its output (a file, or a morph's folder) and its
+// preview picture, each as an absolute path without a trailing separator.
+struct JobWrite {
+  fs::path path;
+  size_t job;        // 1-based
+  std::string text;  // as the jobs file gives it
+  bool folder;       // a morph's folder of frames
+};
+
+std::vector<JobWrite> writesOf(const nlohmann::json& jobs, const fs::path& file)
+{
+  std::vector<JobWrite> writes;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!jobs[i].is_object()) continue;
+    const bool morph = jobs[i].contains("command") && jobs[i]["command"] == "morph";
+    for (const char* key : {"output", "preview"}) {
+      if (!jobs[i].contains(key) || !jobs[i][key].is_string()) continue;
+      std::error_code ec;
+      const fs::path given = fs::absolute(file.parent_path() / jobs[i][key].get<std::string>(), ec);
+      fs::path path = fs::weakly_canonical(given, ec);
+      if (ec) path = given.lexically_normal();
+      if (path.has_relative_path() && path.filename().empty()) path = path.parent_path();  // "frames/" is "frames"
+      writes.push_back({path, i + 1, jobs[i][key].get<std::string>(), morph && std::string(key) == "output"});
+    }
+  }
+  return writes;
+}
+
+// Whether `inner` lies inside folder `outer`.
+bool inside(const fs::path& inner, const fs::path& outer)
+{
+  const auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return o == outer.end() && i != inner.end();
+}
+
+// Two jobs writing the same file (the second would replace the first's
+// result), however its path is spelled, or one writing into another's
+// folder of frames, are refused, naming both jobs.
+void requireDistinctOutputs(const nlohmann::json& jobs, const fs::path& file)
+{
+  const std::vector<JobWrite> writes = writesOf(jobs, file);
+  for (size_t a = 0; a < writes.size(); ++a)
+    for (size_t b = a + 1; b < writes.size(); ++b) {
+      const JobWrite &first = writes[a], &second = writes[b];
+      if (first.job == second.job) continue;
+      if (first.path == second.path)
+        throw UsageError(file.string() + ": jobs " + std::to_string(first.job) + " and " + std::to_string(second.job) +
+                         " both write " + second.text);
+      for (const auto& [folder, other] : {std::pair{&first, &second}, std::pair{&second, &first}})
+        if (folder->folder && inside(other->path, folder->path))
+          throw UsageError(file.string() + ": job " + std::to_string(other->job) + " writes " + other->text +
+                           " into job " + std::to_string(folder->job) + "'s folder of frames " + folder->text);
+    }
+}
+
 // The jobs of `file`. A key given twice in one job (JSON would keep the
-// last silently) and two jobs writing the same output (the second would
-// replace the first's result) are refused, naming the job and the key.
+// last silently) and jobs whose outputs clash (requireDistinctOutputs) are
+// refused, naming the jobs and the key.
 nlohmann::json readJobs(const fs::path& file)
 {
   const MappedFile text(file);  // a regular file, or an InputError that says what it is
@@ -95,18 +149,7 @@ nlohmann::json readJobs(const fs::path& file)
     throw UsageError(file.string() + ": job " + std::to_string(d.job) + " gives \"" + d.key + "\" twice");
   }
   if (!jobs.is_array()) throw InputError("cannot read " + file.string() + ": expected a JSON array of jobs");
-  std::map<fs::path, size_t> writers;
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    if (!jobs[i].is_object() || !jobs[i].contains("output") || !jobs[i]["output"].is_string()) continue;
-    std::error_code ec;
-    const fs::path given = fs::absolute(file.parent_path() / jobs[i]["output"].get<std::string>(), ec);
-    fs::path output = fs::weakly_canonical(given, ec);
-    if (ec) output = given.lexically_normal();
-    const auto [first, inserted] = writers.emplace(output, i + 1);
-    if (!inserted)
-      throw UsageError(file.string() + ": jobs " + std::to_string(first->second) + " and " + std::to_string(i + 1) +
-                       " both write " + jobs[i]["output"].get<std::string>());
-  }
+  requireDistinctOutputs(jobs, file);
   return jobs;
 }
 

@@ -193,11 +193,14 @@ PYBIND11_MODULE(lbmshape, m)
   useParameterNames(ParameterNaming::Python);  // messages name the keywords
   m.attr("__version__") = LBMSHAPE_VERSION;
 
+  // Each error is both an lbmshape.Error and the built-in exception it is
+  // of (a tuple of bases), so that `except lbmshape.Error` catches them all
+  // and `except ValueError` the parameters and inputs.
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
-  static py::exception<UsageError> usage(m, "UsageError", PyExc_ValueError);
-  static py::exception<InputError> input(m, "InputError", PyExc_ValueError);
-  static py::exception<OutputError> output(m, "OutputError", PyExc_OSError);
-  static py::exception<DeviceError> device(m, "DeviceError", PyExc_RuntimeError);
+  static py::exception<UsageError> usage(m, "UsageError", py::make_tuple(error, py::handle(PyExc_ValueError)));
+  static py::exception<InputError> input(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
+  static py::exception<OutputError> output(m, "OutputError", py::make_tuple(error, py::handle(PyExc_OSError)));
+  static py::exception<DeviceError> device(m, "DeviceError", py::make_tuple(error, py::handle(PyExc_RuntimeError)));
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -103,6 +103,16 @@ class Denoise(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "^sdf must be 'auto', 'cpu' or 'device'"):
             lbmshape.Device(sdf="gpu")
 
+    def test_every_error_is_an_lbmshape_error_and_a_builtin_one(self):
+        for name, builtin in [("UsageError", ValueError), ("InputError", ValueError),
+                              ("OutputError", OSError), ("DeviceError", RuntimeError)]:
+            error = getattr(lbmshape, name)
+            self.assertTrue(issubclass(error, lbmshape.Error), name)
+            self.assertTrue(issubclass(error, builtin), name)
+        v, f = noisy_sphere()
+        with self.assertRaises(lbmshape.Error):
+            lbmshape.denoise(v, f, gamma=-1)
+
     def test_bad_arrays_and_parameters_name_what_is_wrong(self):
         v, f = noisy_sphere()
         with self.assertRaisesRegex(lbmshape.UsageError, "vertices must be an array of shape"):

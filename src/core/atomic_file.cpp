@@ -43,7 +43,9 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   if (std::filesystem::is_directory(target_, ec)) throw OutputError(failure(target_, "it is a folder"));
   const std::filesystem::path folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder, ec))
-    throw OutputError(failure(target_, "the folder " + folder.string() + " does not exist"));
+    throw OutputError(failure(target_, std::filesystem::exists(folder, ec)
+                                           ? folder.string() + " is not a folder"
+                                           : "the folder " + folder.string() + " does not exist"));
 
   // Several writers (threads, or processes writing frames into one folder)
   // may work at once: the process id and a counter keep their names apart,

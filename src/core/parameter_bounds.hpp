@@ -30,6 +30,16 @@ inline constexpr double maxCs = 1.0;
 // and arriving from 100 voxels away within 0.01 takes ln(1e4)/Cs = 92,000
 // steps at 1e-4. (--cs 1e-9 ran into maxSteps, hours, without a word.)
 inline constexpr double minCs = 1e-4;
+// The paper's noise (--noise), a fraction of the field's largest |X|: the
+// paper adds 5 %; at 100 % the noise is as large as the whole field and no
+// surface is left to smooth.
+inline constexpr double maxNoise = 1.0;
+// The morph's --tolerance, voxels: the largest |X - X_target| near the
+// target's surface at which a frame counts as arrived. A frame a voxel or
+// more off is not at the target (#12 asks for a last frame within a voxel
+// of it everywhere), and `inf` made every morph "arrive" before its first
+// step.
+inline constexpr double maxTolerance = 1.0;
 // Surface samples of compare, per mesh: about 100 bytes each.
 inline constexpr std::size_t maxSamples = 10'000'000;
 

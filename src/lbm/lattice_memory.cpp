@@ -1,5 +1,7 @@
 #include "lbm/lattice_memory.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "core/parameter_names.hpp"
 #include "core/memory_sizes.hpp"
@@ -28,36 +30,68 @@ LatticeLayout latticeLayout(const Extent3& extent)
   return layout;
 }
 
-void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device)
+namespace {
+
+// Why a lattice of `layout` does not fit on `device` ("" where it does).
+std::string whyItDoesNotFit(const LatticeLayout& layout, const gpu::DeviceDescription& device)
 {
   const Extent3& e = layout.extent;
-  auto tooLarge = [&](const std::string& why) {
-    throw DeviceError("a " + e.toString() + " lattice does not fit on " + device.name + ": " + why +
-                      "; use a coarser grid or another " + nameOf(Parameter::Device));
-  };
   // The shaders index a lattice copy with 32-bit ints, in vec4 (and, in the
   // init pass, in floats within one group).
   const uint64_t copyTexels = layout.blocks * d3q19::Q;
   if (4 * layout.blocks * row_groups::largest >= (uint64_t(1) << 31) || copyTexels >= (uint64_t(1) << 31))
-    tooLarge("more than " + std::to_string((uint64_t(1) << 31) / (4 * row_groups::largest)) + " cells");
+    return "more than " + std::to_string((uint64_t(1) << 31) / (4 * row_groups::largest)) + " cells";
   // The largest storage-buffer binding is a group of three directions (a
   // volume is a third of that).
   const uint64_t largestGroup = uint64_t(row_groups::largest) * layout.blocks * 16;
   if (largestGroup > device.maxStorageBufferRange)
-    tooLarge("three directions need " + mebibytes(largestGroup) + " but a storage buffer may span at most " +
-             mebibytes(device.maxStorageBufferRange));
+    return "three directions need " + mebibytes(largestGroup) + " but a storage buffer may span at most " +
+           mebibytes(device.maxStorageBufferRange);
   if (copyTexels > device.maxTexelBufferElements)
-    tooLarge("the lattice needs " + std::to_string(copyTexels) + " texels but a texel buffer may hold at most " +
-             std::to_string(device.maxTexelBufferElements));
+    return "the lattice needs " + std::to_string(copyTexels) + " texels but a texel buffer may hold at most " +
+           std::to_string(device.maxTexelBufferElements);
   if (device.maxAllocationBytes && layout.copyBytes > device.maxAllocationBytes)
-    tooLarge("the lattice needs " + mebibytes(layout.copyBytes) + " in one allocation, more than " +
-             mebibytes(device.maxAllocationBytes));
+    return "the lattice needs " + mebibytes(layout.copyBytes) + " in one allocation, more than " +
+           mebibytes(device.maxAllocationBytes);
   const uint64_t blocksPerPlane = uint64_t(layout.row / 4) * uint64_t(e.ny);
   if (blocksPerPlane / 128 + 1 > device.maxWorkgroupCount[0] || uint64_t(e.nz) > device.maxWorkgroupCount[2] ||
       uint64_t(layout.row) / 64 + 1 > device.maxWorkgroupCount[0] || uint64_t(e.ny) > device.maxWorkgroupCount[1])
-    tooLarge("more workgroups than the device can dispatch");
+    return "more workgroups than the device can dispatch";
   if (device.deviceLocalBytes && layout.totalBytes > device.deviceLocalBytes)
-    tooLarge("it needs " + mebibytes(layout.totalBytes) + " but the device has " + mebibytes(device.deviceLocalBytes));
+    return "it needs " + mebibytes(layout.totalBytes) + " but the device has " + mebibytes(device.deviceLocalBytes);
+  return "";
+}
+
+// The longest side of the largest grid of `extent`'s proportions that fits.
+int longestThatFits(const Extent3& extent, const gpu::DeviceDescription& device)
+{
+  const int longest = std::max({extent.nx, extent.ny, extent.nz});
+  const auto scaled = [&](int side) {
+    const auto by = [&](int n) { return std::max(1, int(int64_t(n) * side / longest)); };
+    return Extent3{by(extent.nx), by(extent.ny), by(extent.nz)};
+  };
+  int fits = 0, fails = longest;  // fits may be 0: none does
+  while (fails - fits > 1) {
+    const int side = fits + (fails - fits) / 2;
+    (whyItDoesNotFit(latticeLayout(scaled(side)), device).empty() ? fits : fails) = side;
+  }
+  return fits;
+}
+
+}  // namespace
+
+void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device)
+{
+  const std::string why = whyItDoesNotFit(layout, device);
+  if (why.empty()) return;
+  // 3 % below the largest that fits in these proportions: a coarser --res
+  // keeps the margins' voxels, so its shorter sides shrink a little less.
+  const int fits = int(0.97 * longestThatFits(layout.extent, device));
+  throw DeviceError("a " + layout.extent.toString() + " lattice does not fit on " + device.name + ": " + why + "; " +
+                    (fits > 0 ? "a grid of about " + std::to_string(fits) + " cells along its longest side (" +
+                                    nameOf(Parameter::Resolution) + " " + std::to_string(fits) +
+                                    ") would fit, or use " + "another " + nameOf(Parameter::Device)
+                              : "use another " + nameOf(Parameter::Device)));
 }
 
 }  // namespace lbmshape

@@ -39,7 +39,7 @@ void checkGamma(double gamma, std::string_view what)
   std::ostringstream message;
   message << name() << " = " << numberText(gamma)
           << " is too small: tau = 3*gamma + 1/2 rounds to 1/2 in single precision,"
-          << " where the scheme is unstable; use at least 1e-7";
+          << " where the scheme is unstable; use at least 1e-8";
   throw UsageError(message.str());
 }
 

@@ -55,10 +55,18 @@ struct GltfAnimation::Model {
   std::optional<GlbStream> stream;
 };
 
-bool timeableInSinglePrecision(size_t frameCount, double fps)
+std::string untimeableInSinglePrecision(size_t frameCount, double fps)
 {
+  if (frameCount == 0) return "";
+  const float last = float(double(frameCount - 1) / fps);
+  if (!std::isfinite(last))
+    return "the last of " + std::to_string(frameCount) + " frames at " + numberText(fps) +
+           " per second would come later than single precision can time; use a higher frame rate";
   // Keys closer than float resolution would not be increasing any more.
-  return frameCount == 0 || float(double(frameCount) / fps) > float(double(frameCount - 1) / fps);
+  if (!(float(double(frameCount) / fps) > last))
+    return std::to_string(frameCount) + " frames at " + numberText(fps) +
+           " per second are closer together than single precision can time; use a lower frame rate";
+  return "";
 }
 
 GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, double fps, GltfCompression compression)
@@ -72,9 +80,8 @@ GltfAnimation::GltfAnimation(std::filesystem::path path, size_t frameCount, doub
   if (frameCount == 0) throw UsageError(prefix + "the animation has no frames");
   if (!std::isfinite(fps) || fps <= 0)
     throw UsageError(prefix + "the frame rate must be a positive number, not " + numberText(fps));
-  if (!timeableInSinglePrecision(frameCount, fps))
-    throw UsageError(prefix + std::to_string(frameCount) + " frames at " + numberText(fps) +
-                     " per second are closer together than single precision can time; use a lower frame rate");
+  if (const std::string untimeable = untimeableInSinglePrecision(frameCount, fps); !untimeable.empty())
+    throw UsageError(prefix + untimeable);
   model_ = std::make_unique<Model>(compression);
   if (format == MeshFormat::Glb && compression == GltfCompression::None)
     model_->stream.emplace(path_, jsonRoomBase + jsonRoomPerFrame * frameCount);

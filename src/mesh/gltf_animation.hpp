@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -32,10 +33,11 @@ void writeGltfAnimation(const std::vector<TriangleMesh>& frames, double fps, con
 // checks and errors as writeGltfAnimation(): the arguments' in the
 // constructor (which also makes the temporary file, so an unwritable folder
 // is reported at once), a frame's in add(), a frame missing in write().
-// Whether glTF's single-precision key times tell `frameCount` frames at
-// `fps` apart: at a high enough rate the last frames' times round to the
-// same float.
-bool timeableInSinglePrecision(size_t frameCount, double fps);
+// Why glTF's single-precision key times cannot time `frameCount` frames at
+// `fps`, with what to do ("" where they can): at a high enough rate the
+// last frames' times round to the same float, at a low enough one the last
+// time is beyond the largest float.
+std::string untimeableInSinglePrecision(size_t frameCount, double fps);
 
 class GltfAnimation {
 public:

@@ -11,7 +11,7 @@
 
 namespace lbmshape {
 
-TriangleMesh readMesh(const MeshSource& source, MeshFormat format)
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty)
 {
   if (source.bytes.empty()) source.refuse("the file is empty");
   TriangleMesh mesh;
@@ -23,13 +23,17 @@ TriangleMesh readMesh(const MeshSource& source, MeshFormat format)
   case MeshFormat::Gltf:
   case MeshFormat::Glb: mesh = readGltf(source, format); break;
   }
+  if (mesh.triangles.empty() && empty == EmptyMesh::Allowed) {
+    mesh.positions.clear();  // nothing to check, nothing to draw
+    return mesh;
+  }
   validateInputMesh(mesh, source.name);
   log::verbose("read " + source.name + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
                std::to_string(mesh.triangleCount()) + " triangles");
   return mesh;
 }
 
-TriangleMesh readMesh(const std::filesystem::path& path)
+TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty)
 {
   const std::string name = path.string();
   const auto format = meshFormatOf(path);
@@ -38,7 +42,7 @@ TriangleMesh readMesh(const std::filesystem::path& path)
   if (!format)
     throw InputError("cannot read " + name + ": unknown mesh format '" + path.extension().string() + "' (use one of " +
                      supportedExtensions() + ")");
-  return readMesh(MeshSource{file.bytes(), name, path.parent_path()}, *format);
+  return readMesh(MeshSource{file.bytes(), name, path.parent_path()}, *format, empty);
 }
 
 }  // namespace lbmshape

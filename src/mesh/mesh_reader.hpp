@@ -20,9 +20,11 @@ namespace lbmshape {
 // extension, malformed, no triangles, a coordinate that is not finite, bad
 // indices, no enclosed volume) is an InputError whose one-line message names
 // the file. Normals are not read: lbmshape derives its own from the surface.
-TriangleMesh readMesh(const std::filesystem::path& path);
+// With EmptyMesh::Allowed a file of no triangles (a morph's frame while
+// the shape passes through nothing) is read as an empty mesh instead.
+TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused);
 
 // The same for bytes already in memory; `source.name` names them in messages.
-TriangleMesh readMesh(const MeshSource& source, MeshFormat format);
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty = EmptyMesh::Refused);
 
 }  // namespace lbmshape

@@ -11,6 +11,12 @@
 
 namespace lbmshape {
 
+// Whether a mesh without triangles may be written or read. Usually it is a
+// mistake (a denoised mesh that vanished, an input with nothing to smooth);
+// a morph's frame may be empty while the shape passes through nothing, and
+// is written as a file with no triangles, which render draws as such.
+enum class EmptyMesh { Refused, Allowed };
+
 struct TriangleMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::uvec3> triangles;

@@ -8,11 +8,6 @@
 
 namespace lbmshape {
 
-// Whether a mesh without triangles may be written. Usually it is a mistake
-// (a denoised mesh that vanished); a morph's frame may be empty while the
-// shape passes through nothing, and is written as a file with no triangles.
-enum class EmptyMesh { Refused, Allowed };
-
 // How a format stores coordinates: OBJ as text, exactly; glTF, PLY, STL and
 // OFF in single precision, where a coordinate beyond 3.4e38 would become
 // infinite (a glTF's bounds null, a file no viewer shows).

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/host_memory.hpp"
 #include "core/parameter_names.hpp"
+#include "core/number_text.hpp"
 #include "core/parameter_bounds.hpp"
 #include "core/log.hpp"
 #include "lbm/relaxation.hpp"
@@ -463,8 +464,10 @@ void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise)
   // A margin of a voxel at least: the surface's cells need neighbours.
   checkMargin(grid.marginVoxels, 1.0);
   if (!grid.voxel) checkResolution(grid.resolution, grid.marginVoxels);
-  if (!(noise.amplitude >= 0.0) || !std::isfinite(noise.amplitude))
-    throw UsageError(nameOf(Parameter::Noise) + " must be zero or positive");
+  if (!(noise.amplitude >= 0.0 && noise.amplitude <= parameter_bounds::maxNoise))
+    throw UsageError(nameOf(Parameter::Noise) + " must be from 0 to " + numberText(parameter_bounds::maxNoise) +
+                     " (a fraction of the field's largest value; the paper adds 0.05), not " +
+                     numberText(noise.amplitude));
 }
 
 void checkDenoiseOptions(const DenoiseOptions& o)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,6 +43,14 @@ namespace lbmshape {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A measured value in a message: three significant digits.
+std::string threeDigits(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
 
 const char* alignmentName(Alignment a)
 {
@@ -236,10 +245,15 @@ void checkMorphOptions(const MorphOptions& o)
                      nameOf(Parameter::StepsPerFrame) + " times " + nameOf(Parameter::Frames) + " - 1); at most " +
                      std::to_string(parameter_bounds::maxSteps));
   if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError(nameOf(Parameter::Fps) + " must be positive");
-  if (o.animation && !timeableInSinglePrecision(size_t(std::max(o.frames, 0)), o.fps))
-    throw UsageError(nameOf(Parameter::Fps) + " " + numberText(o.fps) + " is too high: the animation's " +
-                     std::to_string(o.frames) + " frames would be closer together than single precision times them");
-  if (!(o.tolerance > 0.0)) throw UsageError(nameOf(Parameter::Tolerance) + " must be positive");
+  if (o.animation) {
+    if (const std::string untimeable = untimeableInSinglePrecision(size_t(std::max(o.frames, 0)), o.fps);
+        !untimeable.empty())
+      throw UsageError(nameOf(Parameter::Fps) + " " + numberText(o.fps) + " does not fit the animation: " + untimeable);
+  }
+  if (!(o.tolerance > 0.0 && o.tolerance <= parameter_bounds::maxTolerance))
+    throw UsageError(nameOf(Parameter::Tolerance) + " must be above 0 and at most " +
+                     numberText(parameter_bounds::maxTolerance) + " voxel, not " + numberText(o.tolerance) +
+                     " (a last frame further from the target's field than that is not at the target)");
   if (!meshFormatOf("x." + o.format))
     throw UsageError(nameOf(Parameter::Format) + " " + o.format +
                      " is not a mesh format (use glb, gltf, obj, ply, off or stl)");
@@ -290,6 +304,17 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak
   // A shape that encloses nothing is the input's fault, not the morph's.
   lattice->requireEnclosedVolumes(sourcePath, targetPath);
+  // A frame within the tolerance of a target whose inside is shallower than
+  // it may have no inside at all: a solid thinner than a voxel or two
+  // (denoise refuses one thinner than a voxel as enclosing nothing).
+  if (const double depth = lattice->targetDepth(); depth <= o.tolerance)
+    throw InputError("cannot use " + targetPath.string() + " as the target: its inside reaches only " +
+                     threeDigits(depth) + " voxels deep on this grid, not beyond " + nameOf(Parameter::Tolerance) +
+                     " " + numberText(o.tolerance) +
+                     ", so the morph could end with no surface; a solid this thin needs a "
+                     "finer " +
+                     nameOf(Parameter::Resolution) +
+                     (audienceCanSet(Parameter::Voxel) ? " or " + nameOf(Parameter::Voxel) : std::string()));
   const double initialError = lattice->sourceErrorNearTarget();
   const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
   const std::vector<int>& frameSteps = schedule.frameSteps();

@@ -47,6 +47,7 @@ public:
     requireEnclosedVolume(target_, target);
   }
 
+  double targetDepth() const override { return deepestInside(target_); }
   double sourceErrorNearTarget() const override
   {
     return maxDifferenceNear(source_.values(), target_.values(), convergenceBand);

@@ -35,6 +35,8 @@ public:
   // encloses nothing on the grid (before any output folder exists).
   virtual void requireEnclosedVolumes(const std::filesystem::path& source,
                                       const std::filesystem::path& target) const = 0;
+  // How deep the target's inside reaches on the grid: its largest X (voxels).
+  virtual double targetDepth() const = 0;
   // Before start(): max |X_source - X_target| over the cells within
   // convergenceBand of the target's surface, where the morph starts from.
   virtual double sourceErrorNearTarget() const = 0;

@@ -218,7 +218,9 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   StageClock clock;
   std::vector<TriangleMesh> meshes;
   clock.time("read", [&] {
-    for (const fs::path& f : files) meshes.push_back(readMesh(f));
+    // A morph's frame may hold no triangles (the shape passing through
+    // nothing): drawn as an empty panel, as its --preview does.
+    for (const fs::path& f : files) meshes.push_back(readMesh(f, EmptyMesh::Allowed));
   });
   std::vector<ShownMesh> shown;
   nlohmann::json panels = nlohmann::json::array();

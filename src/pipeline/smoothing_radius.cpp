@@ -59,10 +59,12 @@ double marginForRadius(double radius, double longestSide, int resolution, std::o
   if (voxel) return std::ceil(2.0 * radius / *voxel);
   const double margin = std::ceil(2.0 * radius * (resolution - 1.0) / (longestSide + 4.0 * radius));
   if (resolution < 2.0 * margin + 4.0)
-    throw UsageError(nameOf(Parameter::Radius) + " " + number(radius) +
-                     " needs a margin of two radii around the mesh, " + number(margin) +
-                     " voxels, which leaves it no cells of " + nameOf(Parameter::Resolution) + " " +
-                     std::to_string(resolution) + "; give a smaller radius or a finer grid");
+    throw UsageError(nameOf(Parameter::Radius) + " " + number(radius) + " is too large for " +
+                     nameOf(Parameter::Resolution) + " " + std::to_string(resolution) +
+                     ": a margin of two radii each side of the mesh (longest side " + number(longestSide) +
+                     ") would take " + number(margin) +
+                     " of its cells each side, leaving the mesh too few; give a "
+                     "smaller radius or a finer grid");
   return margin;
 }
 

@@ -1,6 +1,7 @@
 #include "sdf/enclosed_volume.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "core/parameter_names.hpp"
@@ -28,17 +29,37 @@ void requireEnclosedVolume(const Volume& field, const std::filesystem::path& mes
   if (insideCellCount(field) == 0) enclosesNothing(meshPath);
 }
 
+namespace {
+// Whether a brick beyond the band lies inside.
+bool insideBeyondTheBand(const BandField& field)
+{
+  const BrickSet& bricks = field.bricks();
+  const Extent3& grid = bricks.bricks();
+  for (size_t b = 0; b < field.farSides().size(); ++b)
+    if (field.farSides()[b] > 0 &&
+        bricks.slot(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny)) == noBrick)
+      return true;
+  return false;
+}
+}  // namespace
+
 void requireEnclosedVolume(const BandField& field, const std::filesystem::path& meshPath)
 {
   const bool storedInside = std::any_of(field.values().begin(), field.values().end(), [](float x) { return x > 0.0f; });
-  const BrickSet& bricks = field.bricks();
-  bool farInside = false;
-  for (size_t b = 0; b < field.farSides().size() && !farInside; ++b) {
-    const Extent3& grid = bricks.bricks();
-    farInside = field.farSides()[b] > 0 &&
-                bricks.slot(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny)) == noBrick;
-  }
-  if (!storedInside && !farInside) enclosesNothing(meshPath);
+  if (!storedInside && !insideBeyondTheBand(field)) enclosesNothing(meshPath);
+}
+
+double deepestInside(const Volume& field)
+{
+  const auto& v = field.values();
+  return v.empty() ? 0.0 : double(*std::max_element(v.begin(), v.end()));
+}
+
+double deepestInside(const BandField& field)
+{
+  if (insideBeyondTheBand(field)) return std::abs(double(field.farValue()));
+  const auto& v = field.values();
+  return v.empty() ? -std::abs(double(field.farValue())) : double(*std::max_element(v.begin(), v.end()));
 }
 
 }  // namespace lbmshape

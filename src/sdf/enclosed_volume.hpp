@@ -22,4 +22,9 @@ void requireEnclosedVolume(const Volume& field, const std::filesystem::path& mes
 // The same on the narrow band: no stored cell inside and no brick beyond it inside.
 void requireEnclosedVolume(const BandField& field, const std::filesystem::path& meshPath);
 
+// The largest X of `field`: how deep its inside reaches, in the field's
+// units (the band's far value where a brick beyond the band is inside).
+double deepestInside(const Volume& field);
+double deepestInside(const BandField& field);
+
 }  // namespace lbmshape

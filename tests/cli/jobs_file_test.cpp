@@ -119,6 +119,40 @@ TEST_F(JobsFile, DuplicateKeysAndOutputsAreRefusedBeforeAnyJob)
   EXPECT_FALSE(fs::exists(folder / "same.glb")) << "no job ran";
 }
 
+// A morph's folder with and without its trailing slash is one folder; a
+// preview picture is an output too; and a job writing into a morph's
+// folder of frames could replace a frame. Each is refused before any job.
+TEST_F(JobsFile, OutputsThatMeetAnotherWayAreRefusedBeforeAnyJob)
+{
+  const nlohmann::json morph = {
+      {"command", "morph"}, {"source", "sphere.obj"}, {"target", "torus.obj"}, {"output", "frames"}, {"res", 16},
+      {"frames", 2}};
+  const auto refused = [&](nlohmann::json second, const std::string& expected) {
+    testing::CliResult r = testing::runLbmshape({"run", write(nlohmann::json::array({morph, second})).string()});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_EQ(testing::nonEmptyLines(r.err).size(), 1u) << r.err;
+    EXPECT_FALSE(fs::exists(folder / "frames")) << "no job ran";
+  };
+  nlohmann::json slash = morph;
+  slash["output"] = "frames/";
+  slash["force"] = true;
+  refused(slash, "jobs 1 and 2 both write frames/");
+  refused({{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "frames/frame_0001.glb"}, {"res", 16}},
+          "job 2 writes frames/frame_0001.glb into job 1's folder of frames frames");
+  nlohmann::json previewing = morph;
+  previewing["preview"] = "sheet.png";
+  testing::CliResult r = testing::runLbmshape({"run", write(nlohmann::json::array({previewing,
+                                                                                   {{"command", "denoise"},
+                                                                                    {"input", "sphere.obj"},
+                                                                                    {"output", "a.glb"},
+                                                                                    {"preview", "./sheet.png"},
+                                                                                    {"res", 16}}}))
+                                                          .string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("jobs 1 and 2 both write ./sheet.png"), std::string::npos) << r.err;
+}
+
 // The jobs of one run share one device, opened once (-v logs "device:" when
 // it opens). A morph creates its output folder, parents and all; a
 // denoise's folder must exist.

@@ -227,7 +227,7 @@ TEST_F(MorphCli, OtherFrameFormats)
 struct BadMorph {
   const char* name;
   int exitCode;
-  std::vector<std::string> extra;  // after "morph"; SPHERE, TORUS, OUT, FILE, MISSING, SHEET are replaced
+  std::vector<std::string> extra;  // after "morph"; SPHERE, TORUS, OUT, FILE, MISSING, SHEET, SLAB are replaced
 };
 
 void PrintTo(const BadMorph& c, std::ostream* os) { *os << c.name; }
@@ -253,6 +253,10 @@ TEST_P(MorphBadInput, ExitCodeAndOneLine)
                                }),
                 a);
     }
+    if (a == "SLAB") {  // 0.4 thick: at --res 16 its cells inside lie under a voxel deep, at 40 two
+      a = (folder / "slab.obj").string();
+      writeMesh(testing::box({-0.8, -0.8, -0.2}, {0.8, 0.8, 0.2}), a);
+    }
     args.push_back(a);
   }
   testing::CliResult r = testing::runLbmshape(args);
@@ -270,6 +274,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
         BadMorph{"target_encloses_nothing", 3, {"SPHERE", "SHEET", "OUT", "--res", "16"}},
         BadMorph{"source_encloses_nothing", 3, {"SHEET", "SPHERE", "OUT", "--res", "16"}},
+        // Inside, but shallower than the tolerance: a last frame within it could hold no inside.
+        BadMorph{"target_shallower_than_the_tolerance",
+                 3,
+                 {"SPHERE", "SLAB", "OUT", "--res", "16", "--align", "none", "--tolerance", "1"}},
+        BadMorph{"target_deeper_than_the_tolerance",
+                 0,
+                 {"SPHERE", "SLAB", "OUT", "--res", "40", "--align", "none", "--frames", "2", "-q"}},
         BadMorph{"same_file_twice_is_fine", 0, {"SPHERE", "SPHERE", "OUT", "--res", "16", "--frames", "2", "-q"}},
         BadMorph{"unwritable_folder", 4, {"SPHERE", "TORUS", "FILE", "--res", "16"}},
         BadMorph{"one_frame", 2, {"SPHERE", "TORUS", "OUT", "--frames", "1"}},

@@ -88,6 +88,30 @@ TEST(RenderCli, AFolderOfFramesShowsEvenlyChosenFramesFirstAndLastIncluded)
   EXPECT_EQ(names, (std::vector<std::string>{"frame_0000.obj", "frame_0003.obj", "frame_0006.obj", "frame_0009.obj"}));
 }
 
+// A morph's frame with no triangles (the shape passing through nothing) is
+// a valid file: render draws it as an empty panel, as the morph's preview
+// does, alone or among the others.
+TEST(RenderCli, AFrameWithNoTrianglesIsAnEmptyPanel)
+{
+  testing::ScratchFolder folder;
+  fs::create_directory(folder / "frames");
+  writeMesh(testing::icosphere(2), folder / "frames" / "frame_0000.glb");
+  writeMesh(TriangleMesh{}, folder / "frames" / "frame_0001.glb", EmptyMesh::Allowed);
+  writeMesh(testing::icosphere(2), folder / "frames" / "frame_0002.glb");
+  const testing::CliResult r =
+      testing::runLbmshape({"render", (folder / "frames").string(), (folder / "sheet.png").string(), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["meshes"].size(), 3u);
+  EXPECT_EQ(j["meshes"][1]["triangles"], 0);
+  EXPECT_GT(coveredShare(folder / "sheet.png"), 0.1) << "the two spheres";
+
+  const testing::CliResult alone = testing::runLbmshape(
+      {"render", (folder / "frames" / "frame_0001.glb").string(), (folder / "empty.png").string()});
+  ASSERT_EQ(alone.exitCode, 0) << alone.err;
+  EXPECT_EQ(coveredShare(folder / "empty.png"), 0.0);
+}
+
 TEST(RenderCli, AScansOwnColoursShowAsTheyAre)
 {
   testing::ScratchFolder folder;
@@ -114,7 +138,7 @@ struct BadRender {
   std::vector<std::string> options;
   int exitCode;
   const char* mentions;
-  bool emptyMesh = false;
+  bool badMesh = false;
   const char* picture = "out.png";
 };
 
@@ -126,8 +150,8 @@ TEST_P(RenderBadArguments, ExitCodeOneLineNoPicture)
 {
   const BadRender& c = GetParam();
   testing::ScratchFolder folder;
-  if (c.emptyMesh)
-    std::ofstream(folder / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  if (c.badMesh)  // a face of a vertex that is not there (a mesh of no triangles is drawn as an empty panel)
+    std::ofstream(folder / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
   else
     writeMesh(testing::icosphere(1), folder / "mesh.obj");
   const auto before = folder.entries();
@@ -158,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRender{"negative_columns", {"--columns", "-1"}, 2, "--columns"},
         BadRender{"cells_too_small", {"--size", "16x16", "--labels"}, 2, "--size", false},
         BadRender{"not_a_png", {}, 2, ".png", false, "out.jpg"},
-        BadRender{"mesh_without_triangles", {}, 3, "mesh.obj", true},
+        BadRender{"mesh_with_a_bad_index", {}, 3, "mesh.obj", true},
         BadRender{"missing_reference", {"--color", "distance:/nonexistent/ref.obj"}, 3, "ref.obj"},
         BadRender{"unwritable_picture", {}, 4, "/nonexistent-folder/out.png", false, "/nonexistent-folder/out.png"}),
     [](const ::testing::TestParamInfo<BadRender>& info) { return std::string(info.param.name); });

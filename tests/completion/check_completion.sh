@@ -29,6 +29,14 @@ expect "--preserve-features --preview" denoise --pre
 expect "--force --format --fps --frames" morph --f
 expect "curvature none" denoise in.obj out.glb --color ""
 expect "--paper" bench --pa
+# ENUM options list their values too, on the command line's top level or a command's.
+expect "auto cpu device" --sdf ""
+expect "auto cpu device" --extract d --sdf ""
+expect "center fit none" morph a.obj b.obj f --align ""
+# The value of a top-level option is not the command.
+expect "denoise" --sdf cpu de
+expect "denoise" --device 0 de
+[[ " $(complete_words --device "") " == *" reference "* ]] || { echo "--device: no 'reference'" >&2; failures=$((failures + 1)); }
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 touch "$scratch/scan.obj" "$scratch/scan.ply"

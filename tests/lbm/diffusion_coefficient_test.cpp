@@ -5,9 +5,11 @@
 // is the proof, recorded in docs/lattice-theory.md, that Eq. 16 is off.
 #include <array>
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "lbm/relaxation.hpp"
 #include "support/backends.hpp"
 #include "support/fields.hpp"
@@ -137,6 +139,21 @@ TEST(StartUpError, IsSmallAtTheDefaultsAndLargeForFewStepsOfALargeGamma)
   EXPECT_NEAR(relaxation::startUpError(1.0 / 6.0, 1), 0.0, 1e-12) << "tau = 1 is in equilibrium after every step";
   for (double gamma : {0.02, 0.2, 1.0})
     EXPECT_LT(std::abs(relaxation::startUpError(gamma, 100000)), 1e-3) << "it fades over a long run, gamma " << gamma;
+}
+
+// The smallest gamma that single precision keeps off tau = 1/2 is about
+// 5e-9: what the message advises is accepted, and what it refuses is not.
+TEST(GammaBounds, TheAdvisedSmallestGammaIsAccepted)
+{
+  try {
+    relaxation::checkGamma(1e-9);
+    FAIL() << "1e-9 rounds tau to 1/2";
+  } catch (const UsageError& e) {
+    const std::string message = e.what();
+    const std::string advice = message.substr(message.rfind("use at least ") + 13);
+    EXPECT_TRUE(relaxation::acceptableGamma(std::stod(advice))) << message;
+    EXPECT_FALSE(relaxation::acceptableGamma(std::stod(advice) / 4)) << "the advice is near the bound";
+  }
 }
 
 }  // namespace

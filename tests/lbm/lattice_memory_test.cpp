@@ -1,6 +1,8 @@
 // The layout's sizes, and the checks that a lattice fits a device: each limit
 // of the device, alone, turns an impossible grid into a usage error that names
 // that limit (before anything is allocated).
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -68,6 +70,28 @@ TEST(LatticeFit, EachDeviceLimitIsNamed)
 TEST(LatticeFit, MoreCellsThanThirtyTwoBitIndicesIsNamed)
 {
   EXPECT_NE(fitError({2000, 2000, 2000}, roomyDevice()).find("cells"), std::string::npos);
+}
+
+// The refusal names a grid that fits: of each limit, a --res whose grid in
+// the same proportions passes, and not far below the largest that does.
+TEST(LatticeFit, ARefusalNamesAGridThatFits)
+{
+  const Extent3 grid{160, 192, 128};
+  for (const auto lower : {+[](gpu::DeviceDescription& d) { d.deviceLocalBytes = 256u << 20; },
+                           +[](gpu::DeviceDescription& d) { d.maxTexelBufferElements = 1u << 20; }}) {
+    gpu::DeviceDescription device = roomyDevice();
+    lower(device);
+    const std::string message = fitError(grid, device);
+    // "... along its longest side (<the resolution's name> N) would fit"
+    const size_t close = message.find(") would fit");
+    ASSERT_NE(close, std::string::npos) << message;
+    const int res = std::stoi(message.substr(message.rfind(' ', close) + 1));
+    ASSERT_GT(res, 8) << message;
+    ASSERT_LT(res, 192) << message;
+    const auto scaled = [&](int side) { return Extent3{160 * side / 192, side, 128 * side / 192}; };
+    EXPECT_EQ(fitError(scaled(res), device), "") << message;
+    EXPECT_NE(fitError(scaled(res * 11 / 10), device), "") << "within 10 % of the largest that fits: " << message;
+  }
 }
 
 TEST(LatticeFit, BadExtentIsAUsageError)

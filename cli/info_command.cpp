@@ -36,8 +36,8 @@ void runInfo(const CommonOptions& common)
   // --extract) on the selected device.
   const std::string type = reference ? "" : devices[selected].type;
   const auto where = [](bool device) { return device ? "device" : "cpu"; };
-  const char* distancesOn = where(runsOnTheDevice(common.distances, reference, type, "--sdf"));
-  const char* framesOn = where(runsOnTheDevice(common.surfaces, reference, type, "--extract"));
+  const char* distancesOn = where(runsOnTheDevice(common.distances, reference, type, Parameter::Sdf));
+  const char* framesOn = where(runsOnTheDevice(common.surfaces, reference, type, Parameter::Extract));
 
   if (common.json) {
     nlohmann::json list = nlohmann::json::array();

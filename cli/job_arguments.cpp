@@ -36,20 +36,36 @@ std::string optionText(const std::string& key, const nlohmann::json& value, cons
   const std::string quoted = "\"" + key + "\"";
   if (takesWholeNumber(option)) {
     // JSON writers may print whole numbers as 96.0; the value is what counts.
+    if (!value.is_number() || value.get<double>() != std::floor(value.get<double>()))
+      throw UsageError("option " + quoted + " must be a whole number, not " + value.dump());
+    const bool unsignedOption = option.get_type_name().rfind("UINT", 0) == 0;
+    const double lowest = unsignedOption ? 0.0 : -4294967295.0;
+    if (value.get<double>() < lowest || value.get<double>() > 4294967295.0)  // the widest option: a uint32 seed
+      throw UsageError("option " + quoted + " must be a whole number from " + (unsignedOption ? "0" : "-4294967295") +
+                       " to 4294967295, not " + value.dump());
     if (value.is_number_integer()) return value.dump();
-    if (value.is_number_float() && value.get<double>() == std::floor(value.get<double>())) {
-      if (std::abs(value.get<double>()) > 4294967295.0)  // beyond any option here (the widest: a uint32 seed)
-        throw UsageError("option " + quoted + " is too large: " + value.dump());
-      return std::to_string(static_cast<long long>(value.get<double>()));
-    }
-    throw UsageError("option " + quoted + " must be a whole number, not " + value.dump());
+    return std::to_string(static_cast<long long>(value.get<double>()));
   }
   if (takesNumber(option)) {
     if (value.is_number()) return value.dump();
     throw UsageError("option " + quoted + " must be a number, not " + value.dump());
   }
-  if (value.is_string()) return value.get<std::string>();
+  if (value.is_string()) {
+    // Empty, "--key=" would make the option take the next argument as its value.
+    if (value.get<std::string>().empty())
+      throw UsageError("option " + quoted + " is empty: give a value, or null (or leave it out) for the default");
+    return value.get<std::string>();
+  }
   throw UsageError("option " + quoted + " must be a string, not " + value.dump());
+}
+
+// A path of the jobs file, relative to its folder: "./-scan.obj" where the
+// folder is the current one, so that a name starting with '-' is a path,
+// never an option.
+std::string jobPath(const fs::path& base, const fs::path& p)
+{
+  if (p.is_absolute()) return p.string();
+  return ((base.empty() ? fs::path(".") : base) / p).string();
 }
 
 }  // namespace
@@ -67,8 +83,8 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
   for (const auto& name : known->second) {
     if (!job.contains(name) || !job[name].is_string())
       throw UsageError(command + " job needs \"" + name + "\" (a path)");
-    fs::path p = job[name].get<std::string>();
-    args.push_back((p.is_absolute() ? p : base / p).string());
+    if (job[name].get<std::string>().empty()) throw UsageError(command + " job's \"" + name + "\" is empty");
+    args.push_back(jobPath(base, job[name].get<std::string>()));
   }
   for (const auto& [key, value] : job.items()) {
     if (key == "command" || std::find(known->second.begin(), known->second.end(), key) != known->second.end()) continue;
@@ -82,7 +98,7 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
     } else {
       // One argument, so that a value starting with '-' is never taken for an option.
       std::string text = optionText(key, value, *option);
-      if (takesPath(key) && !fs::path(text).is_absolute()) text = (base / text).string();
+      if (takesPath(key)) text = jobPath(base, text);
       args.push_back("--" + key + "=" + text);
     }
   }

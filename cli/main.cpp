@@ -121,6 +121,10 @@ int main(int argc, char** argv)
   // A reader of stdout that went away is an output error (exit 4), not a
   // silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
+  // Likewise a file-size limit (ulimit -f): a write beyond it fails with
+  // EFBIG, an output error that removes the temporary file, instead of
+  // SIGXFSZ killing the process with the file half-written.
+  std::signal(SIGXFSZ, SIG_IGN);
   prepareParallelRegions();
   try {
     app.parse(argc, argv);

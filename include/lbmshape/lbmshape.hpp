@@ -14,8 +14,9 @@
 // Errors are exceptions derived from lbmshape::Error (core/error.hpp):
 // UsageError (a parameter out of range), InputError (a mesh that cannot be
 // read or encloses nothing), OutputError, DeviceError, NumericalError. Their
-// messages name parameters as the option structs do ("grid.resolution must
-// be at least 8"; core/parameter_names.hpp).
+// messages name parameters as the option structs do ("grid.resolution 4 is
+// too coarse for a margin of 4 voxels; use at least 12";
+// core/parameter_names.hpp).
 #pragma once
 
 #include "core/error.hpp"

@@ -75,6 +75,10 @@ class Denoise(unittest.TestCase):
         self.assertFalse(report["twicing"])  # given steps: plain unless told
         self.assertEqual(report["twicing_chosen"], "auto")
         self.assertEqual(report["relax_rounds"], 2)  # the default
+        # The figures of the meshes, as denoise --json prints them.
+        self.assertEqual(report["command"], "denoise")
+        self.assertEqual(report["output"]["triangles"], len(f2))
+        self.assertLess(abs(report["volume_change"]), 0.01)  # the volume kept
         _, _, twiced = lbmshape.denoise(v, f, res=40, steps=3, twicing=True, report=True)
         self.assertTrue(twiced["twicing"])
         self.assertEqual(twiced["twicing_chosen"], "given")

@@ -1,6 +1,8 @@
 #include "core/interrupt.hpp"
 
 #include <atomic>
+#include <cstdint>
+#include <ctime>
 #include <csignal>
 
 #include <signal.h>  // sigaction
@@ -12,11 +14,29 @@ namespace lbmshape::interrupt {
 namespace {
 constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
 std::atomic<int> received{0};
+std::atomic<int64_t> firstAtNs{0};  // CLOCK_MONOTONIC of the first
+// A copy of the first signal this soon after it is the same request, not a
+// second one: coreutils' `timeout -s INT` sends its signal to the process
+// and then to its process group, which the process is in. A person's second
+// Ctrl-C comes later than this.
+constexpr int64_t sameRequestNs = 200'000'000;
+static_assert(std::atomic<int64_t>::is_always_lock_free, "read and written in a signal handler");
+
+int64_t monotonicNs()
+{
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return int64_t(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
+}
 
 extern "C" void onSignal(int signal)
 {
   int none = 0;
-  if (received.compare_exchange_strong(none, signal)) return;  // the first: a request, checked between batches of work
+  if (received.compare_exchange_strong(none, signal)) {  // the first: a request, checked between batches of work
+    firstAtNs = monotonicNs();
+    return;
+  }
+  if (signal == received && monotonicNs() - firstAtNs < sameRequestNs) return;
   // A second ends the process at once, as usual, but first removes the
   // temporary files that unwinding would have removed.
   temporary_files::removeAllFromSignalHandler();

@@ -38,6 +38,8 @@ Names namesOf(Parameter parameter)
   case Parameter::ReplaceInput: return {"replaceInput", "--force", nullptr};
   case Parameter::Preview: return {"preview", "--preview", nullptr};
   case Parameter::Device: return {"device", "--device", "device"};
+  case Parameter::Sdf: return {"distances", "--sdf", "sdf"};
+  case Parameter::Extract: return {"surfaces", "--extract", "extract"};
   case Parameter::Size: return {"size", "--size", nullptr};
   case Parameter::View: return {"view", "--view", nullptr};
   case Parameter::Colouring: return {"colouring", "--color", nullptr};

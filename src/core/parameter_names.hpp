@@ -33,6 +33,8 @@ enum class Parameter {
   ReplaceInput,
   Preview,
   Device,
+  Sdf,
+  Extract,
   Size,
   View,
   Colouring,

@@ -118,22 +118,23 @@ gpu::GpuContext& ComputeDevice::openContext() const
   return *gpu_;
 }
 
-bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, const char* option)
+bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, Parameter option)
 {
   if (choice == RunsOn::Device && reference)
-    throw UsageError(std::string(option) + " device needs a Vulkan device, not the reference (--device reference)");
+    throw UsageError(nameOf(option) + " device needs a Vulkan device, not the reference solver (" +
+                     nameOf(Parameter::Device) + " reference)");
   if (choice == RunsOn::Cpu || reference) return false;
   return choice == RunsOn::Device || type != "cpu";
 }
 
-bool ComputeDevice::onTheDevice(RunsOn choice, const char* option) const
+bool ComputeDevice::onTheDevice(RunsOn choice, Parameter option) const
 {
   // Only Auto reads the device's type: the others open no instance.
   const bool readsType = choice == RunsOn::Auto && !isReference();
   return runsOnTheDevice(choice, isReference(), readsType ? description().type : std::string(), option);
 }
 
-bool ComputeDevice::distancesGoToTheDevice() const { return onTheDevice(distances_, "--sdf"); }
+bool ComputeDevice::distancesGoToTheDevice() const { return onTheDevice(distances_, Parameter::Sdf); }
 
 bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
 {
@@ -142,7 +143,7 @@ bool ComputeDevice::distancesOnTheDevice(const TriangleBvh& tree) const
   return distances_ == RunsOn::Device || deviceHoldsTree(description().maxStorageBufferRange, tree);
 }
 
-bool ComputeDevice::surfacesOnTheDevice() const { return onTheDevice(surfaces_, "--extract"); }
+bool ComputeDevice::surfacesOnTheDevice() const { return onTheDevice(surfaces_, Parameter::Extract); }
 
 void ComputeDevice::warnThatTheGridsFramesAreTheCpus() const
 {

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <string>
 
+#include "core/parameter_names.hpp"
 #include "core/extent.hpp"
 #include "lbm/band_solver.hpp"
 #include "lbm/lattice_solver.hpp"
@@ -35,9 +36,9 @@ enum class RunsOn { Auto, Cpu, Device };
 // reference solver, which has no device). Auto takes the device on a GPU
 // (discrete, integrated or virtual) and the CPU on a CPU device such as
 // lavapipe and on the reference. RunsOn::Device on the reference is a
-// UsageError naming `option` (--sdf, --extract). (The band's distances also
+// UsageError naming `option` (Parameter::Sdf, Parameter::Extract). (The band's distances also
 // need their tree to fit the device: ComputeDevice::distancesOnTheDevice.)
-bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, const char* option);
+bool runsOnTheDevice(RunsOn choice, bool reference, const std::string& type, Parameter option);
 
 class ComputeDevice {
 public:
@@ -129,7 +130,7 @@ private:
   gpu::GpuContext& openContext() const;
   void finishWarmUp() const;  // waits for warmUpForTheBand()'s thread, if any
   // runsOnTheDevice() for this device, `option` naming the choice.
-  bool onTheDevice(RunsOn choice, const char* option) const;
+  bool onTheDevice(RunsOn choice, Parameter option) const;
   bool distancesGoToTheDevice() const;  // the rule of bandDistances(), the tree aside
 
   std::string request_;

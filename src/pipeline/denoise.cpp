@@ -606,6 +606,20 @@ void warnIfFewGivenSteps(const DenoiseOptions& o)
   if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps);
 }
 
+// The report's figures of the input and the result, as `denoise --json`
+// prints them (a file's path is added by its caller).
+void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const MeshTopology& inputTopology,
+                       const TriangleMesh& result)
+{
+  const MeshTopology outputTopology = analyzeTopology(result);
+  report["command"] = "denoise";
+  report["input"] = meshSummary(input, inputTopology);
+  report["output"] = meshSummary(result, outputTopology);
+  report["volume_change"] = inputTopology.closedManifold && inputTopology.signedVolume != 0
+                                ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
+                                : nlohmann::json(nullptr);
+}
+
 }  // namespace
 
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
@@ -618,8 +632,10 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
   TriangleMesh checked = mesh;
   validateInputMesh(checked, name);
   StageClock clock([&device] { return device.deviceBusyMs(); });
-  DenoiseResult smoothed = smoothMesh(checked, analyzeTopology(checked), name, o, device, clock);
+  const MeshTopology inputTopology = analyzeTopology(checked);
+  DenoiseResult smoothed = smoothMesh(checked, inputTopology, name, o, device, clock);
   device.requireCleanValidation();
+  describeTheMeshes(smoothed.report, checked, inputTopology, smoothed.mesh);
   smoothed.report["ms"] = clock.toJson();
   smoothed.report["device_ms"] = clock.deviceToJson();
   return smoothed;
@@ -662,18 +678,12 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   }
   clock.record("write", committing.ms());
 
-  const MeshTopology outputTopology = analyzeTopology(result);
   nlohmann::json& report = smoothed.report;
-  report["command"] = "denoise";
-  report["input"] = meshSummary(mesh, inputTopology);
-  report["output"] = meshSummary(result, outputTopology);
+  describeTheMeshes(report, mesh, inputTopology, result);
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
   report["ms"] = clock.toJson();
   report["device_ms"] = clock.deviceToJson();
-  report["volume_change"] = inputTopology.closedManifold && inputTopology.signedVolume != 0
-                                ? nlohmann::json(outputTopology.signedVolume / inputTopology.signedVolume - 1.0)
-                                : nlohmann::json(nullptr);
   report["preview"] = o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr);
   return smoothed;
 }

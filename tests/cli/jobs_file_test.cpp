@@ -206,6 +206,10 @@ const JobCase jobCases[] = {
     {"unknown_key", {{"frobnicate", 1}}, "\"frobnicate\""},
     {"help_is_no_job_option", {{"help", true}}, "\"help\""},
     {"missing_output", {{"output", nullptr}}, "\"output\""},
+    // "--preview=" would take the next argument as its value.
+    {"empty_string", {{"preview", ""}}, "option \"preview\" is empty"},
+    {"negative_seed", {{"seed", -1}}, "option \"seed\" must be a whole number from 0"},
+    {"seed_beyond_32_bits", {{"seed", 4294967296LL}}, "option \"seed\" must be a whole number from 0"},
 };
 
 TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)

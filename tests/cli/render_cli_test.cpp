@@ -242,10 +242,9 @@ TEST(Preview, APreviewThatCannotBeWrittenLeavesNoMeshEither)
   const auto before = folder.entries();
 
   // A file-size limit fails the picture's write as a full disk would
-  // (SIGXFSZ ignored: the write returns EFBIG instead of killing).
+  // (lbmshape ignores SIGXFSZ: the write returns EFBIG instead of killing).
   // (prlimit, not the shell's ulimit -f, whose unit differs between shells.)
-  std::string command =
-      "trap '' XFSZ; exec prlimit --fsize=" + std::to_string(limitBytes) + " '" + testing::lbmshapeBinary() + "'";
+  std::string command = "exec prlimit --fsize=" + std::to_string(limitBytes) + " '" + testing::lbmshapeBinary() + "'";
   for (const std::string& argument : job) command += " '" + argument + "'";
   command += " 2>'" + (folder / "err.txt").string() + "'";
   const int status = std::system(command.c_str());

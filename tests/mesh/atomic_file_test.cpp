@@ -106,11 +106,29 @@ TEST(AtomicFileDeathTest, ASecondCtrlCEndsTheProcessAndLeavesNoTemporaryFile)
         AtomicFile second(folder / "b.glb");
         std::raise(SIGINT);  // the request: the process goes on
         if (!interrupt::requested() || !std::filesystem::exists(first.temporaryPath())) std::_Exit(3);
-        std::raise(SIGINT);  // ends it
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a person's second Ctrl-C
+        std::raise(SIGINT);                                           // ends it
         std::_Exit(4);
       },
       ::testing::KilledBySignal(SIGINT), "");
   EXPECT_TRUE(folder.entries().empty()) << ::testing::PrintToString(folder.entries());
+}
+
+// coreutils' `timeout -s INT` sends the signal to the process and then to
+// its process group: the copy that follows at once is the same request, and
+// the job still unwinds and says what is complete.
+TEST(AtomicFileDeathTest, ACopyOfTheFirstSignalAtOnceIsTheSameRequest)
+{
+  testing::ScratchFolder folder;
+  EXPECT_EXIT(
+      {
+        interrupt::installHandler();
+        AtomicFile file(folder / "a.obj");
+        std::raise(SIGINT);
+        std::raise(SIGINT);  // at once: the same request
+        std::_Exit(interrupt::requested() && std::filesystem::exists(file.temporaryPath()) ? 7 : 3);
+      },
+      ::testing::ExitedWithCode(7), "");
 }
 
 // A writer opens the temporary file the constructor made; if it has gone

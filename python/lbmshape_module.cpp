@@ -254,6 +254,10 @@ def iter_morph(*args, **kwargs):
     as it is made. The morph runs on a thread of its own, at most two frames ahead;
     leaving the loop early stops it."""
     import queue, threading
+    if "on_frame" in kwargs:
+        raise TypeError("iter_morph() yields the frames itself: on_frame is lbmshape.morph()'s")
+    if kwargs.get("report"):
+        raise TypeError("iter_morph() yields frames, not a report: use lbmshape.morph(..., report=True) instead")
     frames, stop, done, failure = queue.Queue(maxsize=2), threading.Event(), object(), []
 
     class _Left(Exception):

@@ -233,6 +233,13 @@ class IterMorph(unittest.TestCase):
             for _ in lbmshape.iter_morph(v, f, v, f, align="left"):
                 pass
 
+    def test_what_the_generator_cannot_take_is_named(self):
+        v, f = icosphere(2)
+        with self.assertRaisesRegex(TypeError, "on_frame is lbmshape.morph"):
+            next(lbmshape.iter_morph(v, f, v, f, on_frame=print))
+        with self.assertRaisesRegex(TypeError, "use lbmshape.morph\\(..., report=True\\)"):
+            next(lbmshape.iter_morph(v, f, v, f, report=True))
+
 
 class Files(unittest.TestCase):
     def test_a_mesh_written_reads_back(self):

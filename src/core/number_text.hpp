@@ -2,6 +2,7 @@
 #pragma once
 
 #include <charconv>
+#include <cstdio>
 #include <string>
 
 namespace lbmshape {
@@ -14,6 +15,15 @@ inline std::string numberText(double value)
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, value).ptr;
   return std::string(text, end);
+}
+
+// A measured value, in a message or on a picture: three significant digits
+// (0.0115, 1.23e+04), where the shortest exact text would run to seventeen.
+inline std::string threeSignificantDigits(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
 }
 
 }  // namespace lbmshape

@@ -90,7 +90,7 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
   throw DeviceError("a " + layout.extent.toString() + " lattice does not fit on " + device.name + ": " + why + "; " +
                     (fits > 0 ? "a grid of about " + std::to_string(fits) + " cells along its longest side (" +
                                     nameOf(Parameter::Resolution) + " " + std::to_string(fits) +
-                                    ") would fit, or use " + "another " + nameOf(Parameter::Device)
+                                    ") would fit, or use another " + nameOf(Parameter::Device)
                               : "use another " + nameOf(Parameter::Device)));
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -43,14 +42,6 @@ namespace lbmshape {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A measured value in a message: three significant digits.
-std::string threeDigits(double value)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
 
 const char* alignmentName(Alignment a)
 {
@@ -309,8 +300,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   // (denoise refuses one thinner than a voxel as enclosing nothing).
   if (const double depth = lattice->targetDepth(); depth <= o.tolerance)
     throw InputError("cannot use " + targetPath.string() + " as the target: its inside reaches only " +
-                     threeDigits(depth) + " voxels deep on this grid, not beyond " + nameOf(Parameter::Tolerance) +
-                     " " + numberText(o.tolerance) +
+                     threeSignificantDigits(depth) + " voxels deep on this grid, not beyond " +
+                     nameOf(Parameter::Tolerance) + " " + numberText(o.tolerance) +
                      ", so the morph could end with no surface; a solid this thin needs a "
                      "finer " +
                      nameOf(Parameter::Resolution) +

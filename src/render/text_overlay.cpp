@@ -11,6 +11,8 @@
 #include <stb/stb_easy_font.h>
 #pragma GCC diagnostic pop
 
+#include "core/number_text.hpp"
+
 namespace lbmshape::render {
 namespace {
 
@@ -24,13 +26,6 @@ std::string printable(const std::string& text)
   for (char& c : out)
     if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
   return out;
-}
-
-std::string number(double v)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", v);
-  return buffer;
 }
 
 }  // namespace
@@ -80,7 +75,8 @@ void drawLegend(Image& image, const Rect& area, const Legend& legend, int scale)
     image.fill(x, barTop, x + 1, barBottom, legendColour(legend, legend.low + t * (legend.high - legend.low)));
   }
   const double middle = 0.5 * (legend.low + legend.high);
-  const std::string low = number(legend.low), mid = number(middle), high = number(legend.high);
+  const std::string low = threeSignificantDigits(legend.low), mid = threeSignificantDigits(middle),
+                    high = threeSignificantDigits(legend.high);
   const int textTop = barBottom + 2 * scale;
   drawText(image, barLeft, textTop, low, scale, kTextColour);
   drawText(image, (barLeft + barRight - textWidth(mid, scale)) / 2, textTop, mid, scale, kTextColour);

@@ -246,7 +246,7 @@ void addBenchCommand(CLI::App& app, const CommonOptions& common)
   bench
       ->add_option("--half-width", options->halfWidth,
                    "With --band: voxels each side of the surface that stream (default: an isotropic denoise's, 6 at "
-                   "the default gamma; 7 by default, for the edge-finding copy)")
+                   "the default gamma; a default denoise's is 8, for smoothing that may be twiced)")
       ->needs(band);
   bench->callback([&common, options] { runBench(common, *options); });
 }

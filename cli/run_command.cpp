@@ -193,18 +193,43 @@ void runJobs(CommonOptions& common, const RunArguments& a)
   std::string firstFailure;
   size_t jobsInPart = 0;
   for (size_t i = 0; i < jobs.size(); ++i) jobsInPart += shard.holds(i + 1);
+  // The report, also of a run stopped by a signal: the jobs done, and the
+  // one that was stopped, so that a script can run the rest.
+  const auto report = [&](bool interrupted) {
+    common.report({{"command", "run"},
+                   {"jobs", jobs.size()},
+                   {"run", results.size()},
+                   {"failed", failed},
+                   {"interrupted", interrupted},
+                   {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
+                   {"results", results}});
+  };
+  const auto jobsDone = [&] {
+    return std::to_string(results.size()) + " of " + std::to_string(jobsInPart) + " jobs done";
+  };
   for (size_t i = 0; i < jobs.size(); ++i) {
     if (!shard.holds(i + 1)) continue;
     nlohmann::json result = {{"job", i + 1}};
     std::string what = "job " + std::to_string(i + 1);
     try {
-      interrupt::check(std::to_string(results.size()) + " of " + std::to_string(jobsInPart) + " jobs done");
+      interrupt::check(jobsDone());
+    } catch (const Interrupted&) {
+      report(true);
+      throw;
+    }
+    try {
       if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string())
         result["command"] = jobs[i]["command"];
       result["report"] = runJob(jobs[i], base, common, what);
       result["ok"] = true;
-    } catch (const Interrupted&) {
-      throw;
+    } catch (const Interrupted& e) {
+      result["ok"] = false;
+      result["exit_code"] = int(e.code());
+      result["error"] = e.what();
+      const std::string done = jobsDone();
+      results.push_back(result);
+      report(true);
+      throw Interrupted(std::string(e.what()) + "; " + done, e.signal());
     } catch (const std::exception& e) {
       int code = int(ExitCode::Device);
       if (auto* error = dynamic_cast<const Error*>(&e))
@@ -220,12 +245,7 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     results.push_back(result);
     if (failed && a.failFast) break;
   }
-  common.report({{"command", "run"},
-                 {"jobs", jobs.size()},
-                 {"run", results.size()},
-                 {"failed", failed},
-                 {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
-                 {"results", results}});
+  report(false);
   if (failed)
     throw Error(ExitCode(firstFailureCode),
                 std::to_string(failed) + " of " + std::to_string(results.size()) + " jobs failed" +

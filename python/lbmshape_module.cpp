@@ -10,10 +10,14 @@
 //
 // The Vulkan device is opened at the first call and kept (lbmshape.Device
 // chooses another); the GIL is released while the device works, so other
-// Python threads run. Errors: lbmshape.UsageError (a ValueError: a parameter
-// out of range), lbmshape.InputError (a ValueError: a mesh that is unusable),
-// lbmshape.OutputError (an OSError), lbmshape.DeviceError (a RuntimeError),
-// all from lbmshape.Error.
+// Python threads run, and Ctrl-C stops a call within a fraction of a second
+// (KeyboardInterrupt), as lbmshape.request_stop() does from another thread
+// (lbmshape.Interrupted). Errors: lbmshape.UsageError (a ValueError: a
+// parameter out of range), lbmshape.InputError (a ValueError: a mesh that is
+// unusable), lbmshape.OutputError (an OSError), lbmshape.DeviceError (a
+// RuntimeError), lbmshape.Interrupted, all from lbmshape.Error.
+#include <atomic>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +29,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/parameter_names.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
@@ -42,14 +47,17 @@ using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast
 
 // The mesh of two arrays, checked for shape and index range here (the rest,
 // finite coordinates and a surface that is not flat, denoiseMesh checks).
-TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles)
+// `prefix` names the pair in messages: "" (vertices, triangles) or
+// "source_", "target_".
+TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles, const std::string& prefix = "")
 {
+  const std::string vertexName = prefix + "vertices", triangleName = prefix + "triangles";
   if (vertices.ndim() != 2 || vertices.shape(1) != 3)
     throw UsageError(
-        "vertices must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
+        vertexName + " must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
         (vertices.ndim() == 2 ? " with " + std::to_string(vertices.shape(1)) + " columns" : std::string()));
   if (triangles.ndim() != 2 || triangles.shape(1) != 3)
-    throw UsageError("triangles must be an array of shape (m, 3) of vertex indices");
+    throw UsageError(triangleName + " must be an array of shape (m, 3) of vertex indices");
   TriangleMesh mesh;
   const auto v = vertices.unchecked<2>();
   for (py::ssize_t i = 0; i < v.shape(0); ++i) mesh.positions.push_back({v(i, 0), v(i, 1), v(i, 2)});
@@ -57,8 +65,8 @@ TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles)
   for (py::ssize_t i = 0; i < t.shape(0); ++i) {
     for (int k = 0; k < 3; ++k)
       if (t(i, k) < 0 || t(i, k) >= v.shape(0))
-        throw UsageError("triangles[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) +
-                         ", but there are " + std::to_string(v.shape(0)) + " vertices");
+        throw UsageError(triangleName + "[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) +
+                         ", but there are " + std::to_string(v.shape(0)) + " " + vertexName);
     mesh.triangles.push_back({uint32_t(t(i, 0)), uint32_t(t(i, 1)), uint32_t(t(i, 2))});
   }
   return mesh;
@@ -75,6 +83,74 @@ py::tuple toArrays(const TriangleMesh& mesh)
   for (size_t i = 0; i < mesh.triangles.size(); ++i)
     for (int k = 0; k < 3; ++k) t(py::ssize_t(i), k) = mesh.triangles[i][k];
   return py::make_tuple(vertices, triangles);
+}
+
+// The library's calls under way, counted so that a stop request stops
+// those and no later one: the first call to begin, and the last to end,
+// forget any request left standing.
+class CallUnderWay {
+public:
+  CallUnderWay()
+  {
+    if (underWay++ == 0) interrupt::clearStopRequest();
+  }
+  ~CallUnderWay()
+  {
+    if (--underWay == 0) interrupt::clearStopRequest();
+  }
+  CallUnderWay(const CallUnderWay&) = delete;
+  CallUnderWay& operator=(const CallUnderWay&) = delete;
+
+private:
+  static inline std::atomic<int> underWay{0};
+};
+
+bool onPythonsMainThread()
+{
+  const py::module_ threading = py::module_::import("threading");
+  return threading.attr("main_thread")().is(threading.attr("current_thread")());
+}
+
+// `work()` (a call into the library) without the GIL, so that other Python
+// threads run, and stoppable. Python's SIGINT handler runs only once control
+// comes back to Python, so a Ctrl-C would wait for the whole call: on the
+// main thread SIGINT stops the call at its next check instead (the library's
+// checks come a fraction of a second apart), and is then handed to Python's
+// handler, which raises KeyboardInterrupt as usual. Where the call ended of
+// itself the Ctrl-C is handed on all the same, for Python to act on next.
+template <class Work>
+auto stoppable(Work&& work) -> decltype(work())
+{
+  std::optional<decltype(work())> result;
+  std::exception_ptr failure;
+  bool sigint = false;
+  {
+    CallUnderWay call;
+    std::optional<interrupt::SigintStopsCalls> sigintStops;
+    if (onPythonsMainThread()) sigintStops.emplace();
+    try {
+      py::gil_scoped_release released;
+      result.emplace(work());
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    sigint = sigintStops && sigintStops->caughtOne();
+  }  // Python's own handler is back
+  if (sigint) {
+    PyErr_SetInterrupt();  // as if SIGINT came now
+    bool stoppedByIt = false;
+    try {
+      if (failure) std::rethrow_exception(failure);
+    } catch (const Interrupted&) {
+      stoppedByIt = true;
+    } catch (...) {}
+    // Python's handler raises KeyboardInterrupt (or whatever a handler of
+    // the program's own raises); one that raises nothing leaves
+    // lbmshape.Interrupted.
+    if (stoppedByIt && PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+  if (failure) std::rethrow_exception(failure);
+  return std::move(*result);
 }
 
 // The device the functions use unless given one: opened at first use.
@@ -110,14 +186,11 @@ py::object denoise(const Vertices& vertices, const Triangles& triangles, int res
   options.dense = dense;
   const TriangleMesh mesh = toMesh(vertices, triangles);
   if (!device) device = defaultDevice();
-  std::optional<DenoiseResult> result;
-  {
-    py::gil_scoped_release released;
-    result = denoiseMesh(mesh, "the vertices and triangles", options, *device);
-  }
-  py::tuple arrays = toArrays(result->mesh);
+  const DenoiseResult result =
+      stoppable([&] { return denoiseMesh(mesh, "the vertices and triangles", options, *device); });
+  py::tuple arrays = toArrays(result.mesh);
   if (!report) return arrays;
-  py::object figures = py::module_::import("json").attr("loads")(result->report.dump());
+  py::object figures = py::module_::import("json").attr("loads")(result.report.dump());
   return py::make_tuple(arrays[0], arrays[1], figures);
 }
 
@@ -141,7 +214,7 @@ Alignment alignmentNamed(const std::string& name)
 // The morph's frames, each handed to `onFrame(index, vertices, triangles)`
 // as the frame writer's thread makes it (with the GIL taken for the call),
 // or gathered into a list. An exception the callback raises stops the morph
-// and is raised again, as RuntimeError, with its message.
+// and is raised again as it was, its type and traceback kept.
 py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangles, const Vertices& targetVertices,
                  const Triangles& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
                  double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
@@ -155,12 +228,13 @@ py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangle
   options.gamma = gamma;
   options.align = alignmentNamed(align);
   options.band = band;
-  const TriangleMesh source = toMesh(sourceVertices, sourceTriangles), target = toMesh(targetVertices, targetTriangles);
+  const TriangleMesh source = toMesh(sourceVertices, sourceTriangles, "source_"),
+                     target = toMesh(targetVertices, targetTriangles, "target_");
   if (!device) device = defaultDevice();
   py::list gathered;
+  std::optional<py::error_already_set> raised;  // by on_frame
   const FrameSink sink = [&](int index, const TriangleMesh& mesh) {
     py::gil_scoped_acquire held;
-    std::string failure;
     try {
       py::tuple arrays = toArrays(mesh);
       if (onFrame.is_none())
@@ -168,14 +242,17 @@ py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangle
       else
         onFrame(index, arrays[0], arrays[1]);
     } catch (py::error_already_set& e) {
-      failure = e.what();  // read while the GIL is held; the C++ side gets a plain error
+      raised.emplace(std::move(e));
     }
-    if (!failure.empty()) throw std::runtime_error("the on_frame callback raised: " + failure);
+    // The morph stops on a C++ error; the Python one is raised below.
+    if (raised) throw std::runtime_error("the on_frame callback raised an exception");
   };
   nlohmann::json figures;
-  {
-    py::gil_scoped_release released;
-    figures = morphMeshes(source, target, options, *device, sink);
+  try {
+    figures = stoppable([&] { return morphMeshes(source, target, options, *device, sink); });
+  } catch (...) {
+    if (raised) throw *raised;
+    throw;
   }
   py::object result = onFrame.is_none() ? py::object(gathered) : py::object(py::none());
   if (!report) return result;
@@ -201,6 +278,7 @@ PYBIND11_MODULE(lbmshape, m)
   static py::exception<InputError> input(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
   static py::exception<OutputError> output(m, "OutputError", py::make_tuple(error, py::handle(PyExc_OSError)));
   static py::exception<DeviceError> device(m, "DeviceError", py::make_tuple(error, py::handle(PyExc_RuntimeError)));
+  static py::exception<Interrupted> interrupted(m, "Interrupted", error);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -212,6 +290,8 @@ PYBIND11_MODULE(lbmshape, m)
       PyErr_SetString(output.ptr(), e.what());
     } catch (const DeviceError& e) {
       PyErr_SetString(device.ptr(), e.what());
+    } catch (const Interrupted& e) {
+      PyErr_SetString(interrupted.ptr(), e.what());
     } catch (const Error& e) {
       PyErr_SetString(error.ptr(), e.what());
     }
@@ -301,22 +381,21 @@ def iter_morph(*args, **kwargs):
 )",
            m.attr("__dict__"));
   m.def(
+      "request_stop", [] { interrupt::requestStop(); },
+      "Stop every lbmshape call under way, on any thread, at its next check (within a fraction of a second): "
+      "each raises lbmshape.Interrupted, having written nothing partial. Calls that begin later run as usual.");
+  m.def(
       "read_mesh",
-      [](const std::filesystem::path& path) {
-        TriangleMesh mesh;
-        {
-          py::gil_scoped_release released;
-          mesh = readMesh(path);
-        }
-        return toArrays(mesh);
-      },
+      [](const std::filesystem::path& path) { return toArrays(stoppable([&] { return readMesh(path); })); },
       py::arg("path"), "Read an OBJ, PLY, OFF, STL, glTF or GLB file: (vertices, triangles)");
   m.def(
       "write_mesh",
       [](const std::filesystem::path& path, const Vertices& vertices, const Triangles& triangles) {
         const TriangleMesh mesh = toMesh(vertices, triangles);
-        py::gil_scoped_release released;
-        writeMesh(mesh, path);
+        stoppable([&] {
+          writeMesh(mesh, path);
+          return true;
+        });
       },
       py::arg("path"), py::arg("vertices"), py::arg("triangles"),
       "Write a mesh; the format follows the extension (.obj, .ply, .off, .stl, .gltf, .glb)");

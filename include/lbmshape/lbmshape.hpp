@@ -17,9 +17,16 @@
 // messages name parameters as the option structs do ("grid.resolution 4 is
 // too coarse for a margin of 4 voxels; use at least 12";
 // core/parameter_names.hpp).
+//
+// To stop a call under way (a Cancel button, from any thread):
+// lbmshape::interrupt::requestStop(); the call throws lbmshape::Interrupted
+// at its next check, within a fraction of a second, having written nothing
+// partial. The request stands for every call, on any thread, until
+// lbmshape::interrupt::clearStopRequest() (core/interrupt.hpp).
 #pragma once
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/parameter_names.hpp"
 #include "library_version.hpp"
 #include "lbmshape/version.hpp"

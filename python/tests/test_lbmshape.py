@@ -3,8 +3,10 @@ report, a morph's frames as a list or through a callback, files read and
 written, errors as exceptions that name what is wrong, and the GIL released
 while the device works."""
 import os
+import signal
 import tempfile
 import threading
+import traceback
 import unittest
 
 import numpy as np
@@ -121,8 +123,13 @@ class Denoise(unittest.TestCase):
         v, f = noisy_sphere()
         with self.assertRaisesRegex(lbmshape.UsageError, "vertices must be an array of shape"):
             lbmshape.denoise(v[:, :2], f)
-        with self.assertRaisesRegex(ValueError, r"triangles\[0\] has index"):
+        with self.assertRaisesRegex(ValueError, r"^triangles\[0\] has index \d+, but there are \d+ vertices$"):
             lbmshape.denoise(v, f + len(v))
+        # A morph's two meshes are told apart.
+        with self.assertRaisesRegex(ValueError, "^target_vertices must be an array of shape"):
+            lbmshape.morph(v, f, v[:, :2], f)
+        with self.assertRaisesRegex(ValueError, r"^source_triangles\[0\] has index .* source_vertices$"):
+            lbmshape.morph(v, f + len(v), v, f)
         with self.assertRaisesRegex(ValueError, "^gamma must be a positive number"):
             lbmshape.denoise(v, f, gamma=-1)
         # The keyword, not the command line's flag (--res) or the C++ field.
@@ -198,17 +205,67 @@ class Morph(unittest.TestCase):
         self.assertEqual([k for k, _ in seen], [0, 1, 2, 3])
         self.assertTrue(all(n > 0 for _, n in seen))
 
-    def test_an_error_in_on_frame_stops_the_morph_with_its_message(self):
+    def test_an_error_in_on_frame_stops_the_morph_and_is_raised_as_it_was(self):
         v, f = icosphere(3)
         vt, ft = ellipsoid()
 
-        def refuse(k, vk, fk):
-            raise KeyError("no room for frame %d" % k)
+        class NoRoom(Exception):
+            pass
 
-        with self.assertRaisesRegex(RuntimeError, "no room for frame 0"):
+        seen = []
+
+        def refuse(k, vk, fk):
+            seen.append(k)
+            raise NoRoom("no room for frame %d" % k)
+
+        try:
             lbmshape.morph(v, f, vt, ft, frames=4, res=24, steps=20, align="none", on_frame=refuse)
+            self.fail("no exception")
+        except NoRoom as e:  # not assertRaises, which drops the traceback
+            self.assertEqual(str(e), "no room for frame 0")
+            frames = traceback.extract_tb(e.__traceback__)
+            self.assertEqual(frames[-1].name, "refuse", "the traceback reaches into the callback")
+        self.assertEqual(seen, [0])
         with self.assertRaisesRegex(ValueError, "align must be"):
             lbmshape.morph(v, f, vt, ft, align="left")
+
+    def frames_made_stopping_at_frame_1(self, stop, raises):
+        """The frames a 24-frame morph gives when stop() is called from its
+        frame 1, and the exception it raises, `raises`, checked."""
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        seen = []
+
+        def on_frame(k, vk, fk):
+            seen.append(k)
+            if k == 1:
+                stop()
+
+        with self.assertRaises(raises) as caught:
+            lbmshape.morph(v, f, vt, ft, frames=24, res=24, steps=240, align="none", on_frame=on_frame)
+        # Python alone would run its SIGINT handler only once the whole morph
+        # had returned: every frame would have been made.
+        self.assertGreaterEqual(len(seen), 2)
+        self.assertLess(len(seen), 24)
+        return caught.exception
+
+    def test_ctrl_c_stops_the_morph_at_once_with_keyboard_interrupt(self):
+        self.frames_made_stopping_at_frame_1(lambda: os.kill(os.getpid(), signal.SIGINT), KeyboardInterrupt)
+        self.assertIs(signal.getsignal(signal.SIGINT), signal.default_int_handler, "Python's handler is back")
+        v, f = icosphere(3)
+        v2, f2 = lbmshape.denoise(v, f, res=24)  # nothing left standing
+        self.assertGreater(len(f2), 0)
+
+    def test_request_stop_from_another_thread_stops_the_calls_under_way(self):
+        cancel = lambda: threading.Thread(target=lbmshape.request_stop).start()
+        stopped = self.frames_made_stopping_at_frame_1(cancel, lbmshape.Interrupted)
+        self.assertRegex(str(stopped), "^stopped: ")
+        self.assertTrue(issubclass(lbmshape.Interrupted, lbmshape.Error))
+        lbmshape.request_stop()  # with no call under way: stops nothing later
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        frames = lbmshape.morph(v, f, vt, ft, frames=3, res=24, steps=20, align="none")
+        self.assertEqual(len(frames), 3)
 
 
 class IterMorph(unittest.TestCase):

@@ -39,12 +39,18 @@ struct DeviceError : Error {
   explicit DeviceError(const std::string& m) : Error(ExitCode::Device, m) {}
 };
 // The user pressed Ctrl-C, or the process was asked to stop (SIGTERM,
-// SIGHUP); what was complete is kept, nothing partial. The exit code is
-// 128 + the signal's number, as the shell reports a process it killed.
+// SIGHUP), or a program that links the library asked (signal 0,
+// interrupt::requestStop); what was complete is kept, nothing partial. The
+// exit code is 128 + the signal's number, as the shell reports a process it
+// killed (130, Ctrl-C's, for the program's own request).
 struct Interrupted : Error {
   explicit Interrupted(const std::string& m, int signal = 2 /* SIGINT */)
-      : Error(static_cast<ExitCode>(128 + signal), m)
+      : Error(static_cast<ExitCode>(128 + (signal ? signal : 2)), m), signal_(signal)
   {}
+  int signal() const { return signal_; }
+
+private:
+  int signal_;
 };
 // A result that is not a number, or a scheme driven outside its stable range.
 struct NumericalError : Error {

@@ -13,8 +13,11 @@
 namespace lbmshape::interrupt {
 namespace {
 constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
+// What asked to stop first: a signal's number, byTheProgram, or 0 (nothing).
+constexpr int byTheProgram = -1;
 std::atomic<int> received{0};
-std::atomic<int64_t> firstAtNs{0};  // CLOCK_MONOTONIC of the first
+std::atomic<int> sigintsWhileHosted{0};  // SIGINTs that SigintStopsCalls took from its host
+std::atomic<int64_t> firstAtNs{0};       // CLOCK_MONOTONIC of the first
 // A copy of the first signal this soon after it is the same request, not a
 // second one: coreutils' `timeout -s INT` sends its signal to the process
 // and then to its process group, which the process is in. A person's second
@@ -44,13 +47,28 @@ extern "C" void onSignal(int signal)
   std::raise(signal);  // delivered when this handler returns: the process dies of it, as the shell expects
 }
 
+// A host's SIGINT (SigintStopsCalls): a request every time, never the end
+// of the host.
+extern "C" void onHostedSigint(int signal)
+{
+  ++sigintsWhileHosted;
+  int none = 0;
+  received.compare_exchange_strong(none, signal);
+}
+
 std::string stoppedBy(int signal)
 {
   switch (signal) {
   case SIGTERM: return "terminated (SIGTERM): ";
   case SIGHUP: return "hung up (SIGHUP): ";
+  case byTheProgram: return "stopped: ";
   default: return "interrupted: ";
   }
+}
+
+[[noreturn]] void stop(int signal, const std::string& whatWasDone)
+{
+  throw Interrupted(stoppedBy(signal) + whatWasDone, signal == byTheProgram ? 0 : signal);
 }
 }  // namespace
 
@@ -70,16 +88,49 @@ void installHandler()
 }
 
 bool requested() { return received != 0; }
-int signalReceived() { return received; }
+int signalReceived() { return received == byTheProgram ? 0 : int(received); }
 
 void check(const std::string& whatWasDone)
 {
-  if (const int signal = received) throw Interrupted(stoppedBy(signal) + whatWasDone, signal);
+  if (const int signal = received) stop(signal, whatWasDone);
 }
 
 void check(const std::function<std::string()>& whatWasDone)
 {
-  if (const int signal = received) throw Interrupted(stoppedBy(signal) + whatWasDone(), signal);
+  if (const int signal = received) stop(signal, whatWasDone());
 }
+
+void requestStop()
+{
+  int none = 0;
+  received.compare_exchange_strong(none, byTheProgram);
+}
+
+void clearStopRequest()
+{
+  received = 0;
+  firstAtNs = 0;
+}
+
+SigintStopsCalls::SigintStopsCalls()
+{
+  // A host that ignores SIGINT, or leaves it to end the process, keeps
+  // its choice.
+  if (sigaction(SIGINT, nullptr, &host_) != 0) return;
+  if (!(host_.sa_flags & SA_SIGINFO) && (host_.sa_handler == SIG_IGN || host_.sa_handler == SIG_DFL)) return;
+  sigintsWhileHosted = 0;
+  struct sigaction action = {};
+  action.sa_handler = onHostedSigint;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  installed_ = sigaction(SIGINT, &action, nullptr) == 0;
+}
+
+SigintStopsCalls::~SigintStopsCalls()
+{
+  if (installed_) sigaction(SIGINT, &host_, nullptr);
+}
+
+bool SigintStopsCalls::caughtOne() const { return sigintsWhileHosted > 0; }
 
 }  // namespace lbmshape::interrupt

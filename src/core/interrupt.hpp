@@ -6,21 +6,59 @@
 // 129), as a shell reports a process the signal killed. A second signal
 // ends the process at once, as usual, after removing the temporary files of
 // writes under way (temporary_files.hpp).
+//
+// A program that links the library can ask for the same stop itself
+// (requestStop: a Cancel button), and clear it before its next call; a host
+// with signal handlers of its own (Python) lends SIGINT to the flag only
+// while a call runs (SigintStopsCalls).
 #pragma once
 
 #include <functional>
 #include <string>
 
+#include <signal.h>  // struct sigaction
+
 namespace lbmshape::interrupt {
 
+// The command line's handlers, for the life of the process.
 void installHandler();
 bool requested();
-// The first signal received (SIGINT, SIGTERM or SIGHUP); 0 before any.
+// The first signal received (SIGINT, SIGTERM or SIGHUP), 0 before any or
+// where the program asked (requestStop).
 int signalReceived();
 // Throws Interrupted with `whatWasDone` if a stop was requested.
 void check(const std::string& whatWasDone);
 // The same, asking whatWasDone() only when stopping: what is complete may
 // only be known once the work under way has been wound down.
 void check(const std::function<std::string()>& whatWasDone);
+
+// Asks every call under way, on any thread, to stop at its next check, as
+// the first Ctrl-C does; they throw Interrupted (exit code 130, signal 0).
+// The request stands until clearStopRequest: later calls stop at once.
+void requestStop();
+// Forgets a request (the program's or a signal's), so that the next call
+// runs. The command line never clears: a process that was asked to stop
+// ends.
+void clearStopRequest();
+
+// For a host with its own SIGINT handler (Python's raises KeyboardInterrupt,
+// but only once the call returns to it): for the life of this object SIGINT
+// sets the stop flag instead, every time (a second Ctrl-C does not end the
+// host); the host's handler comes back at the end. A SIGINT the host
+// ignores, or leaves to end the process, stays so. Make one on the thread that handles the host's
+// signals, around a call that runs without it.
+class SigintStopsCalls {
+public:
+  SigintStopsCalls();
+  ~SigintStopsCalls();
+  SigintStopsCalls(const SigintStopsCalls&) = delete;
+  SigintStopsCalls& operator=(const SigintStopsCalls&) = delete;
+  // Whether a SIGINT came while this object was in place.
+  bool caughtOne() const;
+
+private:
+  struct sigaction host_ = {};
+  bool installed_ = false;
+};
 
 }  // namespace lbmshape::interrupt

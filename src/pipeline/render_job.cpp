@@ -231,8 +231,12 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   nlohmann::json figures;
   const render::Image image = clock.time("draw", [&] { return drawMeshes(shown, o, device, &figures); });
   clock.time("write", [&] { render::writePng(image, file); });
-  nlohmann::json report = {
-      {"command", "render"}, {"output", png.string()}, {"meshes", panels}, {"device", device.name()}};
+  // The device that drew, which for --device reference is the best Vulkan
+  // device there is, not the solver.
+  nlohmann::json report = {{"command", "render"},
+                           {"output", png.string()},
+                           {"meshes", panels},
+                           {"device", device.drawingContext().description().name}};
   report.update(figures);
   report["ms"] = clock.toJson();
   return report;

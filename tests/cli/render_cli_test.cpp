@@ -71,6 +71,22 @@ TEST(RenderCli, JsonNamesEveryMeshAndThePicture)
   EXPECT_GT(h, 512) << "labels and legend below the two cells";
 }
 
+// The reference solver draws nothing: the Vulkan device that drew is named.
+TEST(RenderCli, JsonNamesTheDeviceThatDrew)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(2), folder / "a.obj");
+  const auto deviceOf = [&](std::vector<std::string> args) {
+    const testing::CliResult r = testing::runLbmshape(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(r.out)["device"].get<std::string>();
+  };
+  const std::string drew =
+      deviceOf({"--device", "reference", "--json", "render", (folder / "a.obj").string(), (folder / "a.png").string()});
+  EXPECT_EQ(drew, deviceOf({"--json", "render", (folder / "a.obj").string(), (folder / "b.png").string()}));
+  EXPECT_EQ(drew.find("reference"), std::string::npos) << drew;
+}
+
 TEST(RenderCli, AFolderOfFramesShowsEvenlyChosenFramesFirstAndLastIncluded)
 {
   testing::ScratchFolder folder;

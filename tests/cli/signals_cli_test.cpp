@@ -13,6 +13,7 @@
 #include <thread>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
@@ -119,6 +120,51 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
   const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(message.find("terminated (SIGTERM): " + std::to_string(frames) + " complete frames"), std::string::npos)
       << frames << " frames; " << message;
+}
+
+// A jobs file stopped in its second job still reports, with --json, the
+// job done and the one stopped, so that a script can run the rest; the
+// message says how many were done.
+TEST(StopSignal, AStoppedJobsFileReportsTheJobsDone)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  const nlohmann::json jobs =
+      nlohmann::json::array({{{"command", "denoise"}, {"input", "a.obj"}, {"output", "a.glb"}, {"res", 24}},
+                             {{"command", "morph"},
+                              {"source", "a.obj"},
+                              {"target", "b.obj"},
+                              {"output", "frames"},
+                              {"res", 48},
+                              {"frames", 400},
+                              {"format", "obj"},
+                              {"no-animation", true}},
+                             {{"command", "denoise"}, {"input", "b.obj"}, {"output", "b.glb"}, {"res", 24}}});
+  std::ofstream(folder / "jobs.json") << jobs.dump();
+  const fs::path log = folder / "stderr.txt", out = folder / "stdout.json";
+  const pid_t pid =
+      testing::spawnLbmshape({"-q", "run", (folder / "jobs.json").string(), "--json"}, log.string(), out.string());
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(testing::waitForFile(folder / "frames" / "frame_0004.obj", std::chrono::seconds(60)));
+  kill(pid, SIGTERM);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  std::ifstream in(out);
+  const nlohmann::json report = nlohmann::json::parse(in);
+  EXPECT_EQ(report["interrupted"], true);
+  EXPECT_EQ(report["run"], 2);
+  ASSERT_EQ(report["results"].size(), 2u);
+  EXPECT_EQ(report["results"][0]["ok"], true);
+  EXPECT_EQ(report["results"][1]["ok"], false);
+  EXPECT_EQ(report["results"][1]["exit_code"], 143);
+  EXPECT_EQ(report["results"][1]["error"].get<std::string>().rfind("terminated (SIGTERM): ", 0), 0u)
+      << report["results"][1]["error"];
+  EXPECT_FALSE(fs::exists(folder / "b.glb"));
+  std::ifstream logIn(log);
+  const std::string message((std::istreambuf_iterator<char>(logIn)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("; 1 of 3 jobs done"), std::string::npos) << message;
 }
 
 // A library that aborts the process (Mesa's LLVM, out of memory while

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "mesh/mesh_noise.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
@@ -106,6 +107,39 @@ TEST(InMemory, TheFirstErrorOfTheSinkStopsTheMorph)
     EXPECT_STREQ(e.what(), "no room for frame 0");
   }
   EXPECT_EQ(calls, 1);
+}
+
+// A program's own stop request (a Cancel button) stops a morph at its next
+// frame with Interrupted, as Ctrl-C stops the command; it stands until the
+// program clears it, and then the same morph runs to its end.
+TEST(InMemory, AStopTheProgramRequestsEndsTheMorphUntilCleared)
+{
+  ComputeDevice device{"", true};
+  MorphOptions o;
+  o.grid.resolution = 24;
+  o.align = Alignment::None;
+  o.frames = 12;
+  o.steps = 60;
+  const TriangleMesh sphere = testing::icosphere(3), smaller = testing::scaled(testing::icosphere(3), 0.7);
+  int calls = 0;
+  try {
+    morphMeshes(sphere, smaller, o, device, [&](int k, const TriangleMesh&) {
+      ++calls;
+      if (k == 1) interrupt::requestStop();
+    });
+    FAIL() << "the morph ran to its end";
+  } catch (const Interrupted& e) {
+    EXPECT_EQ(e.signal(), 0);
+    EXPECT_EQ(e.code(), ExitCode::Interrupted);
+    EXPECT_EQ(std::string(e.what()).rfind("stopped: ", 0), 0u) << e.what();
+  }
+  EXPECT_GE(calls, 2);
+  EXPECT_LT(calls, o.frames);
+  EXPECT_THROW(denoiseMesh(sphere, "a sphere", DenoiseOptions{}, device), Interrupted);  // the request stands
+  interrupt::clearStopRequest();
+  calls = 0;
+  morphMeshes(sphere, smaller, o, device, [&](int, const TriangleMesh&) { ++calls; });
+  EXPECT_EQ(calls, o.frames);
 }
 
 TEST(InMemory, AMeshWithAnIndexOutOfRangeIsAnInputErrorNamingIt)

@@ -90,7 +90,7 @@ std::vector<std::string> messageLines(const std::string& text)
   return lines;
 }
 
-pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFile)
+pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFile, const std::string& outFile)
 {
   arguments.insert(arguments.begin(), lbmshapeBinary());
   std::vector<char*> argv;
@@ -98,7 +98,7 @@ pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFi
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, 2, logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
   const int failed = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);

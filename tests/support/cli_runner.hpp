@@ -33,10 +33,11 @@ constexpr bool addressSpaceLimitsWork() { return !builtWithAddressSanitizer; }
   if (!::lbmshape::testing::addressSpaceLimitsWork()) \
   GTEST_SKIP() << "AddressSanitizer reserves its shadow memory as address space: ulimit -v cannot apply here"
 
-// lbmshape started in the background, its stdout and stderr sent to
-// `logFile` (or /dev/null), for the tests that signal it; -1 if it did not
-// start.
-pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFile = "/dev/null");
+// lbmshape started in the background, its stderr sent to `logFile` and its
+// stdout to `outFile` (each /dev/null unless given), for the tests that
+// signal it; -1 if it did not start.
+pid_t spawnLbmshape(std::vector<std::string> arguments, const std::string& logFile = "/dev/null",
+                    const std::string& outFile = "/dev/null");
 
 // The wait status of `pid`; a test failure, and the process killed, if it
 // still runs after `limit` (a failing test must not hang).

@@ -96,7 +96,7 @@ void GltfAnimation::add(const TriangleMesh& frame)
     throw std::logic_error("the animation of " + std::to_string(frameCount_) + " frames was given one more");
   const std::string name = "frame " + std::to_string(i);
   // A frame may be empty (a morph through nothing): its node has no mesh.
-  requireWritable(frame, path_, name, EmptyMesh::Allowed, CoordinatePrecision::Single);
+  requireWritable(frame, path_, name, EmptyMesh::Allowed, CoordinatePrecision::SingleAboutAnOrigin);
   GltfBuilder& builder = model_->builder;
   // At rest (no animation playing) only frame 0 is shown.
   const int node = builder.addNode(builder.addMesh(frame, name), name,

@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/parameter_names.hpp"
+#include "mesh/single_precision.hpp"
 #include "mesh/colour_space.hpp"
 #include "mesh/glb_container.hpp"
 #include "mesh/gltf_compression.hpp"
@@ -152,7 +153,7 @@ int GltfBuilder::addCompressedMesh(const TriangleMesh& mesh, const std::string& 
   primitive.indices = addAccessor(indices);
 
   const int index = addOnePrimitiveMesh(primitive, name);
-  dequantization_[index] = {c.translation, c.scale};
+  placements_[index] = {c.translation, c.scale};
   return index;
 }
 
@@ -213,9 +214,15 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
 {
   if (mesh.triangles.empty()) return -1;
   if (compression_ == GltfCompression::Meshopt) return addCompressedMesh(mesh, name);
+  // Far from the origin for its size, about its centre, which its node's
+  // translation gives back (single_precision.hpp).
+  const glm::dvec3 origin = singlePrecisionOrigin(mesh);
   std::vector<float> positions;
   positions.reserve(3 * mesh.positions.size());
-  for (const auto& p : mesh.positions) positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
+  for (const auto& p : mesh.positions) {
+    const glm::dvec3 q = p - origin;
+    positions.insert(positions.end(), {float(q.x), float(q.y), float(q.z)});
+  }
 
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -236,7 +243,9 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
   indices.count = 3 * mesh.triangles.size();
   primitive.indices = addAccessor(indices);
 
-  return addOnePrimitiveMesh(primitive, name);
+  const int index = addOnePrimitiveMesh(primitive, name);
+  if (origin != glm::dvec3(0.0)) placements_[index] = {origin, 1.0};
+  return index;
 }
 
 int GltfBuilder::addOnePrimitiveMesh(const tinygltf::Primitive& primitive, const std::string& name)
@@ -253,16 +262,16 @@ int GltfBuilder::addNode(int mesh, const std::string& name, std::vector<double> 
   tinygltf::Node node;
   node.name = name;
   node.scale = std::move(scale);
-  const auto quantized = dequantization_.find(mesh);
-  if (quantized == dequantization_.end()) {
+  const auto placed = placements_.find(mesh);
+  if (placed == placements_.end()) {
     node.mesh = mesh;
   } else {
-    tinygltf::Node dequantize;
-    dequantize.mesh = mesh;
-    const auto& [translation, step] = quantized->second;
-    dequantize.translation = {translation.x, translation.y, translation.z};
-    dequantize.scale = {step, step, step};
-    model_.nodes.push_back(dequantize);
+    tinygltf::Node placement;
+    placement.mesh = mesh;
+    const auto& [translation, step] = placed->second;
+    placement.translation = {translation.x, translation.y, translation.z};
+    if (step != 1.0) placement.scale = {step, step, step};
+    model_.nodes.push_back(placement);
     node.children = {int(model_.nodes.size() - 1)};
   }
   model_.nodes.push_back(node);

@@ -24,7 +24,8 @@ public:
   // Asset version 2.0, generator "lbmshape <version>".
   explicit GltfBuilder(GltfCompression compression = GltfCompression::None);
 
-  // A mesh of one TRIANGLES primitive: POSITION (float, with min/max),
+  // A mesh of one TRIANGLES primitive: POSITION (float, with min/max; about
+  // the mesh's centre where it lies far from the origin for its size),
   // NORMAL (float, unit length: the mesh's own normals where they are
   // usable, else area-weighted ones), uint32 indices. Returns its index, or
   // -1 for a mesh without triangles: glTF has no empty meshes (nor empty
@@ -32,8 +33,10 @@ public:
   int addMesh(const TriangleMesh& mesh, const std::string& name);
   // A node showing `mesh` (none if -1), made a root of the (single) scene;
   // returns its index. A compressed mesh hangs from a child node whose
-  // translation and scale undo the quantization, so `scale` (and an
-  // animation of the node's scale) means the same as without compression.
+  // translation and scale undo the quantization, and a mesh stored about its
+  // centre (single_precision.hpp) from one whose translation is that centre,
+  // so `scale` (and an animation of the node's scale) means the same as for
+  // a mesh stored as it is.
   int addNode(int mesh, const std::string& name, std::vector<double> scale = {});
   // A float accessor over `values` (count x components of `type`), in its
   // own buffer view; min/max are filled in when `withBounds`.
@@ -61,9 +64,11 @@ private:
 
   tinygltf::Model model_;
   GltfCompression compression_;
-  size_t decodedBytes_ = 0;                                      // of the fallback buffer
-  size_t taken_ = 0;                                             // bytes of buffer 0 handed over (takeBufferData)
-  std::map<int, std::pair<glm::dvec3, double>> dequantization_;  // translation and scale, by mesh
+  size_t decodedBytes_ = 0;  // of the fallback buffer
+  size_t taken_ = 0;         // bytes of buffer 0 handed over (takeBufferData)
+  // The translation and scale that place a mesh's stored positions, by mesh:
+  // a compressed one's dequantization, or a far one's centre.
+  std::map<int, std::pair<glm::dvec3, double>> placements_;
 };
 
 // Writes the model to file.temporaryPath() as a .glb, or as a .gltf with its

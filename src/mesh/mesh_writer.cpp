@@ -22,6 +22,19 @@ MeshFormat outputFormat(const std::filesystem::path& path)
   return *format;
 }
 
+CoordinatePrecision coordinatePrecisionOf(MeshFormat format)
+{
+  switch (format) {
+  case MeshFormat::Obj: return CoordinatePrecision::Double;  // text, every digit
+  case MeshFormat::Gltf:
+  case MeshFormat::Glb: return CoordinatePrecision::SingleAboutAnOrigin;
+  case MeshFormat::Ply:
+  case MeshFormat::Off:  // text, but of floats (OpenMesh's writer)
+  case MeshFormat::Stl: break;
+  }
+  return CoordinatePrecision::Single;
+}
+
 void requireCompressible(MeshFormat format, const std::filesystem::path& path, GltfCompression compression)
 {
   if (compression != GltfCompression::None && format != MeshFormat::Glb)
@@ -50,8 +63,7 @@ std::unique_ptr<AtomicFile> writeMeshUncommitted(const TriangleMesh& mesh, const
 {
   const auto format = outputFormat(path);
   requireCompressible(format, path, compression);
-  requireWritable(mesh, path, "the mesh", empty,
-                  format == MeshFormat::Obj ? CoordinatePrecision::Double : CoordinatePrecision::Single);
+  requireWritable(mesh, path, "the mesh", empty, coordinatePrecisionOf(format));
   auto file = std::make_unique<AtomicFile>(path);
   switch (format) {
   case MeshFormat::Obj: writeObj(mesh, *file); break;

@@ -38,7 +38,8 @@ void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const Atomic
   std::string diagnostic;
   {
     OpenMeshDiagnostics diagnostics;
-    // 9 significant digits: enough for any float to read back exactly (OFF is text).
+    // 9 significant digits: enough for any float to read back exactly (OFF
+    // is text, of floats: OpenMesh's writer takes the float points).
     ok = out && OpenMesh::IO::IOManager().write(out, extension, exporter, options, 9);
     if (!ok) diagnostic = diagnostics.firstMessage();
   }

@@ -25,6 +25,7 @@ target_sources(lbmshape_mesh PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/openmesh_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ply_header.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ply_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/single_precision.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_exporter.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stl_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/text_chunks.cpp

@@ -1,12 +1,41 @@
 #include "mesh/writable_mesh.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "core/error.hpp"
 #include "core/number_text.hpp"
 #include "mesh/mesh_geometry.hpp"
+#include "mesh/single_precision.hpp"
 
 namespace lbmshape {
+namespace {
+
+void requireSinglePrecisionHolds(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& prefix,
+                                 CoordinatePrecision precision)
+{
+  const glm::dvec3 origin =
+      precision == CoordinatePrecision::SingleAboutAnOrigin ? singlePrecisionOrigin(mesh) : glm::dvec3(0.0);
+  const double largest = double(std::numeric_limits<float>::max());
+  for (const auto& p : mesh.positions)
+    if (glm::any(glm::greaterThan(glm::abs(p - origin), glm::dvec3(largest))))
+      throw OutputError(prefix + " has a coordinate beyond single precision (" + numberText(largest) + "), which " +
+                        path.extension().string() + " stores; write .obj, which keeps doubles");
+  // A hundredth of an edge: the triangles keep their shape and normals.
+  const double rounding = singlePrecisionRounding(mesh, origin), edge = meanEdgeLength(mesh);
+  if (rounding > 0.01 * edge) {
+    const Bounds box = bounds(mesh);
+    const glm::dvec3 corner = glm::max(glm::abs(box.min), glm::abs(box.max));
+    const double farthest = std::max({corner.x, corner.y, corner.z});
+    throw OutputError(prefix + " lies up to " + threeSignificantDigits(farthest) + " from the origin, where " +
+                      path.extension().string() + "'s single-precision coordinates would move its vertices by up to " +
+                      threeSignificantDigits(rounding) + ", more than a hundredth of its edges (" +
+                      threeSignificantDigits(edge) +
+                      " on average), and its triangles would collapse; write .obj or .glb, which keep them");
+  }
+}
+
+}  // namespace
 
 void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& what,
                      EmptyMesh empty, CoordinatePrecision precision)
@@ -16,14 +45,9 @@ void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path
   for (const auto& t : mesh.triangles)
     if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size())
       throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");
-  const double largest = precision == CoordinatePrecision::Single ? double(std::numeric_limits<float>::max())
-                                                                  : std::numeric_limits<double>::max();
-  for (const auto& p : mesh.positions) {
+  for (const auto& p : mesh.positions)
     if (!isFinite(p)) throw OutputError(prefix + " has a coordinate that is not a finite number");
-    if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(largest))))
-      throw OutputError(prefix + " has a coordinate beyond single precision (" + numberText(largest) + "), which " +
-                        path.extension().string() + " stores; write .obj, which keeps doubles");
-  }
+  if (precision != CoordinatePrecision::Double) requireSinglePrecisionHolds(mesh, path, prefix, precision);
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +
                       std::to_string(mesh.positions.size()) + " vertices");

@@ -30,6 +30,7 @@
 #include "mesh/mesh_validation.hpp"
 #include "pipeline/animation_memory.hpp"
 #include "pipeline/frame_writer.hpp"
+#include "pipeline/input_orientation.hpp"
 #include "pipeline/interruptible_steps.hpp"
 #include "pipeline/morph_frame_report.hpp"
 #include "pipeline/morph_lattice.hpp"
@@ -272,6 +273,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                         const fs::path& targetPath, const MorphOptions& o, const ComputeDevice& device,
                         StageClock& clock, const FrameDestination& to)
 {
+  orientTheInput(source, sourcePath.string());
+  orientTheInput(target, targetPath.string());
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);

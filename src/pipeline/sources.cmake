@@ -5,6 +5,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/feature_probe.cpp
   ${CMAKE_CURRENT_LIST_DIR}/field_noise.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/input_orientation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interruptible_steps.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_frame_report.cpp

@@ -18,7 +18,8 @@ namespace {
 {
   throw InputError("cannot use " + meshPath.string() +
                    ": it encloses no volume (its winding number is below 1/2 at every cell of the grid); an open "
-                   "sheet has no inside, and a solid thinner than a voxel needs a finer " +
+                   "sheet has no inside (nor has one facing inward: its triangles must wind counter-clockwise seen "
+                   "from outside), and a solid thinner than a voxel needs a finer " +
                    nameOf(Parameter::Resolution) +
                    (audienceCanSet(Parameter::Voxel) ? " or " + nameOf(Parameter::Voxel) : std::string()));
 }

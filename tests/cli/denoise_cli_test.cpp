@@ -456,6 +456,13 @@ TEST(DenoiseCli, WarnsWhenThinPartsVanishOnACoarseGrid)
   EXPECT_TRUE(warned("ring.obj", "24")) << "a ring 1.6 voxels thick";
   EXPECT_FALSE(warned("ring.obj", "96"));
   EXPECT_FALSE(warned("overlapping.obj", "48"));
+  // The warning's figure is --json's volume_change.
+  const testing::CliResult r = testing::runLbmshape(
+      {"denoise", (folder / "ring.obj").string(), (folder / "out.glb").string(), "--res", "24", "-q", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const double change = nlohmann::json::parse(r.out)["volume_change"].get<double>();
+  const std::string percent = "encloses " + std::to_string(int(std::lround(std::abs(change) * 100.0))) + " % less";
+  EXPECT_NE(r.err.find(percent), std::string::npos) << percent << " in " << r.err;
 }
 
 TEST(DenoiseCli, TheOutputIsNotTheInputUnlessForced)

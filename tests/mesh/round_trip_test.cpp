@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+#include "mesh/gltf_animation.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "mesh/mesh_fixtures.hpp"
+#include "support/glb_json.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {
@@ -78,6 +81,45 @@ TEST(RoundTrip, ObjKeepsEveryBitOfADoubleFarFromTheOrigin)
   const TriangleMesh read = readMesh(folder / "far.obj");
   ASSERT_EQ(read.positions.size(), far.positions.size());
   for (size_t i = 0; i < far.positions.size(); ++i) EXPECT_EQ(read.positions[i], far.positions[i]) << "vertex " << i;
+}
+
+// A georeferenced scan: a mesh 1e6 of its sizes from the origin, where a
+// float is 0.0625 wide. glTF keeps it (positions about its centre, the
+// centre in its node's translation, in double), compressed or not and in
+// an animation; the float-only formats refuse it rather than write
+// collapsed triangles; a mesh near the origin is stored as it is.
+TEST(RoundTrip, GltfKeepsAMeshFarFromTheOriginAndTheOthersRefuseIt)
+{
+  const glm::dvec3 centre{1e6 + 0.123456789, -2e6, 5e5};
+  const TriangleMesh far = testing::icosphere(3, 1.0, centre);
+  testing::ScratchFolder folder;
+  // Every vertex on the unit sphere about the centre (compression reorders
+  // them, so they are not compared one to one).
+  const auto expectKept = [&](const TriangleMesh& read, double tolerance, const std::string& what) {
+    ASSERT_EQ(read.triangleCount(), far.triangleCount()) << what;
+    for (const glm::dvec3& p : read.positions) ASSERT_NEAR(glm::distance(p, centre), 1.0, tolerance) << what;
+  };
+  for (const char* extension : {".glb", ".gltf"}) {
+    writeMesh(far, folder / (std::string("far") + extension));
+    expectKept(readMesh(folder / (std::string("far") + extension)), 2e-7, extension);
+  }
+  writeMesh(far, folder / "compressed.glb", EmptyMesh::Refused, GltfCompression::Meshopt);
+  expectKept(readMesh(folder / "compressed.glb"), 1e-4, "compressed");  // 16-bit quantization of its box
+  writeGltfAnimation({far}, 24, folder / "morph.glb");
+  expectKept(readMesh(folder / "morph.glb"), 2e-7, "animation");
+  for (const char* extension : {".ply", ".stl", ".off"}) {
+    const auto path = folder / (std::string("far") + extension);
+    try {
+      writeMesh(far, path);
+      ADD_FAILURE() << extension << " was written";
+    } catch (const OutputError& e) {
+      EXPECT_NE(std::string(e.what()).find("write .obj or .glb"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(path)) << extension;
+  }
+  // Near the origin for its size: the positions as they are, no translation.
+  writeMesh(testing::icosphere(2, 1.7, {3.25, -0.5, 12.0}), folder / "near.glb");
+  for (const auto& node : testing::glbJson(folder / "near.glb")["nodes"]) EXPECT_FALSE(node.contains("translation"));
 }
 
 TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)

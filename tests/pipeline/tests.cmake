@@ -7,6 +7,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/feature_probe_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_writer_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/in_memory_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/input_orientation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_arrival_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_front_test.cpp

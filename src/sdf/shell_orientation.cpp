@@ -1,0 +1,155 @@
+#include "sdf/shell_orientation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "sdf/point_triangle.hpp"
+
+namespace lbmshape {
+namespace {
+
+// A triangle's use of an edge (a < b), and whether it runs a -> b.
+struct EdgeUse {
+  uint32_t a, b, triangle;
+  bool forward;
+};
+
+// The triangles joined to each triangle through an edge that exactly two
+// share (`sameWay`: both run it in the same direction, so one of them is
+// turned), as compressed rows; and the triangles that touch an edge used
+// once or more than twice (not part of a closed piece).
+struct Neighbours {
+  std::vector<size_t> rowStart;
+  std::vector<std::pair<uint32_t, bool>> joined;  // (triangle, sameWay)
+  std::vector<bool> touchesAnOpenEdge;
+};
+
+Neighbours neighboursOf(const TriangleMesh& mesh)
+{
+  const size_t n = mesh.triangles.size();
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * n);
+  for (uint32_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t u = mesh.triangles[t][k], v = mesh.triangles[t][(k + 1) % 3];
+      if (u != v) uses.push_back({std::min(u, v), std::max(u, v), t, u < v});
+    }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
+  });
+  Neighbours result;
+  result.touchesAnOpenEdge.assign(n, false);
+  std::vector<std::pair<uint32_t, std::pair<uint32_t, bool>>> pairs;  // (triangle, (neighbour, sameWay))
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i;
+    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b) ++j;
+    if (j - i == 2) {
+      const bool sameWay = uses[i].forward == uses[i + 1].forward;
+      pairs.push_back({uses[i].triangle, {uses[i + 1].triangle, sameWay}});
+      pairs.push_back({uses[i + 1].triangle, {uses[i].triangle, sameWay}});
+    } else {
+      for (size_t k = i; k < j; ++k) result.touchesAnOpenEdge[uses[k].triangle] = true;
+    }
+    i = j;
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  result.rowStart.assign(n + 1, 0);
+  for (const auto& p : pairs) ++result.rowStart[p.first + 1];
+  for (size_t t = 0; t < n; ++t) result.rowStart[t + 1] += result.rowStart[t];
+  result.joined.reserve(pairs.size());
+  for (const auto& p : pairs) result.joined.push_back(p.second);
+  return result;
+}
+
+void turnOver(glm::uvec3& triangle) { std::swap(triangle[1], triangle[2]); }
+
+// The volume a closed piece encloses, taken about its first corner (any
+// point gives the same for a closed piece; a near one loses fewer digits).
+double signedVolume(const TriangleMesh& mesh, const std::vector<uint32_t>& piece)
+{
+  const glm::dvec3 o = mesh.positions[mesh.triangles[piece.front()][0]];
+  double sixTimes = 0.0;
+  for (const uint32_t t : piece) {
+    const glm::uvec3& c = mesh.triangles[t];
+    sixTimes += glm::dot(mesh.positions[c[0]] - o, glm::cross(mesh.positions[c[1]] - o, mesh.positions[c[2]] - o));
+  }
+  return sixTimes / 6.0;
+}
+
+// The winding number at p of every triangle but those of `except`'s piece.
+double windingNumberOfTheOthers(const TriangleMesh& mesh, const glm::dvec3& p, const std::vector<uint32_t>& pieceOf,
+                                uint32_t except)
+{
+  double angle = 0.0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (pieceOf[t] == except) continue;
+    const glm::uvec3& c = mesh.triangles[t];
+    angle += solidAngle(p, mesh.positions[c[0]], mesh.positions[c[1]], mesh.positions[c[2]]);
+  }
+  return angle / (4.0 * std::numbers::pi);
+}
+
+}  // namespace
+
+Reorientation orientShells(TriangleMesh& mesh)
+{
+  const size_t n = mesh.triangles.size();
+  const Neighbours neighbours = neighboursOf(mesh);
+  constexpr uint32_t unvisited = UINT32_MAX;
+  std::vector<uint32_t> pieceOf(n, unvisited);
+  std::vector<bool> turn(n, false);
+  std::vector<std::vector<uint32_t>> pieces;
+  Reorientation done;
+  size_t disagreements = 0;  // each counted from both sides
+  for (uint32_t seed = 0; seed < n; ++seed) {
+    if (pieceOf[seed] != unvisited) continue;
+    const uint32_t id = uint32_t(pieces.size());
+    std::vector<uint32_t> piece{seed};
+    pieceOf[seed] = id;
+    for (size_t next = 0; next < piece.size(); ++next) {
+      const uint32_t t = piece[next];
+      for (size_t k = neighbours.rowStart[t]; k < neighbours.rowStart[t + 1]; ++k) {
+        const auto [u, sameWay] = neighbours.joined[k];
+        const bool wanted = turn[t] != sameWay;
+        if (pieceOf[u] == unvisited) {
+          pieceOf[u] = id;
+          turn[u] = wanted;
+          piece.push_back(u);
+        } else if (turn[u] != wanted) {
+          ++disagreements;
+        }
+      }
+    }
+    // The orientation most of the piece's triangles had wins.
+    const size_t turned = size_t(std::count_if(piece.begin(), piece.end(), [&](uint32_t t) { return turn[t]; }));
+    const bool flipAll = 2 * turned > piece.size();
+    for (const uint32_t t : piece) {
+      if (turn[t] != flipAll) {
+        turnOver(mesh.triangles[t]);
+        ++done.trianglesTurned;
+      }
+    }
+    pieces.push_back(std::move(piece));
+  }
+  done.unorientableEdges = disagreements / 2;
+
+  // Closed pieces facing in, inside no other piece: inside out.
+  for (uint32_t id = 0; id < pieces.size(); ++id) {
+    const std::vector<uint32_t>& piece = pieces[id];
+    const bool closed =
+        std::none_of(piece.begin(), piece.end(), [&](uint32_t t) { return neighbours.touchesAnOpenEdge[t]; });
+    if (!closed || signedVolume(mesh, piece) >= 0.0) continue;
+    const glm::uvec3& c = mesh.triangles[piece.front()];
+    const glm::dvec3 centroid = (mesh.positions[c[0]] + mesh.positions[c[1]] + mesh.positions[c[2]]) / 3.0;
+    if (pieces.size() > 1 && std::abs(windingNumberOfTheOthers(mesh, centroid, pieceOf, id)) >= 0.5) continue;
+    for (const uint32_t t : piece) turnOver(mesh.triangles[t]);
+    ++done.shellsTurned;
+  }
+  return done;
+}
+
+}  // namespace lbmshape

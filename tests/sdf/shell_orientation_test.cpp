@@ -1,0 +1,122 @@
+// Triangles wound against their neighbours and shells inside out are turned
+// as the winding number's sign needs; a cavity's inward shell, a clean mesh
+// and a one-sided surface are left as they are.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "analysis/mesh_topology.hpp"
+#include "sdf/shell_orientation.hpp"
+#include "support/test_meshes.hpp"
+
+namespace lbmshape {
+namespace {
+
+TriangleMesh turnedOver(TriangleMesh mesh)
+{
+  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  return mesh;
+}
+
+// `mesh` with about `fraction` of its triangles, chosen at random, turned over.
+TriangleMesh partlyTurned(TriangleMesh mesh, double fraction, size_t& turned)
+{
+  std::mt19937 random(11);
+  std::bernoulli_distribution pick(fraction);
+  turned = 0;
+  for (auto& t : mesh.triangles)
+    if (pick(random)) std::swap(t[1], t[2]), ++turned;
+  return mesh;
+}
+
+TEST(ShellOrientation, TrianglesWoundAgainstTheirNeighboursAreTurnedBack)
+{
+  const TriangleMesh torus = testing::torusMesh(1.0, 0.4, 48, 24);
+  for (const double fraction : {0.1, 0.3, 0.45}) {
+    size_t turned = 0;
+    TriangleMesh mesh = partlyTurned(torus, fraction, turned);
+    ASSERT_FALSE(analyzeTopology(mesh).consistentlyOriented);
+    const Reorientation r = orientShells(mesh);
+    EXPECT_EQ(r.trianglesTurned, turned) << fraction;  // the orientation most had wins
+    EXPECT_EQ(r.shellsTurned, 0u);
+    EXPECT_EQ(mesh.triangles, torus.triangles) << fraction;
+  }
+}
+
+TEST(ShellOrientation, AShellInsideOutIsTurnedToFaceOut)
+{
+  // Mostly inward, some triangles outward: first made to agree (inward, as
+  // most are), then the whole shell turned.
+  size_t turned = 0;
+  TriangleMesh mesh = partlyTurned(turnedOver(testing::icosphere(3)), 0.2, turned);
+  const Reorientation r = orientShells(mesh);
+  EXPECT_EQ(r.shellsTurned, 1u);
+  const MeshTopology t = analyzeTopology(mesh);
+  EXPECT_TRUE(t.closedManifold);
+  EXPECT_GT(t.signedVolume, 4.0);  // the unit sphere's 4.19, less its facets
+}
+
+TEST(ShellOrientation, OnePartInsideOutOfTwoIsTurnedAndACavityIsNot)
+{
+  const TriangleMesh ball = testing::icosphere(2), other = testing::icosphere(2, 0.5, {3.0, 0.0, 0.0});
+  TriangleMesh assembly = testing::merged(ball, turnedOver(other));
+  EXPECT_EQ(orientShells(assembly).shellsTurned, 1u);
+  EXPECT_EQ(assembly.triangles, testing::merged(ball, other).triangles);
+
+  // A hollow ball: its inner shell faces in on purpose, inside the outer.
+  const TriangleMesh hollow = testing::merged(ball, turnedOver(testing::icosphere(2, 0.5)));
+  TriangleMesh kept = hollow;
+  const Reorientation r = orientShells(kept);
+  EXPECT_FALSE(r.changed());
+  EXPECT_EQ(kept.triangles, hollow.triangles);
+}
+
+TEST(ShellOrientation, AnOpenSheetKeepsTheWayMostOfItFaced)
+{
+  const TriangleMesh sheet =
+      testing::sheet(12, [](double u, double v) { return glm::dvec3(u, v, 0.1 * std::sin(3.0 * u)); });
+  size_t turned = 0;
+  TriangleMesh mesh = partlyTurned(sheet, 0.25, turned);
+  const Reorientation r = orientShells(mesh);
+  EXPECT_EQ(r.trianglesTurned, turned);
+  EXPECT_EQ(r.shellsTurned, 0u);  // open: it has no inside to face
+  EXPECT_EQ(mesh.triangles, sheet.triangles);
+}
+
+TEST(ShellOrientation, AOneSidedSurfaceIsCountedAndLeftWhole)
+{
+  // A Möbius strip: a band of 24 x 2 quads whose ends join with a half twist.
+  TriangleMesh strip;
+  const int n = 24;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double a = 2.0 * M_PI * i / n, w = (j - 1) * 0.3;
+      strip.positions.push_back(
+          {(1.0 + w * std::cos(a / 2)) * std::cos(a), (1.0 + w * std::cos(a / 2)) * std::sin(a), w * std::sin(a / 2)});
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const uint32_t a = 3 * i + j, b = 3 * i + j + 1;
+      // The last column joins the first upside down.
+      const uint32_t c = i + 1 < n ? 3 * (i + 1) + j : uint32_t(2 - j), d = i + 1 < n ? 3 * (i + 1) + j + 1 : 1 - j;
+      strip.triangles.push_back({a, c, b});
+      strip.triangles.push_back({b, c, d});
+    }
+  const size_t triangles = strip.triangleCount();
+  const Reorientation r = orientShells(strip);
+  EXPECT_GT(r.unorientableEdges, 0u);
+  EXPECT_EQ(strip.triangleCount(), triangles);
+}
+
+TEST(ShellOrientation, ACleanMeshIsLeftAlone)
+{
+  TriangleMesh torus = testing::torusMesh(1.0, 0.4, 32, 16);
+  const TriangleMesh before = torus;
+  EXPECT_FALSE(orientShells(torus).changed());
+  EXPECT_EQ(torus.triangles, before.triangles);
+}
+
+}  // namespace
+}  // namespace lbmshape

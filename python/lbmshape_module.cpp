@@ -17,6 +17,7 @@
 // unusable), lbmshape.OutputError (an OSError), lbmshape.DeviceError (a
 // RuntimeError), lbmshape.Interrupted, all from lbmshape.Error.
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <memory>
 #include <optional>
@@ -45,8 +46,8 @@ namespace {
 using Vertices = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast>;
 
-// The mesh of two arrays, checked for shape and index range here (the rest,
-// finite coordinates and a surface that is not flat, denoiseMesh checks).
+// The mesh of two arrays, checked for shape, finite coordinates and index
+// range here (the rest, a surface that is not flat, denoiseMesh checks).
 // `prefix` names the pair in messages: "" (vertices, triangles) or
 // "source_", "target_".
 TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles, const std::string& prefix = "")
@@ -60,7 +61,12 @@ TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles, const 
     throw UsageError(triangleName + " must be an array of shape (m, 3) of vertex indices");
   TriangleMesh mesh;
   const auto v = vertices.unchecked<2>();
-  for (py::ssize_t i = 0; i < v.shape(0); ++i) mesh.positions.push_back({v(i, 0), v(i, 1), v(i, 2)});
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) {
+    // Named as numpy indexes it (the library's checks count vertices from 1, as files do).
+    if (!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1)) || !std::isfinite(v(i, 2)))
+      throw InputError(vertexName + "[" + std::to_string(i) + "] has a coordinate that is not a finite number");
+    mesh.positions.push_back({v(i, 0), v(i, 1), v(i, 2)});
+  }
   const auto t = triangles.unchecked<2>();
   for (py::ssize_t i = 0; i < t.shape(0); ++i) {
     for (int k = 0; k < 3; ++k)

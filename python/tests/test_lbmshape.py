@@ -125,6 +125,10 @@ class Denoise(unittest.TestCase):
             lbmshape.denoise(v[:, :2], f)
         with self.assertRaisesRegex(ValueError, r"^triangles\[0\] has index \d+, but there are \d+ vertices$"):
             lbmshape.denoise(v, f + len(v))
+        broken = v.copy()
+        broken[3, 1] = np.nan
+        with self.assertRaisesRegex(lbmshape.InputError, r"^vertices\[3\] has a coordinate that is not a finite"):
+            lbmshape.denoise(broken, f)
         # A morph's two meshes are told apart.
         with self.assertRaisesRegex(ValueError, "^target_vertices must be an array of shape"):
             lbmshape.morph(v, f, v[:, :2], f)

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
-#include "sdf/point_triangle.hpp"
+#include "sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 namespace {
@@ -80,17 +80,16 @@ double signedVolume(const TriangleMesh& mesh, const std::vector<uint32_t>& piece
   return sixTimes / 6.0;
 }
 
-// The winding number at p of every triangle but those of `except`'s piece.
-double windingNumberOfTheOthers(const TriangleMesh& mesh, const glm::dvec3& p, const std::vector<uint32_t>& pieceOf,
-                                uint32_t except)
+// A point just off triangle t on the side its normal points away from:
+// outside the closed piece t belongs to if that piece faces in, where the
+// piece's own winding number is 0 and the mesh's is that of the others.
+glm::dvec3 justBehind(const TriangleMesh& mesh, uint32_t t)
 {
-  double angle = 0.0;
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (pieceOf[t] == except) continue;
-    const glm::uvec3& c = mesh.triangles[t];
-    angle += solidAngle(p, mesh.positions[c[0]], mesh.positions[c[1]], mesh.positions[c[2]]);
-  }
-  return angle / (4.0 * std::numbers::pi);
+  const glm::uvec3& c = mesh.triangles[t];
+  const glm::dvec3 a = mesh.positions[c[0]], b = mesh.positions[c[1]], d = mesh.positions[c[2]];
+  const glm::dvec3 normal = glm::normalize(glm::cross(b - a, d - a));
+  const double size = std::max({glm::distance(a, b), glm::distance(b, d), glm::distance(d, a)});
+  return (a + b + d) / 3.0 - 1e-3 * size * normal;
 }
 
 }  // namespace
@@ -137,18 +136,24 @@ Reorientation orientShells(TriangleMesh& mesh)
   }
   done.unorientableEdges = disagreements / 2;
 
-  // Closed pieces facing in, inside no other piece: inside out.
+  // Closed pieces facing in, inside no other piece: inside out. Each is
+  // judged on the mesh as it is now, then the ones found are turned.
+  std::vector<uint32_t> facingIn;
   for (uint32_t id = 0; id < pieces.size(); ++id) {
     const std::vector<uint32_t>& piece = pieces[id];
     const bool closed =
         std::none_of(piece.begin(), piece.end(), [&](uint32_t t) { return neighbours.touchesAnOpenEdge[t]; });
-    if (!closed || signedVolume(mesh, piece) >= 0.0) continue;
-    const glm::uvec3& c = mesh.triangles[piece.front()];
-    const glm::dvec3 centroid = (mesh.positions[c[0]] + mesh.positions[c[1]] + mesh.positions[c[2]]) / 3.0;
-    if (pieces.size() > 1 && std::abs(windingNumberOfTheOthers(mesh, centroid, pieceOf, id)) >= 0.5) continue;
-    for (const uint32_t t : piece) turnOver(mesh.triangles[t]);
-    ++done.shellsTurned;
+    if (closed && signedVolume(mesh, piece) < 0.0) facingIn.push_back(id);
   }
+  if (facingIn.empty()) return done;
+  std::optional<TriangleBvh> tree;  // the winding number of all pieces at once, for any number of them
+  if (pieces.size() > 1) tree.emplace(mesh);
+  std::vector<uint32_t> insideOut;
+  for (const uint32_t id : facingIn)
+    if (!tree || std::abs(tree->windingNumber(justBehind(mesh, pieces[id].front()))) < 0.5) insideOut.push_back(id);
+  for (const uint32_t id : insideOut)
+    for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
+  done.shellsTurned = insideOut.size();
   return done;
 }
 

@@ -1,7 +1,9 @@
-// An input mesh turned as the winding number's sign needs it
-// (sdf/shell_orientation.hpp) before its distances are computed, saying what
-// was turned: a malformed export then gives the shape it was meant to be,
-// with a warning, instead of fragments or a misleading refusal.
+// An input mesh made what the winding number's sign needs before its
+// distances are computed: corners at one position made one vertex where
+// that closes edges the file's numbering left open (a soup, a glTF split at
+// its seams), and triangles turned as sdf/shell_orientation.hpp says, with
+// a warning that says what was turned. A malformed export then gives the
+// shape it was meant to be instead of fragments or a misleading refusal.
 #pragma once
 
 #include <string>
@@ -11,8 +13,8 @@
 
 namespace lbmshape {
 
-// Turns `mesh` where it needs it (a warning naming `name` says how much),
-// and returns its topology as turned.
+// Joins and turns `mesh` where it needs it (a warning naming `name` says
+// what was turned), and returns its topology as it then is.
 MeshTopology orientTheInput(TriangleMesh& mesh, const std::string& name);
 
 }  // namespace lbmshape

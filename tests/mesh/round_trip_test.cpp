@@ -119,7 +119,8 @@ TEST(RoundTrip, GltfKeepsAMeshFarFromTheOriginAndTheOthersRefuseIt)
   }
   // Near the origin for its size: the positions as they are, no translation.
   writeMesh(testing::icosphere(2, 1.7, {3.25, -0.5, 12.0}), folder / "near.glb");
-  for (const auto& node : testing::glbJson(folder / "near.glb")["nodes"]) EXPECT_FALSE(node.contains("translation"));
+  const nlohmann::json near = testing::glbJson(folder / "near.glb");  // held: the loop's range is a part of it
+  for (const auto& node : near["nodes"]) EXPECT_FALSE(node.contains("translation"));
 }
 
 TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)

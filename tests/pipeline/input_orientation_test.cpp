@@ -35,6 +35,29 @@ TEST(InputOrientation, AMalformedExportIsSmoothedAsTheCleanMeshIs)
   }
 }
 
+// Every triangle with corners of its own (an unwelded OBJ, a glTF split at
+// its seams), and inside out: joined, turned, and smoothed as the clean
+// sphere is, its volume kept as a closed mesh's.
+TEST(InputOrientation, ASoupInsideOutIsJoinedAndTurned)
+{
+  ComputeDevice device{"", true};
+  DenoiseOptions o;
+  o.grid.resolution = 32;
+  const TriangleMesh sphere = testing::icosphere(3);
+  TriangleMesh soup;
+  for (const auto& t : sphere.triangles) {
+    const uint32_t first = uint32_t(soup.positions.size());
+    for (const int k : {0, 2, 1}) soup.positions.push_back(sphere.positions[t[k]]);
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  const DenoiseResult clean = denoiseMesh(sphere, "the sphere", o, device);
+  const DenoiseResult joined = denoiseMesh(soup, "the soup", o, device);
+  ASSERT_EQ(joined.mesh.triangles, clean.mesh.triangles);
+  for (size_t i = 0; i < clean.mesh.positions.size(); ++i)
+    ASSERT_NEAR(glm::distance(joined.mesh.positions[i], clean.mesh.positions[i]), 0.0, 1e-9) << i;
+  EXPECT_NEAR(joined.report["volume_change"].get<double>(), clean.report["volume_change"].get<double>(), 1e-9);
+}
+
 TEST(InputOrientation, OnePartInsideOutOfTwoIsKept)
 {
   ComputeDevice device{"", true};

@@ -85,16 +85,24 @@ TEST(InMemory, MorphMeshesHandsOverTheFramesMorphFilesWrites)
   EXPECT_EQ(report["frames"], 5);
 }
 
+// A sphere into a smaller one on a coarse grid, with the steps given: quick,
+// and the same on every run.
+MorphOptions smallMorph(int frames, int steps)
+{
+  MorphOptions o;
+  o.grid.resolution = 24;
+  o.align = Alignment::None;
+  o.frames = frames;
+  o.steps = steps;
+  return o;
+}
+
 // A sink that fails stops the morph with its own error, the first one:
 // no frame after it is made (a later frame's error would hide the cause).
 TEST(InMemory, TheFirstErrorOfTheSinkStopsTheMorph)
 {
   ComputeDevice device{"", true};
-  MorphOptions o;
-  o.grid.resolution = 24;
-  o.align = Alignment::None;
-  o.frames = 6;
-  o.steps = 30;
+  const MorphOptions o = smallMorph(6, 30);
   int calls = 0;
   try {
     morphMeshes(testing::icosphere(3), testing::scaled(testing::icosphere(3), 0.7), o, device,
@@ -115,11 +123,7 @@ TEST(InMemory, TheFirstErrorOfTheSinkStopsTheMorph)
 TEST(InMemory, AStopTheProgramRequestsEndsTheMorphUntilCleared)
 {
   ComputeDevice device{"", true};
-  MorphOptions o;
-  o.grid.resolution = 24;
-  o.align = Alignment::None;
-  o.frames = 12;
-  o.steps = 60;
+  const MorphOptions o = smallMorph(12, 60);
   const TriangleMesh sphere = testing::icosphere(3), smaller = testing::scaled(testing::icosphere(3), 0.7);
   int calls = 0;
   try {

@@ -5,12 +5,12 @@
 #include <iostream>
 #include <optional>
 
-#include "bench/band_bench.hpp"
-#include "bench/denoise_stages.hpp"
-#include "core/log.hpp"
-#include "gpu/gpu_context.hpp"
-#include "lbm/band_reference_solver.hpp"
-#include "lbm/band_vulkan_solver.hpp"
+#include "lbmshape/bench/band_bench.hpp"
+#include "lbmshape/bench/denoise_stages.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
 
 namespace lbmshape::cli {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "bench/lattice_bench.hpp"
+#include "lbmshape/bench/lattice_bench.hpp"
 #include "common_options.hpp"
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape::cli {
 

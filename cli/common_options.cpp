@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "core/log.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape::cli {
 

@@ -2,13 +2,17 @@
 // results go.
 #pragma once
 
+#include <cctype>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
 
 namespace lbmshape::cli {
 
@@ -37,6 +41,32 @@ private:
 };
 
 inline bool wantsReference(const CommonOptions& o) { return o.device == "reference"; }
+
+// For an option of an enum type whose values are given by name (case
+// ignored): the help shows "{a,b,c}", and anything else is "--option: must
+// be a, b or c, not 'x'" (CLI11's own CheckedTransformer shows and accepts
+// the enum's numbers too).
+template <class Enum>
+CLI::Validator namedChoices(std::vector<std::pair<std::string, Enum>> choices)
+{
+  std::string listed, spoken;
+  for (size_t i = 0; i < choices.size(); ++i) {
+    listed += (i ? "," : "") + choices[i].first;
+    spoken += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
+  }
+  return CLI::Validator(
+      [choices, spoken](std::string& value) {
+        std::string lower = value;
+        for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+        for (const auto& [name, choice] : choices)
+          if (lower == name) {
+            value = std::to_string(int(choice));  // what CLI11 reads an enum from
+            return std::string();
+          }
+        return "must be " + spoken + ", not '" + value + "'";
+      },
+      "{" + listed + "}");
+}
 
 // Writes one JSON document on stdout.
 void printJson(const nlohmann::json& document);

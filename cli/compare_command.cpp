@@ -1,11 +1,11 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "core/error.hpp"
-#include "core/parameter_bounds.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh_commands.hpp"
 
 namespace lbmshape::cli {

@@ -1,8 +1,8 @@
 #include <iostream>
 
-#include "core/log.hpp"
+#include "lbmshape/core/log.hpp"
 #include "mesh_commands.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 
 namespace lbmshape::cli {
 namespace {

@@ -4,10 +4,10 @@
 #include <iomanip>
 #include <iostream>
 
-#include "core/memory_sizes.hpp"
-#include "core/process_settings.hpp"
-#include "gpu/vulkan_instance.hpp"
-#include "pipeline/compute_device.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/core/process_settings.hpp"
+#include "lbmshape/gpu/vulkan_instance.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
 
 namespace lbmshape::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape::cli {
 namespace {

@@ -10,16 +10,16 @@
 
 #include "bench_command.hpp"
 #include "common_options.hpp"
-#include "core/error.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 #include "info_command.hpp"
 #include "mesh_commands.hpp"
 #include "run_command.hpp"
-#include "core/interrupt.hpp"
-#include "core/last_resort.hpp"
-#include "core/parameter_names.hpp"
-#include "core/process_settings.hpp"
-#include "core/worker_threads.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/last_resort.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/process_settings.hpp"
+#include "lbmshape/core/worker_threads.hpp"
 
 namespace {
 
@@ -63,12 +63,11 @@ int fail(lbmshape::ExitCode code, const std::string& message)
 }
 
 // --sdf's and --extract's values, in any case.
-CLI::CheckedTransformer runsOnNames()
+CLI::Validator runsOnNames()
 {
-  return CLI::CheckedTransformer(
-      std::map<std::string, lbmshape::RunsOn>{
-          {"auto", lbmshape::RunsOn::Auto}, {"cpu", lbmshape::RunsOn::Cpu}, {"device", lbmshape::RunsOn::Device}},
-      CLI::ignore_case);
+  using lbmshape::RunsOn;
+  return lbmshape::cli::namedChoices<RunsOn>(
+      {{"auto", RunsOn::Auto}, {"cpu", RunsOn::Cpu}, {"device", RunsOn::Device}});
 }
 
 }  // namespace

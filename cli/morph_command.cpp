@@ -1,7 +1,7 @@
-#include "core/error.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 #include "mesh_commands.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -60,10 +60,8 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
       cmd->add_option("--voxel", a->voxel, "Voxel size in the source's units (instead of --res)")->excludes(res);
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around both meshes")->capture_default_str();
   cmd->add_option("--align", a->options.align, "Place the target: none, center (on the source), fit (center and scale)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Alignment>{
-              {"none", Alignment::None}, {"center", Alignment::Center}, {"fit", Alignment::Fit}},
-          CLI::ignore_case))
+      ->transform(
+          namedChoices<Alignment>({{"none", Alignment::None}, {"center", Alignment::Center}, {"fit", Alignment::Fit}}))
       ->default_str("fit");
   cmd->add_option("--cs", a->options.cs, "Morphing speed Cs of the force Cs (X_target - X)")->capture_default_str();
   cmd->add_option("--gamma", a->options.gamma, "Diffusion coefficient, voxels^2 per step")->capture_default_str();

@@ -1,15 +1,15 @@
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
-#include "core/number_text.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "mesh_commands.hpp"
-#include "pipeline/denoise.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape::cli {
 namespace {

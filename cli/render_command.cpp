@@ -1,7 +1,7 @@
-#include "core/error.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 #include "mesh_commands.hpp"
-#include "pipeline/render_job.hpp"
+#include "lbmshape/pipeline/render_job.hpp"
 
 namespace lbmshape::cli {
 namespace {

@@ -7,10 +7,10 @@
 
 #include <vulkan/vulkan.hpp>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/log.hpp"
-#include "core/mapped_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/mapped_file.hpp"
 #include "job_arguments.hpp"
 #include "mesh_commands.hpp"
 

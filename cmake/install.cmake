@@ -31,12 +31,16 @@ install(TARGETS lbmshape_shared EXPORT lbmshapeTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/lbmshape/lbmshape.hpp ${PROJECT_BINARY_DIR}/include/lbmshape/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape)
-# The API's headers include the library's own by their path under src/, and
-# the lattice's few constants shared with the shaders (shaders/*.h).
+# The API's headers include the library's own as "lbmshape/<folder>/...", by
+# their path under src/, and the lattice's few constants shared with the
+# shaders as "lbmshape/shaders/..." (shaders/*.h): only include/ goes on a
+# program's include path.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape
         FILES_MATCHING PATTERN "*.hpp")
 file(GLOB shader_headers ${PROJECT_SOURCE_DIR}/shaders/*.h)
-install(FILES ${shader_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape)
+install(FILES ${shader_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape/shaders)
+# The licence travels with the copies (MIT).
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lbmshape)
 
 set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lbmshape)
 install(EXPORT lbmshapeTargets NAMESPACE lbmshape:: DESTINATION ${package_dir})
@@ -47,10 +51,14 @@ install(FILES ${PROJECT_BINARY_DIR}/lbmshapeConfig.cmake ${PROJECT_BINARY_DIR}/l
         DESTINATION ${package_dir})
 
 # pkg-config lbmshape. The prefix is the one configured (CMAKE_INSTALL_PREFIX);
-# an install elsewhere with --prefix is rewritten at install time.
+# an install elsewhere with --prefix gets its own, written straight to the
+# prefix (nothing in the build tree changes, so two installs from one build
+# cannot trade prefixes).
 configure_file(${PROJECT_SOURCE_DIR}/cmake/lbmshape.pc.in ${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured @ONLY)
 install(CODE "
   file(READ \"${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured\" pc)
   string(REPLACE \"prefix=${CMAKE_INSTALL_PREFIX}\" \"prefix=\${CMAKE_INSTALL_PREFIX}\" pc \"\${pc}\")
-  file(WRITE \"${PROJECT_BINARY_DIR}/lbmshape.pc\" \"\${pc}\")")
-install(FILES ${PROJECT_BINARY_DIR}/lbmshape.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+  set(pc_file \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig/lbmshape.pc\")
+  message(STATUS \"Installing: \${pc_file}\")
+  file(WRITE \"\${pc_file}\" \"\${pc}\")
+  list(APPEND CMAKE_INSTALL_MANIFEST_FILES \"\${pc_file}\")")

@@ -27,12 +27,10 @@ _lbmshape()
   done
   local help=$main
   [[ -n $command ]] && help=$("$binary" "$command" --help 2>/dev/null)
-  # An option's listed values, as CLI11 prints them: --color TEXT:{none,curvature},
-  # --align ENUM:value in {center->1,fit->2,none->0} OR {1,2,0}.
+  # An option's listed values, as the help prints them: --color TEXT:{none,curvature},
+  # --align ENUM:{none,center,fit}.
   local values
   values=$(grep -oh -- "$prev [A-Z]*:{[^}]*}" <<<"$help"$'\n'"$main" | sed 's/.*{\(.*\)}/\1/; s/,/ /g')
-  [[ -z $values ]] && values=$(grep -oh -- "$prev ENUM:value in {[^}]*}" <<<"$help"$'\n'"$main" |
-    sed 's/.*{\(.*\)}/\1/; s/->[0-9]*//g; s/,/ /g')
   if [[ $prev == --device ]]; then
     values="reference $("$binary" info 2>/dev/null | sed -n 's/^[* ] \([0-9]\+\): .*/\1/p' | tr '\n' ' ')"
   fi

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/mesh_file_cases.hpp"
 
 int main(int argc, char** argv)

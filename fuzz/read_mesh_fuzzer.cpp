@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <iostream>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {

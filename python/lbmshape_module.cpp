@@ -8,14 +8,16 @@
 //   lbmshape.morph(V, F, V2, F2, on_frame=lambda k, v, f: ...)  # each as it is made
 //   for k, v, f in lbmshape.iter_morph(V, F, V2, F2, frames=24): ...  # a generator
 //
-// The Vulkan device is opened at the first call and kept (lbmshape.Device
-// chooses another); the GIL is released while the device works, so other
-// Python threads run, and Ctrl-C stops a call within a fraction of a second
+// Each thread's Vulkan device is opened at its first call and kept
+// (lbmshape.Device chooses another); the GIL is released while the device
+// works, so other Python threads run (calls that share a Device take
+// turns; each thread's default one is its own), and Ctrl-C stops a call within a fraction of a second
 // (KeyboardInterrupt), as lbmshape.request_stop() does from another thread
 // (lbmshape.Interrupted). Errors: lbmshape.UsageError (a ValueError: a
 // parameter out of range), lbmshape.InputError (a ValueError: a mesh that is
 // unusable), lbmshape.OutputError (an OSError), lbmshape.DeviceError (a
-// RuntimeError), lbmshape.Interrupted, all from lbmshape.Error.
+// RuntimeError), lbmshape.NumericalError (a RuntimeError: a result that is
+// not a number), lbmshape.Interrupted, all from lbmshape.Error.
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -29,14 +31,15 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/parameter_names.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/compute_device.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 
 namespace py = pybind11;
 
@@ -46,13 +49,25 @@ namespace {
 using Vertices = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast>;
 
+// Triangles as given (an array or nested lists), as int64: integers only,
+// for forcecast would truncate 2.9 to vertex 2 without a word. An empty
+// list, which numpy makes of floats, is let through for toMesh to refuse.
+Triangles integerTriangles(const py::array& given, const std::string& name)
+{
+  const char kind = given.dtype().kind();
+  if (given.size() != 0 && kind != 'i' && kind != 'u')
+    throw UsageError(name + " must hold integers (vertex indices), not " + py::str(given.dtype()).cast<std::string>());
+  return Triangles::ensure(given);
+}
+
 // The mesh of two arrays, checked for shape, finite coordinates and index
 // range here (the rest, a surface that is not flat, denoiseMesh checks).
 // `prefix` names the pair in messages: "" (vertices, triangles) or
 // "source_", "target_".
-TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles, const std::string& prefix = "")
+TriangleMesh toMesh(const Vertices& vertices, const py::array& givenTriangles, const std::string& prefix = "")
 {
   const std::string vertexName = prefix + "vertices", triangleName = prefix + "triangles";
+  const Triangles triangles = integerTriangles(givenTriangles, triangleName);
   if (vertices.ndim() != 2 || vertices.shape(1) != 3)
     throw UsageError(
         vertexName + " must be an array of shape (n, 3), not of " + std::to_string(vertices.ndim()) + " dimensions" +
@@ -71,7 +86,7 @@ TriangleMesh toMesh(const Vertices& vertices, const Triangles& triangles, const 
   for (py::ssize_t i = 0; i < t.shape(0); ++i) {
     for (int k = 0; k < 3; ++k)
       if (t(i, k) < 0 || t(i, k) >= v.shape(0))
-        throw UsageError(triangleName + "[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) +
+        throw InputError(triangleName + "[" + std::to_string(i) + "] has index " + std::to_string(t(i, k)) +
                          ", but there are " + std::to_string(v.shape(0)) + " " + vertexName);
     mesh.triangles.push_back({uint32_t(t(i, 0)), uint32_t(t(i, 1)), uint32_t(t(i, 2))});
   }
@@ -159,10 +174,14 @@ auto stoppable(Work&& work) -> decltype(work())
   return std::move(*result);
 }
 
-// The device the functions use unless given one: opened at first use.
+// The device the functions use unless given one: the calling thread's
+// own, opened at its first use. Calls that share a device take turns
+// (ComputeDevice::takeTurn), so one shared by every thread would make a
+// thread pool's calls wait for each other, and a call in an iter_morph loop
+// wait for the morph that waits for the loop.
 std::shared_ptr<ComputeDevice>& defaultDevice()
 {
-  static std::shared_ptr<ComputeDevice> device;
+  thread_local std::shared_ptr<ComputeDevice> device;
   if (!device) device = std::make_shared<ComputeDevice>("", false);
   return device;
 }
@@ -175,7 +194,7 @@ Smoothing smoothingNamed(const std::string& name)
   throw UsageError("smoothing must be 'isotropic', 'anisotropic' or 'preserve-features', not '" + name + "'");
 }
 
-py::object denoise(const Vertices& vertices, const Triangles& triangles, int res, std::optional<int> steps,
+py::object denoise(const Vertices& vertices, const py::array& triangles, int res, std::optional<int> steps,
                    std::optional<double> radius, double gamma, const std::string& smoothing, bool keepVolume,
                    std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report,
                    int relax)
@@ -221,8 +240,8 @@ Alignment alignmentNamed(const std::string& name)
 // as the frame writer's thread makes it (with the GIL taken for the call),
 // or gathered into a list. An exception the callback raises stops the morph
 // and is raised again as it was, its type and traceback kept.
-py::object morph(const Vertices& sourceVertices, const Triangles& sourceTriangles, const Vertices& targetVertices,
-                 const Triangles& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
+py::object morph(const Vertices& sourceVertices, const py::array& sourceTriangles, const Vertices& targetVertices,
+                 const py::array& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
                  double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
                  py::object onFrame, bool report)
 {
@@ -285,6 +304,8 @@ PYBIND11_MODULE(lbmshape, m)
   static py::exception<OutputError> output(m, "OutputError", py::make_tuple(error, py::handle(PyExc_OSError)));
   static py::exception<DeviceError> device(m, "DeviceError", py::make_tuple(error, py::handle(PyExc_RuntimeError)));
   static py::exception<Interrupted> interrupted(m, "Interrupted", error);
+  static py::exception<NumericalError> numerical(m, "NumericalError",
+                                                 py::make_tuple(error, py::handle(PyExc_RuntimeError)));
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -298,6 +319,8 @@ PYBIND11_MODULE(lbmshape, m)
       PyErr_SetString(device.ptr(), e.what());
     } catch (const Interrupted& e) {
       PyErr_SetString(interrupted.ptr(), e.what());
+    } catch (const NumericalError& e) {
+      PyErr_SetString(numerical.ptr(), e.what());
     } catch (const Error& e) {
       PyErr_SetString(error.ptr(), e.what());
     }
@@ -387,6 +410,17 @@ def iter_morph(*args, **kwargs):
 )",
            m.attr("__dict__"));
   m.def(
+      "set_log_level",
+      [](const std::string& level) {
+        if (level == "quiet") return log::setLevel(log::Level::Quiet);
+        if (level == "normal") return log::setLevel(log::Level::Normal);
+        if (level == "verbose") return log::setLevel(log::Level::Verbose);
+        throw UsageError("level must be 'quiet', 'normal' or 'verbose', not '" + level + "'");
+      },
+      py::arg("level"),
+      "What the calls print on stderr: 'quiet' (warnings alone), 'normal' (the default: progress and what was "
+      "written, as the command prints) or 'verbose' (each stage's time, as lbmshape -v).");
+  m.def(
       "request_stop", [] { interrupt::requestStop(); },
       "Stop every lbmshape call under way, on any thread, at its next check (within a fraction of a second): "
       "each raises lbmshape.Interrupted, having written nothing partial. Calls that begin later run as usual.");
@@ -396,7 +430,7 @@ def iter_morph(*args, **kwargs):
       py::arg("path"), "Read an OBJ, PLY, OFF, STL, glTF or GLB file: (vertices, triangles)");
   m.def(
       "write_mesh",
-      [](const std::filesystem::path& path, const Vertices& vertices, const Triangles& triangles) {
+      [](const std::filesystem::path& path, const Vertices& vertices, const py::array& triangles) {
         const TriangleMesh mesh = toMesh(vertices, triangles);
         stoppable([&] {
           writeMesh(mesh, path);

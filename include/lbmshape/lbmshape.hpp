@@ -23,18 +23,29 @@
 // at its next check, within a fraction of a second, having written nothing
 // partial. The request stands for every call, on any thread, until
 // lbmshape::interrupt::clearStopRequest() (core/interrupt.hpp).
+//
+// Threads: calls that share a ComputeDevice take turns, each holding it from
+// start to end (one waits for the other; a stop request ends the wait).
+// Calls meant to run at once open a device each. A morph's frame sink that
+// calls on the morph's own device gets a UsageError (it would wait for the
+// morph, which waits for the sink): give it another device.
+//
+// Messages: progress and timings go to stderr as the command's do;
+// lbmshape::log::setLevel(lbmshape::log::Level::Quiet) leaves only the
+// warnings (core/log.hpp).
 #pragma once
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/parameter_names.hpp"
-#include "library_version.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/library_version.hpp"
 #include "lbmshape/version.hpp"
-#include "mesh/icosphere.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/compute_device.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/mesh/icosphere.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/morph.hpp"

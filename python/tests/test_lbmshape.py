@@ -162,6 +162,64 @@ class Denoise(unittest.TestCase):
         worker.join()
         self.assertGreater(ticks[0], 1000, "the main thread was held while the device worked")
 
+    def test_threads_calling_at_once_get_what_one_thread_gets(self):
+        v, f = noisy_sphere()
+        expected_v, expected_f = lbmshape.denoise(v, f, res=32)
+        for device in [None, lbmshape.Device()]:  # each thread's own, then one they share
+            results, failures = [None, None], []
+
+            def call(i):
+                try:
+                    results[i] = lbmshape.denoise(v, f, res=32, device=device)
+                except BaseException as e:
+                    failures.append(e)
+
+            threads = [threading.Thread(target=call, args=(i,)) for i in range(2)]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            self.assertEqual(failures, [])
+            for got_v, got_f in results:
+                np.testing.assert_array_equal(got_f, expected_f)
+                np.testing.assert_array_equal(got_v, expected_v)
+
+    def test_the_log_level_sets_what_the_calls_print(self):
+        v, f = noisy_sphere()
+
+        def stderr_of(call):
+            with tempfile.TemporaryFile() as caught:
+                saved = os.dup(2)
+                os.dup2(caught.fileno(), 2)
+                try:
+                    call()
+                finally:
+                    os.dup2(saved, 2)
+                    os.close(saved)
+                caught.seek(0)
+                return caught.read().decode()
+
+        try:
+            lbmshape.set_log_level("verbose")
+            self.assertIn("lbmshape: sdf", stderr_of(lambda: lbmshape.denoise(v, f, res=24)))
+            lbmshape.set_log_level("quiet")
+            self.assertEqual(stderr_of(lambda: lbmshape.denoise(v, f, res=24)), "")
+        finally:
+            lbmshape.set_log_level("normal")
+        with self.assertRaisesRegex(ValueError, "^level must be 'quiet', 'normal' or 'verbose', not 'loud'$"):
+            lbmshape.set_log_level("loud")
+
+    def test_triangles_must_be_integers_and_in_range(self):
+        v, f = noisy_sphere()
+        with self.assertRaisesRegex(lbmshape.UsageError, "^triangles must hold integers .*float64"):
+            lbmshape.denoise(v, f + 0.9)
+        with self.assertRaisesRegex(lbmshape.InputError, r"^triangles\[0\] has index"):
+            lbmshape.denoise(v, f + len(v))
+        v2, f2 = lbmshape.denoise(v, f.astype(np.uint32), res=24)  # any integer type
+        self.assertTrue(closed(f2))
+        self.assertTrue(issubclass(lbmshape.NumericalError, lbmshape.Error))
+        self.assertTrue(issubclass(lbmshape.NumericalError, RuntimeError))
+
 
 def ellipsoid():
     """The unit icosphere stretched along x: a shape a sphere can become."""
@@ -287,6 +345,16 @@ class IterMorph(unittest.TestCase):
                 break
         v2, f2 = lbmshape.denoise(v, f, res=24)
         self.assertGreater(len(f2), 0)
+
+    def test_a_call_in_the_loop_runs_beside_the_morph(self):
+        # The loop's thread has a default device of its own, so its call
+        # does not wait for the morph, which waits for the loop.
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        smoothed = [len(lbmshape.denoise(vk, fk, res=24)[1]) for k, vk, fk in
+                    lbmshape.iter_morph(v, f, vt, ft, frames=4, res=24, steps=12, align="none")]
+        self.assertEqual(len(smoothed), 4)
+        self.assertTrue(all(n > 0 for n in smoothed))
 
     def test_an_error_of_the_morph_is_raised_by_the_loop(self):
         v, f = icosphere(3)

@@ -2,7 +2,7 @@
 // tables), so a million triangles take a fraction of a second. Every count is
 // an integer and the sums of area and volume run in fixed chunks added in a
 // fixed order, so the result does not depend on the number of threads.
-#include "analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/ordered_sum.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/ordered_sum.hpp"
 
 namespace lbmshape {
 namespace {

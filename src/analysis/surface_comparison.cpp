@@ -4,15 +4,15 @@
 // prunes most of the tree; the bound changes the work, not the answer. Per-
 // sample results are summed in sample order, so the thread count does not
 // change a digit.
-#include "analysis/surface_comparison.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "analysis/surface_sampling.hpp"
-#include "core/error.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/analysis/surface_sampling.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 namespace {

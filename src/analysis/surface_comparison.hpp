@@ -9,8 +9,8 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 

@@ -1,10 +1,10 @@
-#include "analysis/surface_sampling.hpp"
+#include "lbmshape/analysis/surface_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 namespace {

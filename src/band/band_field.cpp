@@ -1,4 +1,4 @@
-#include "band/band_field.hpp"
+#include "lbmshape/band/band_field.hpp"
 
 namespace lbmshape {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "band/brick_set.hpp"
+#include "lbmshape/band/brick_set.hpp"
 
 namespace lbmshape {
 

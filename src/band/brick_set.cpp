@@ -1,4 +1,4 @@
-#include "band/brick_set.hpp"
+#include "lbmshape/band/brick_set.hpp"
 
 namespace lbmshape {
 

@@ -1,9 +1,9 @@
-#include "bench/band_bench.hpp"
+#include "lbmshape/bench/band_bench.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "lbm/band_state.hpp"
+#include "lbmshape/lbm/band_state.hpp"
 
 namespace lbmshape {
 

@@ -7,9 +7,9 @@
 #include <functional>
 #include <memory>
 
-#include "band/band_field.hpp"
-#include "bench/lattice_bench.hpp"
-#include "lbm/band_solver.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/bench/lattice_bench.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
 
 namespace lbmshape {
 

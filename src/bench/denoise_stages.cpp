@@ -1,10 +1,10 @@
-#include "bench/denoise_stages.hpp"
+#include "lbmshape/bench/denoise_stages.hpp"
 
 #include <cstdio>
 
-#include "mesh/icosphere.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/mesh/icosphere.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 
 namespace lbmshape {
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
 
 namespace lbmshape {
 

@@ -1,13 +1,13 @@
-#include "bench/lattice_bench.hpp"
+#include "lbmshape/bench/lattice_bench.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
-#include "core/interrupt.hpp"
-#include "core/stopwatch.hpp"
-#include "lbm/lattice_memory.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/lbm/lattice_memory.hpp"
 
 namespace lbmshape {
 

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "core/extent.hpp"
-#include "lbm/lattice_solver.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
 
 namespace lbmshape {
 

@@ -1,13 +1,13 @@
-#include "bench/memory_bandwidth.hpp"
+#include "lbmshape/bench/memory_bandwidth.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "core/stopwatch.hpp"
-#include "gpu/compute_program.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/gpu/compute_program.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape {
 namespace {

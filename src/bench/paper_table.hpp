@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape::paper {
 

@@ -1,4 +1,4 @@
-#include "core/atomic_file.hpp"
+#include "lbmshape/core/atomic_file.hpp"
 
 #include <atomic>
 #include <cerrno>
@@ -9,8 +9,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
-#include "core/temporary_files.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/temporary_files.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/cache_directory.hpp"
+#include "lbmshape/core/cache_directory.hpp"
 
 #include <cstdlib>
 

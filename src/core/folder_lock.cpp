@@ -1,4 +1,4 @@
-#include "core/folder_lock.hpp"
+#include "lbmshape/core/folder_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -7,8 +7,8 @@
 #include <cerrno>
 #include <cstring>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 

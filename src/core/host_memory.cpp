@@ -1,4 +1,4 @@
-#include "core/host_memory.hpp"
+#include "lbmshape/core/host_memory.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -10,8 +10,8 @@
 #include <optional>
 #include <fstream>
 
-#include "core/error.hpp"
-#include "core/memory_sizes.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
 
 namespace lbmshape {
 namespace {

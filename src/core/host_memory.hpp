@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "core/interrupt.hpp"
+#include "lbmshape/core/interrupt.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -7,8 +7,8 @@
 
 #include <signal.h>  // sigaction
 
-#include "core/error.hpp"
-#include "core/temporary_files.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/temporary_files.hpp"
 
 namespace lbmshape::interrupt {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/last_resort.hpp"
+#include "lbmshape/core/last_resort.hpp"
 
 #include <atomic>
 #include <cstring>
@@ -8,9 +8,9 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include "core/address_sanitizer.hpp"
-#include "core/error.hpp"
-#include "core/temporary_files.hpp"
+#include "lbmshape/core/address_sanitizer.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/temporary_files.hpp"
 
 namespace lbmshape {
 namespace {

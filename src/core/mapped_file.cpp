@@ -1,4 +1,4 @@
-#include "core/mapped_file.hpp"
+#include "lbmshape/core/mapped_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,6 +1,6 @@
-#include "core/memory_sizes.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
 
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape {
 

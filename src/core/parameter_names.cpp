@@ -1,4 +1,4 @@
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 #include <atomic>
 

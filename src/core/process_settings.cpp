@@ -1,4 +1,4 @@
-#include "core/process_settings.hpp"
+#include "lbmshape/core/process_settings.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -10,7 +10,7 @@
 #endif
 #include <unistd.h>
 
-#include "core/host_memory.hpp"
+#include "lbmshape/core/host_memory.hpp"
 
 namespace lbmshape {
 namespace {

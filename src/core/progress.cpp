@@ -1,4 +1,4 @@
-#include "core/progress.hpp"
+#include "lbmshape/core/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <unistd.h>
 
-#include "core/log.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 

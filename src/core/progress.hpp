@@ -13,7 +13,7 @@
 #include <string>
 #include <thread>
 
-#include "core/stopwatch.hpp"
+#include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "core/temporary_files.hpp"
+#include "lbmshape/core/temporary_files.hpp"
 
 #include <array>
 #include <atomic>

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "core/worker_threads.hpp"
+#include "lbmshape/core/worker_threads.hpp"
 
 #include <algorithm>
 #include <future>
@@ -8,8 +8,8 @@
 
 #include <omp.h>
 
-#include "core/host_memory.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 

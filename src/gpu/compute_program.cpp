@@ -1,9 +1,9 @@
-#include "gpu/compute_program.hpp"
+#include "lbmshape/gpu/compute_program.hpp"
 
 #include <bit>
 #include <sstream>
 
-#include "gpu/shader_registry.hpp"
+#include "lbmshape/gpu/shader_registry.hpp"
 
 namespace lbmshape::gpu {
 

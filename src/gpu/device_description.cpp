@@ -1,11 +1,11 @@
-#include "gpu/device_description.hpp"
+#include "lbmshape/gpu/device_description.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 namespace lbmshape::gpu {
 

@@ -1,9 +1,9 @@
-#include "gpu/driver_modules.hpp"
+#include "lbmshape/gpu/driver_modules.hpp"
 
 #include <dlfcn.h>
 #include <link.h>
 
-#include "core/address_sanitizer.hpp"
+#include "lbmshape/core/address_sanitizer.hpp"
 
 namespace lbmshape::gpu {
 

@@ -1,6 +1,6 @@
-#include "gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
 
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape::gpu {
 

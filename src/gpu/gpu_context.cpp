@@ -1,16 +1,16 @@
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 #include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/host_memory.hpp"
-#include "core/memory_sizes.hpp"
-#include "core/parameter_names.hpp"
-#include "core/log.hpp"
-#include "core/stopwatch.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape::gpu {
 namespace {

@@ -13,12 +13,12 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
-#include "core/stopwatch.hpp"
-#include "gpu/compute_program.hpp"
-#include "gpu/device_description.hpp"
-#include "gpu/pipeline_cache_file.hpp"
-#include "gpu/recorded_commands.hpp"
-#include "gpu/vulkan_instance.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/gpu/compute_program.hpp"
+#include "lbmshape/gpu/device_description.hpp"
+#include "lbmshape/gpu/pipeline_cache_file.hpp"
+#include "lbmshape/gpu/recorded_commands.hpp"
+#include "lbmshape/gpu/vulkan_instance.hpp"
 
 namespace lbmshape::gpu {
 

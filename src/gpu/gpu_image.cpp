@@ -1,6 +1,6 @@
-#include "gpu/gpu_image.hpp"
+#include "lbmshape/gpu/gpu_image.hpp"
 
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape::gpu {
 

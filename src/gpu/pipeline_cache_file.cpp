@@ -1,4 +1,4 @@
-#include "gpu/pipeline_cache_file.hpp"
+#include "lbmshape/gpu/pipeline_cache_file.hpp"
 
 #include <cstdlib>
 #include <cstring>
@@ -10,8 +10,8 @@
 
 #include <unistd.h>
 
-#include "core/cache_directory.hpp"
-#include "core/log.hpp"
+#include "lbmshape/core/cache_directory.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape::gpu {
 

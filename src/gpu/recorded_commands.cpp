@@ -1,6 +1,6 @@
-#include "gpu/recorded_commands.hpp"
+#include "lbmshape/gpu/recorded_commands.hpp"
 
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape::gpu {
 

@@ -1,4 +1,4 @@
-#include "gpu/staged_copies.hpp"
+#include "lbmshape/gpu/staged_copies.hpp"
 
 namespace lbmshape::gpu {
 

@@ -10,9 +10,9 @@
 #include <cstring>
 #include <vector>
 
-#include "core/parallel_copy.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/core/parallel_copy.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape::gpu {
 

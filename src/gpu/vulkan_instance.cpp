@@ -1,12 +1,12 @@
-#include "gpu/vulkan_instance.hpp"
+#include "lbmshape/gpu/vulkan_instance.hpp"
 
 #include <cstdlib>
 #include <cstring>
 #include <string>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
-#include "gpu/driver_modules.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/gpu/driver_modules.hpp"
 
 namespace lbmshape::gpu {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
-#include "gpu/device_description.hpp"
+#include "lbmshape/gpu/device_description.hpp"
 
 namespace lbmshape::gpu {
 

@@ -1,11 +1,11 @@
-#include "lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "lbm/relaxation.hpp"
-#include "lbm/solver_state.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
 
 namespace lbmshape::adaptive_gamma {
 namespace {

@@ -1,9 +1,9 @@
 // Per-cell diffusion coefficients for the anisotropic smoothing of section 5.1.
 #pragma once
 
-#include "adaptive_gamma_bounds.h"
-#include "band/band_field.hpp"
-#include "core/volume.hpp"
+#include "lbmshape/shaders/adaptive_gamma_bounds.h"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/volume.hpp"
 
 namespace lbmshape::adaptive_gamma {
 

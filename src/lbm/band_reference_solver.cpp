@@ -1,11 +1,11 @@
-#include "lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
 
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/band_state.hpp"
-#include "lbm/d3q19.hpp"
-#include "lbm/relaxation.hpp"
-#include "lbm/solver_state.hpp"
-#include "lbm/surface_change.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/band_state.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 
 namespace lbmshape {
 

@@ -6,8 +6,8 @@
 
 #include <glm/glm.hpp>
 
-#include "lbm/band_solver.hpp"
-#include "lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
 
 namespace lbmshape {
 

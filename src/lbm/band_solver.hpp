@@ -25,10 +25,10 @@
 #include <optional>
 #include <vector>
 
-#include "band/band_field.hpp"
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/stepping_solver.hpp"
-#include "surface/surface_pieces.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/stepping_solver.hpp"
+#include "lbmshape/surface/surface_pieces.hpp"
 
 namespace lbmshape {
 

@@ -1,12 +1,12 @@
-#include "lbm/band_state.hpp"
+#include "lbmshape/lbm/band_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "lbm/frozen_bricks.hpp"
-#include "lbm/relaxation.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
 
 namespace lbmshape::band_state {
 

@@ -7,8 +7,8 @@
 
 #include <glm/glm.hpp>
 
-#include "band/band_field.hpp"
-#include "lbm/band_solver.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
 
 namespace lbmshape::band_state {
 

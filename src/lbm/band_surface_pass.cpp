@@ -1,4 +1,4 @@
-#include "lbm/band_surface_pass.hpp"
+#include "lbmshape/lbm/band_surface_pass.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,14 +7,14 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "band_interface.h"
-#include "band_surface_interface.h"
-#include "band/band_field.hpp"
-#include "core/error.hpp"
-#include "core/parallel_copy.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
-#include "gpu/staged_copies.hpp"
+#include "lbmshape/shaders/band_interface.h"
+#include "lbmshape/shaders/band_surface_interface.h"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parallel_copy.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/gpu/staged_copies.hpp"
 
 namespace lbmshape {
 

@@ -13,7 +13,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan_raii.hpp>
 
-#include "surface/surface_pieces.hpp"
+#include "lbmshape/surface/surface_pieces.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "lbm/band_vulkan_solver.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,21 +10,21 @@
 
 #include <glm/glm.hpp>
 
-#include "band_interface.h"
-#include "core/parallel_copy.hpp"
-#include "core/error.hpp"
-#include "core/memory_sizes.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
-#include "gpu/staged_copies.hpp"
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/band_state.hpp"
-#include "lbm/band_surface_pass.hpp"
-#include "lbm/d3q19.hpp"
-#include "lbm/frozen_bricks.hpp"
-#include "lbm/relaxation.hpp"
-#include "lbm/solver_state.hpp"
-#include "lbm/surface_change.hpp"
+#include "lbmshape/shaders/band_interface.h"
+#include "lbmshape/core/parallel_copy.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/gpu/staged_copies.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/band_state.hpp"
+#include "lbmshape/lbm/band_surface_pass.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 
 namespace lbmshape {
 

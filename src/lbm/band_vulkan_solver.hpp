@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "lbm/band_solver.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
 
 #include <algorithm>
 #include <map>

@@ -1,10 +1,10 @@
-#include "lbm/lattice_memory.hpp"
+#include "lbmshape/lbm/lattice_memory.hpp"
 
 #include <algorithm>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "core/memory_sizes.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
 
 namespace lbmshape {
 

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <string>
 
-#include "core/extent.hpp"
-#include "gpu/device_description.hpp"
-#include "lbm/d3q19.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/gpu/device_description.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
 
 namespace lbmshape {
 

@@ -15,10 +15,10 @@
 #include <optional>
 #include <string>
 
-#include "core/extent.hpp"
-#include "core/volume.hpp"
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/stepping_solver.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/stepping_solver.hpp"
 
 namespace lbmshape {
 

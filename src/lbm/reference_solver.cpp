@@ -1,12 +1,12 @@
-#include "lbm/reference_solver.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
 
 #include <array>
 #include <vector>
 
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/d3q19.hpp"
-#include "lbm/relaxation.hpp"
-#include "lbm/solver_state.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
 
 namespace lbmshape {
 

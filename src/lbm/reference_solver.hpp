@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "lbm/lattice_solver.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
 
 namespace lbmshape {
 

@@ -1,15 +1,15 @@
-#include "lbm/relaxation.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
-#include "core/number_text.hpp"
-#include "core/parameter_names.hpp"
-#include "core/parameter_bounds.hpp"
-#include "lbm/d3q19.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
 
 namespace lbmshape::relaxation {
 

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string_view>
 
-#include "core/parameter_bounds.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
 
 namespace lbmshape::relaxation {
 

@@ -1,10 +1,10 @@
-#include "lbm/solver_state.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "lbm/relaxation.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
 
 namespace lbmshape::solver_state {
 

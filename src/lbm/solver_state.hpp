@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "core/volume.hpp"
-#include "lbm/lattice_solver.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
 
 namespace lbmshape::solver_state {
 

@@ -1,4 +1,4 @@
-#include "lbm/surface_change.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 
 #include <stdexcept>
 

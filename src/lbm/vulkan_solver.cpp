@@ -1,18 +1,18 @@
-#include "lbm/vulkan_solver.hpp"
+#include "lbmshape/lbm/vulkan_solver.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstring>
 
-#include "core/error.hpp"
-#include "lattice_interface.h"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/d3q19.hpp"
-#include "lbm/lattice_memory.hpp"
-#include "lbm/relaxation.hpp"
-#include "lbm/solver_state.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/shaders/lattice_interface.h"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/d3q19.hpp"
+#include "lbmshape/lbm/lattice_memory.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/solver_state.hpp"
 
 namespace lbmshape {
 

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "lbm/lattice_solver.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/glb_container.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
 
 #include <cstring>
 

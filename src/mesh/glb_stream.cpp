@@ -1,10 +1,10 @@
-#include "mesh/glb_stream.hpp"
+#include "lbmshape/mesh/glb_stream.hpp"
 
 #include <cstdint>
 #include <string>
 
-#include "core/error.hpp"
-#include "mesh/glb_container.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
 
 namespace lbmshape {
 

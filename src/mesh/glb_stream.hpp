@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/atomic_file.hpp"
+#include "lbmshape/core/atomic_file.hpp"
 
 namespace lbmshape {
 

@@ -1,9 +1,9 @@
-#include "mesh/gltf_accessors.hpp"
+#include "lbmshape/mesh/gltf_accessors.hpp"
 
 #include <algorithm>
 #include <cstring>
 
-#include "core/checked_arithmetic.hpp"
+#include "lbmshape/core/checked_arithmetic.hpp"
 
 namespace lbmshape {
 namespace {

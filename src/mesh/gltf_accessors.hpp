@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

@@ -1,17 +1,17 @@
-#include "mesh/gltf_animation.hpp"
+#include "lbmshape/mesh/gltf_animation.hpp"
 
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/number_text.hpp"
-#include "core/log.hpp"
-#include "mesh/glb_stream.hpp"
-#include "mesh/gltf_builder.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/writable_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/glb_stream.hpp"
+#include "lbmshape/mesh/gltf_builder.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/writable_mesh.hpp"
 
 namespace lbmshape {
 namespace {

@@ -9,8 +9,8 @@
 #include <memory>
 #include <vector>
 
-#include "mesh/gltf_compression.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/gltf_builder.hpp"
+#include "lbmshape/mesh/gltf_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "mesh/single_precision.hpp"
-#include "mesh/colour_space.hpp"
-#include "mesh/glb_container.hpp"
-#include "mesh/gltf_compression.hpp"
-#include "mesh/mesh_geometry.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/mesh/single_precision.hpp"
+#include "lbmshape/mesh/colour_space.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
 namespace {

@@ -12,10 +12,10 @@
 
 #include <tiny_gltf.h>
 
-#include "core/atomic_file.hpp"
-#include "mesh/gltf_compression.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

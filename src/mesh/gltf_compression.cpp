@@ -1,4 +1,4 @@
-#include "mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <meshoptimizer.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 namespace {

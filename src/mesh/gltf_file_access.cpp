@@ -1,11 +1,11 @@
-#include "mesh/gltf_file_access.hpp"
+#include "lbmshape/mesh/gltf_file_access.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 
-#include "core/mapped_file.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/mapped_file.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -15,8 +15,8 @@
 
 #include <tiny_gltf.h>
 
-#include "mesh/gltf_json_check.hpp"
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/gltf_json_check.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

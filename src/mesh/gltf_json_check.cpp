@@ -1,4 +1,4 @@
-#include "mesh/gltf_json_check.hpp"
+#include "lbmshape/mesh/gltf_json_check.hpp"
 
 #include <algorithm>
 #include <map>
@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/checked_arithmetic.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/checked_arithmetic.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/gltf_meshopt_decoding.hpp"
+#include "lbmshape/mesh/gltf_meshopt_decoding.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,8 +7,8 @@
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/glb_container.hpp"
-#include "mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
 
 namespace lbmshape {
 namespace {

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

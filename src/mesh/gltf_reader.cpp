@@ -1,4 +1,4 @@
-#include "mesh/gltf_reader.hpp"
+#include "lbmshape/mesh/gltf_reader.hpp"
 
 #include <cmath>
 
@@ -10,16 +10,16 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
-#include "core/checked_arithmetic.hpp"
-#include "core/log.hpp"
-#include "mesh/gltf_accessors.hpp"
-#include "mesh/gltf_file_access.hpp"
-#include "mesh/gltf_json_check.hpp"
-#include "mesh/colour_space.hpp"
-#include "mesh/glb_container.hpp"
-#include "mesh/gltf_meshopt_decoding.hpp"
-#include "mesh/gltf_scene_walk.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/checked_arithmetic.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/gltf_accessors.hpp"
+#include "lbmshape/mesh/gltf_file_access.hpp"
+#include "lbmshape/mesh/gltf_json_check.hpp"
+#include "lbmshape/mesh/colour_space.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
+#include "lbmshape/mesh/gltf_meshopt_decoding.hpp"
+#include "lbmshape/mesh/gltf_scene_walk.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -2,9 +2,9 @@
 // read defensively: a glTF file is untrusted input.
 #pragma once
 
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_source.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/gltf_scene_walk.hpp"
+#include "lbmshape/mesh/gltf_scene_walk.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>

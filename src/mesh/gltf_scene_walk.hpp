@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

@@ -1,6 +1,6 @@
-#include "mesh/gltf_writer.hpp"
+#include "lbmshape/mesh/gltf_writer.hpp"
 
-#include "mesh/gltf_builder.hpp"
+#include "lbmshape/mesh/gltf_builder.hpp"
 
 namespace lbmshape {
 

@@ -1,10 +1,10 @@
 // A single mesh as a glTF 2.0 file (.gltf or .glb).
 #pragma once
 
-#include "core/atomic_file.hpp"
-#include "mesh/gltf_compression.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

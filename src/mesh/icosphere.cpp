@@ -1,4 +1,4 @@
-#include "mesh/icosphere.hpp"
+#include "lbmshape/mesh/icosphere.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
 
 #include <algorithm>
 #include <array>

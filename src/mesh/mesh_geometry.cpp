@@ -1,4 +1,4 @@
-#include "mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
 
 #include <algorithm>
 

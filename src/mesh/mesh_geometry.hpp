@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,10 +1,10 @@
-#include "mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
 namespace {

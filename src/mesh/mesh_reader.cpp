@@ -1,13 +1,13 @@
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 
-#include "core/log.hpp"
-#include "core/mapped_file.hpp"
-#include "mesh/gltf_reader.hpp"
-#include "mesh/mesh_validation.hpp"
-#include "mesh/obj_reader.hpp"
-#include "mesh/off_reader.hpp"
-#include "mesh/ply_reader.hpp"
-#include "mesh/stl_reader.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/mapped_file.hpp"
+#include "lbmshape/mesh/gltf_reader.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
+#include "lbmshape/mesh/obj_reader.hpp"
+#include "lbmshape/mesh/off_reader.hpp"
+#include "lbmshape/mesh/ply_reader.hpp"
+#include "lbmshape/mesh/stl_reader.hpp"
 
 namespace lbmshape {
 

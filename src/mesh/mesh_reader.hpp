@@ -6,9 +6,9 @@
 
 #include <filesystem>
 
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_source.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,14 +1,14 @@
-#include "mesh/mesh_validation.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/log.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,14 +1,14 @@
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "core/log.hpp"
-#include "mesh/gltf_writer.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/obj_writer.hpp"
-#include "mesh/openmesh_writer.hpp"
-#include "mesh/writable_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/gltf_writer.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/obj_writer.hpp"
+#include "lbmshape/mesh/openmesh_writer.hpp"
+#include "lbmshape/mesh/writable_mesh.hpp"
 
 namespace lbmshape {
 

@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <memory>
 
-#include "core/atomic_file.hpp"
-#include "mesh/gltf_compression.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "mesh/writable_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/writable_mesh.hpp"
 
 namespace lbmshape {
 

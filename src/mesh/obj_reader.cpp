@@ -9,17 +9,17 @@
 // every chunk, the number of the vertex it starts at. Then relative
 // (negative) indices and line numbers in messages come out right without
 // any fix-up afterwards.
-#include "mesh/obj_reader.hpp"
+#include "lbmshape/mesh/obj_reader.hpp"
 
 #include <algorithm>
 #include <cstring>
 #include <exception>
 #include <optional>
 
-#include "core/log.hpp"
-#include "mesh/fan_triangulation.hpp"
-#include "mesh/text_chunks.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/fan_triangulation.hpp"
+#include "lbmshape/mesh/text_chunks.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

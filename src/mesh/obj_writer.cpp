@@ -1,9 +1,9 @@
-#include "mesh/obj_writer.hpp"
+#include "lbmshape/mesh/obj_writer.hpp"
 
 #include <charconv>
 #include <fstream>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 namespace {

@@ -4,8 +4,8 @@
 // reads back bit for bit.
 #pragma once
 
-#include "core/atomic_file.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -2,14 +2,14 @@
 // without end on a negative or oversized count, on a lone "OFF", and on
 // "OFF BINARY" followed by text. Here counts are checked against the bytes
 // left before anything is reserved, and every line is read at most once.
-#include "mesh/off_reader.hpp"
+#include "lbmshape/mesh/off_reader.hpp"
 
 #include <bit>
 #include <cstring>
 
-#include "core/log.hpp"
-#include "mesh/fan_triangulation.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/fan_triangulation.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,11 +1,11 @@
-#include "mesh/openmesh_diagnostics.hpp"
+#include "lbmshape/mesh/openmesh_diagnostics.hpp"
 
 #include <iostream>
 #include <sstream>
 
 #include <OpenMesh/Core/System/omstream.hh>
 
-#include "core/log.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,14 +1,14 @@
-#include "mesh/openmesh_writer.hpp"
+#include "lbmshape/mesh/openmesh_writer.hpp"
 
 #include <fstream>
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>  // registers OpenMesh's writer modules
 
-#include "core/error.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/openmesh_diagnostics.hpp"
-#include "mesh/soup_exporter.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/openmesh_diagnostics.hpp"
+#include "lbmshape/mesh/soup_exporter.hpp"
 
 namespace lbmshape {
 

@@ -2,9 +2,9 @@
 // precision, as those formats are normally read).
 #pragma once
 
-#include "core/atomic_file.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

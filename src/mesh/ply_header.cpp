@@ -1,11 +1,11 @@
-#include "mesh/ply_header.hpp"
+#include "lbmshape/mesh/ply_header.hpp"
 
 #include <array>
 #include <optional>
 #include <unordered_set>
 #include <utility>
 
-#include "mesh/text_scan.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/mesh_source.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
 
 namespace lbmshape {
 

@@ -5,17 +5,17 @@
 // header's counts ask for. Here every count is checked against the bytes
 // that are left before anything is reserved, and every value type PLY
 // defines converts to a coordinate or an index.
-#include "mesh/ply_reader.hpp"
+#include "lbmshape/mesh/ply_reader.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 
-#include "core/log.hpp"
-#include "mesh/ply_header.hpp"
-#include "mesh/fan_triangulation.hpp"
-#include "mesh/text_scan.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/ply_header.hpp"
+#include "lbmshape/mesh/fan_triangulation.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,4 +1,4 @@
-#include "mesh/single_precision.hpp"
+#include "lbmshape/mesh/single_precision.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "mesh/soup_exporter.hpp"
+#include "lbmshape/mesh/soup_exporter.hpp"
 
 namespace lbmshape {
 

@@ -9,7 +9,7 @@
 #include <OpenMesh/Core/IO/exporter/BaseExporter.hh>
 #include <OpenMesh/Core/Mesh/BaseKernel.hh>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

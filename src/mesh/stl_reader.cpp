@@ -2,15 +2,15 @@
 // a vertex it cannot parse ("nan", "abc", two coordinates, 1e39) and drops a
 // facet with four vertices, where the same values in an OBJ file are an
 // error. Binary STL goes straight into an array and is then welded.
-#include "mesh/stl_reader.hpp"
+#include "lbmshape/mesh/stl_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
 
-#include "mesh/text_scan.hpp"
-#include "mesh/vertex_welding.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
+#include "lbmshape/mesh/vertex_welding.hpp"
 
 namespace lbmshape {
 namespace {

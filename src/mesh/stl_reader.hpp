@@ -1,8 +1,8 @@
 // STL, binary or ASCII, read by lbmshape itself (see stl_reader.cpp for why).
 #pragma once
 
-#include "mesh/mesh_source.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/mesh_source.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "mesh/text_chunks.hpp"
+#include "lbmshape/mesh/text_chunks.hpp"
 
 namespace lbmshape {
 

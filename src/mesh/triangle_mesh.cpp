@@ -1,4 +1,4 @@
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 #include <limits>
 

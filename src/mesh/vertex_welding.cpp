@@ -1,4 +1,4 @@
-#include "mesh/vertex_welding.hpp"
+#include "lbmshape/mesh/vertex_welding.hpp"
 
 #include <bit>
 #include <cstdint>

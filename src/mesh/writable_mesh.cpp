@@ -1,12 +1,12 @@
-#include "mesh/writable_mesh.hpp"
+#include "lbmshape/mesh/writable_mesh.hpp"
 
 #include <algorithm>
 #include <limits>
 
-#include "core/error.hpp"
-#include "core/number_text.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/single_precision.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/single_precision.hpp"
 
 namespace lbmshape {
 namespace {

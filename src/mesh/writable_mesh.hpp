@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,13 +1,13 @@
-#include "pipeline/animation_memory.hpp"
+#include "lbmshape/pipeline/animation_memory.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "core/host_memory.hpp"
-#include "core/memory_sizes.hpp"
-#include "mesh/mesh_geometry.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
 namespace {

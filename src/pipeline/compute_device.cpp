@@ -1,20 +1,22 @@
-#include "pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
 
+#include <chrono>
 #include <system_error>
 
-#include "core/error.hpp"
-#include "core/host_memory.hpp"
-#include "core/log.hpp"
-#include "core/memory_sizes.hpp"
-#include "core/stopwatch.hpp"
-#include "gpu/gpu_context.hpp"
-#include "gpu/vulkan_instance.hpp"
-#include "lbm/band_reference_solver.hpp"
-#include "lbm/band_vulkan_solver.hpp"
-#include "lbm/lattice_memory.hpp"
-#include "lbm/reference_solver.hpp"
-#include "lbm/vulkan_solver.hpp"
-#include "sdf/device_band_distances.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/gpu/vulkan_instance.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
+#include "lbmshape/lbm/lattice_memory.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
+#include "lbmshape/lbm/vulkan_solver.hpp"
+#include "lbmshape/sdf/device_band_distances.hpp"
 
 namespace lbmshape {
 
@@ -31,11 +33,37 @@ ComputeDevice::ComputeDevice(ComputeDevice&& other) noexcept
   validation_ = other.validation_;
   distances_ = other.distances_;
   surfaces_ = other.surfaces_;
+  turn_ = other.turn_;
   distancesTurn_ = other.distancesTurn_;
   instance_ = std::move(other.instance_);
   chosen_ = other.chosen_;
   gpu_ = std::move(other.gpu_);
 }
+
+namespace {
+// The turn of the device whose morph's frame sink runs on this thread.
+thread_local const void* sinkOfTheMorphOn = nullptr;
+}  // namespace
+
+ComputeDevice::Turn ComputeDevice::takeTurn() const
+{
+  if (sinkOfTheMorphOn == turn_.get())
+    throw UsageError(
+        "a call from a morph's frame callback cannot use the morph's own device, which the morph holds until its last "
+        "frame: give the call a device of its own");
+  Turn turn(*turn_, std::defer_lock);
+  // Waited for in short spells, so that a stop request ends the wait.
+  while (!turn.try_lock_for(std::chrono::milliseconds(50)))
+    interrupt::check("nothing was done: the call was waiting for the device, which another call held");
+  return turn;
+}
+
+ComputeDevice::FrameSinkOf::FrameSinkOf(const ComputeDevice& device) : outer_(sinkOfTheMorphOn)
+{
+  sinkOfTheMorphOn = device.turn_.get();
+}
+
+ComputeDevice::FrameSinkOf::~FrameSinkOf() { sinkOfTheMorphOn = outer_; }
 
 void ComputeDevice::finishWarmUp() const
 {

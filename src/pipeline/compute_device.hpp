@@ -11,12 +11,12 @@
 #include <mutex>
 #include <string>
 
-#include "core/parameter_names.hpp"
-#include "core/extent.hpp"
-#include "lbm/band_solver.hpp"
-#include "lbm/lattice_solver.hpp"
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 
@@ -117,6 +117,30 @@ public:
   // when --extract device asked for one.
   void warnThatTheGridsFramesAreTheCpus() const;
 
+  // The library's calls that share a device take turns: denoiseMesh,
+  // morphMeshes, drawMeshes and their file versions each hold the device's
+  // turn from start to end, for its queue, command pools, pipelines and
+  // warm-up serve one call at a time (two threads' first calls on one device
+  // crashed in the warm-up). A call waits for the one before to end; a stop
+  // request ends the wait (Interrupted). Calls meant to run at once open a
+  // device each. A call within a call on the same thread (a denoise's
+  // preview) shares its turn.
+  using Turn = std::unique_lock<std::recursive_timed_mutex>;
+  [[nodiscard]] Turn takeTurn() const;
+  // While one lives, on a morph's frame writer's thread around its frame
+  // sink: a call there on the morph's own device would wait for the morph,
+  // which waits for the sink, so it is a UsageError instead.
+  class FrameSinkOf {
+  public:
+    explicit FrameSinkOf(const ComputeDevice& device);
+    ~FrameSinkOf();
+    FrameSinkOf(const FrameSinkOf&) = delete;
+    FrameSinkOf& operator=(const FrameSinkOf&) = delete;
+
+  private:
+    const void* outer_;
+  };
+
   // With validation on, throws DeviceError if the layer reported anything.
   void requireCleanValidation() const;
   // Destroys the Vulkan device (the instance stays, so that what the layer
@@ -137,6 +161,7 @@ private:
   bool validation_ = false;
   RunsOn distances_ = RunsOn::Auto;
   RunsOn surfaces_ = RunsOn::Auto;
+  std::shared_ptr<std::recursive_timed_mutex> turn_ = std::make_shared<std::recursive_timed_mutex>();  // takeTurn()
   mutable std::shared_ptr<std::mutex> distancesTurn_ = std::make_shared<std::mutex>();  // bandDistances' callers
   mutable std::mutex instanceMutex_;  // instance_ and chosen_, which the warm-up's thread sets too
   mutable std::shared_ptr<gpu::VulkanInstance> instance_;

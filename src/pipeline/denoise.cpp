@@ -1,4 +1,4 @@
-#include "pipeline/denoise.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,34 +6,34 @@
 #include <iomanip>
 #include <sstream>
 
-#include "analysis/mesh_topology.hpp"
-#include "core/error.hpp"
-#include "core/host_memory.hpp"
-#include "core/parameter_names.hpp"
-#include "core/number_text.hpp"
-#include "core/parameter_bounds.hpp"
-#include "core/log.hpp"
-#include "lbm/relaxation.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_validation.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/feature_probe.hpp"
-#include "pipeline/input_orientation.hpp"
-#include "pipeline/interruptible_steps.hpp"
-#include "pipeline/render_job.hpp"
-#include "pipeline/smoothing_radius.hpp"
-#include "pipeline/smoothing_stop.hpp"
-#include "pipeline/twicing.hpp"
-#include "render/curvature_colours.hpp"
-#include "pipeline/stage_clock.hpp"
-#include "lbm/band_width.hpp"
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/enclosed_volume.hpp"
-#include "sdf/signed_distance.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/marching_cubes.hpp"
-#include "surface/volume_keeping.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
+#include "lbmshape/pipeline/input_orientation.hpp"
+#include "lbmshape/pipeline/interruptible_steps.hpp"
+#include "lbmshape/pipeline/render_job.hpp"
+#include "lbmshape/pipeline/smoothing_radius.hpp"
+#include "lbmshape/pipeline/smoothing_stop.hpp"
+#include "lbmshape/pipeline/twicing.hpp"
+#include "lbmshape/render/curvature_colours.hpp"
+#include "lbmshape/pipeline/stage_clock.hpp"
+#include "lbmshape/lbm/band_width.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/enclosed_volume.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
+#include "lbmshape/surface/volume_keeping.hpp"
 
 namespace lbmshape {
 namespace {
@@ -648,6 +648,7 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
                           const ComputeDevice& device)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   // What readMesh checks of a file, for a mesh that comes from a program:
@@ -667,6 +668,7 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
 DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   checkNotTheInput(output, input, o.replaceInput);

@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesh/gltf_compression.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/compute_device.hpp"
-#include "pipeline/field_noise.hpp"
-#include "sdf/grid_frame.hpp"
-#include "surface/triangle_relaxation.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/field_noise.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/surface/triangle_relaxation.hpp"
 
 namespace lbmshape {
 

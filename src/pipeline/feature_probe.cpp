@@ -1,7 +1,7 @@
-#include "pipeline/feature_probe.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
 
-#include "core/parameter_bounds.hpp"
-#include "lbm/relaxation.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
 
 namespace lbmshape {
 

@@ -1,11 +1,11 @@
-#include "pipeline/field_noise.hpp"
+#include "lbmshape/pipeline/field_noise.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 namespace lbmshape {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "core/volume.hpp"
+#include "lbmshape/core/volume.hpp"
 
 namespace lbmshape {
 

@@ -1,17 +1,17 @@
-#include "pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
 
 #include <cstdio>
 #include <system_error>
 #include <type_traits>
 
-#include "core/error.hpp"
-#include "core/host_memory.hpp"
-#include "core/parameter_names.hpp"
-#include "core/stopwatch.hpp"
-#include "core/worker_threads.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/core/worker_threads.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {

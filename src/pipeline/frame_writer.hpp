@@ -19,13 +19,13 @@
 #include <variant>
 #include <vector>
 
-#include "band/band_field.hpp"
-#include "core/atomic_file.hpp"
-#include "core/volume.hpp"
-#include "mesh/gltf_compression.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
-#include "surface/surface_pieces.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/mesh/gltf_compression.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/surface/surface_pieces.hpp"
 
 namespace lbmshape {
 

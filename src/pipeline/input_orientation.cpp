@@ -1,11 +1,11 @@
-#include "pipeline/input_orientation.hpp"
+#include "lbmshape/pipeline/input_orientation.hpp"
 
 #include <utility>
 #include <vector>
 
-#include "core/log.hpp"
-#include "mesh/vertex_welding.hpp"
-#include "sdf/shell_orientation.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/mesh/vertex_welding.hpp"
+#include "lbmshape/sdf/shell_orientation.hpp"
 
 namespace lbmshape {
 namespace {

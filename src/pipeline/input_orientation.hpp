@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "analysis/mesh_topology.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,10 +1,10 @@
-#include "pipeline/interruptible_steps.hpp"
+#include "lbmshape/pipeline/interruptible_steps.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/interrupt.hpp"
-#include "core/stopwatch.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape {
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "core/progress.hpp"
-#include "lbm/stepping_solver.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/lbm/stepping_solver.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "pipeline/morph.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,34 +10,34 @@
 
 #include <unistd.h>  // access
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/number_text.hpp"
-#include "core/parameter_names.hpp"
-#include "core/folder_lock.hpp"
-#include "core/parameter_bounds.hpp"
-#include "core/host_memory.hpp"
-#include "core/interrupt.hpp"
-#include "core/temporary_files.hpp"
-#include "core/log.hpp"
-#include "core/stopwatch.hpp"
-#include "lbm/relaxation.hpp"
-#include "mesh/gltf_animation.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_validation.hpp"
-#include "pipeline/animation_memory.hpp"
-#include "pipeline/frame_writer.hpp"
-#include "pipeline/input_orientation.hpp"
-#include "pipeline/interruptible_steps.hpp"
-#include "pipeline/morph_frame_report.hpp"
-#include "pipeline/morph_lattice.hpp"
-#include "pipeline/morph_schedule.hpp"
-#include "pipeline/render_job.hpp"
-#include "render/curvature_colours.hpp"
-#include "pipeline/stage_clock.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/folder_lock.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/temporary_files.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/mesh/gltf_animation.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
+#include "lbmshape/pipeline/animation_memory.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/input_orientation.hpp"
+#include "lbmshape/pipeline/interruptible_steps.hpp"
+#include "lbmshape/pipeline/morph_frame_report.hpp"
+#include "lbmshape/pipeline/morph_lattice.hpp"
+#include "lbmshape/pipeline/morph_schedule.hpp"
+#include "lbmshape/pipeline/render_job.hpp"
+#include "lbmshape/render/curvature_colours.hpp"
+#include "lbmshape/pipeline/stage_clock.hpp"
 
 namespace lbmshape {
 namespace fs = std::filesystem;
@@ -569,6 +569,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
 nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
                           const MorphOptions& o, const ComputeDevice& device)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
   if (o.preview) checkPreview(*o.preview, device, folder);
@@ -582,6 +583,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
                            const ComputeDevice& device, const FrameSink& sink)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   MorphOptions o = options;
   o.animation = false;  // about files: the program has every frame
   o.preview.reset();
@@ -589,9 +591,14 @@ nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& targe
   TriangleMesh checkedSource = source, checkedTarget = target;
   validateInputMesh(checkedSource, "the source mesh");
   validateInputMesh(checkedTarget, "the target mesh");
+  if (!sink) throw UsageError("the morph's frame sink is empty: its frames would go nowhere");
   StageClock clock([&device] { return device.deviceBusyMs(); });
+  const FrameSink guarded = [&](int frame, const TriangleMesh& mesh) {
+    const ComputeDevice::FrameSinkOf callsFromTheSink(device);
+    sink(frame, mesh);
+  };
   return runMorph(std::move(checkedSource), std::move(checkedTarget), "the source mesh", "the target mesh", o, device,
-                  clock, {.sink = &sink});
+                  clock, {.sink = &guarded});
 }
 
 }  // namespace lbmshape

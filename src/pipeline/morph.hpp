@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/compute_device.hpp"
-#include "pipeline/frame_writer.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 
 namespace lbmshape {
 

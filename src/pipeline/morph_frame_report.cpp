@@ -1,4 +1,4 @@
-#include "pipeline/morph_frame_report.hpp"
+#include "lbmshape/pipeline/morph_frame_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <type_traits>
 #include <variant>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_sampling.hpp"
-#include "surface/field_sampling.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_sampling.hpp"
+#include "lbmshape/surface/field_sampling.hpp"
 
 namespace lbmshape {
 namespace {

@@ -18,10 +18,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/surface_comparison.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/frame_writer.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

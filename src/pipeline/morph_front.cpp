@@ -1,11 +1,11 @@
-#include "pipeline/morph_front.hpp"
+#include "lbmshape/pipeline/morph_front.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
 
 namespace lbmshape {
 namespace {

@@ -26,8 +26,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "band/band_field.hpp"
-#include "pipeline/morph_schedule.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/pipeline/morph_schedule.hpp"
 
 namespace lbmshape {
 

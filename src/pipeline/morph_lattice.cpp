@@ -1,4 +1,4 @@
-#include "pipeline/morph_lattice.hpp"
+#include "lbmshape/pipeline/morph_lattice.hpp"
 
 #include <cmath>
 #include <limits>
@@ -6,17 +6,17 @@
 #include <type_traits>
 #include <variant>
 
-#include "core/worker_threads.hpp"
-#include "lbm/band_width.hpp"
-#include "pipeline/morph_front.hpp"
-#include "pipeline/field_noise.hpp"
-#include "pipeline/recycled_fields.hpp"
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/enclosed_volume.hpp"
-#include "sdf/signed_distance.hpp"
-#include "sdf/triangle_bvh.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/core/worker_threads.hpp"
+#include "lbmshape/lbm/band_width.hpp"
+#include "lbmshape/pipeline/morph_front.hpp"
+#include "lbmshape/pipeline/field_noise.hpp"
+#include "lbmshape/pipeline/recycled_fields.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/enclosed_volume.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {

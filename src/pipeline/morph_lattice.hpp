@@ -10,15 +10,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lbm/stepping_solver.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/compute_device.hpp"
-#include "pipeline/frame_writer.hpp"
-#include "pipeline/morph.hpp"
-#include "pipeline/morph_schedule.hpp"
-#include "sdf/triangle_bvh.hpp"
-#include "pipeline/stage_clock.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/lbm/stepping_solver.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/morph.hpp"
+#include "lbmshape/pipeline/morph_schedule.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
+#include "lbmshape/pipeline/stage_clock.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

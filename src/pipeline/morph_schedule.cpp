@@ -1,10 +1,10 @@
-#include "pipeline/morph_schedule.hpp"
+#include "lbmshape/pipeline/morph_schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/parameter_bounds.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 
 namespace lbmshape {
 

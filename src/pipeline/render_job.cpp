@@ -1,28 +1,28 @@
-#include "pipeline/render_job.hpp"
+#include "lbmshape/pipeline/render_job.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "core/log.hpp"
-#include "core/parameter_bounds.hpp"
-#include "core/stopwatch.hpp"
-#include "gpu/gpu_context.hpp"
-#include "mesh/mesh_format.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "pipeline/frame_writer.hpp"
-#include "pipeline/stage_clock.hpp"
-#include "render/colour_map.hpp"
-#include "render/curvature_colours.hpp"
-#include "render/layout.hpp"
-#include "render/picture.hpp"
-#include "render/png_file.hpp"
-#include "render/surface_renderer.hpp"
-#include "render/surface_values.hpp"
-#include "render/text_overlay.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/mesh/mesh_format.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/stage_clock.hpp"
+#include "lbmshape/render/colour_map.hpp"
+#include "lbmshape/render/curvature_colours.hpp"
+#include "lbmshape/render/layout.hpp"
+#include "lbmshape/render/picture.hpp"
+#include "lbmshape/render/png_file.hpp"
+#include "lbmshape/render/surface_renderer.hpp"
+#include "lbmshape/render/surface_values.hpp"
+#include "lbmshape/render/text_overlay.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace fs = std::filesystem;
 
@@ -141,6 +141,7 @@ void checkRenderOptions(const RenderOptions& o)
 render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& o, const ComputeDevice& device,
                          nlohmann::json* figures)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   render::Picture picture;
   picture.view = o.view;
   picture.wireframe = o.wireframe;
@@ -208,6 +209,7 @@ std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int per
 nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& png, const RenderOptions& o,
                            const ComputeDevice& device)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   checkRenderOptions(o);
   render::requirePngPath(png, "the picture");
   const std::vector<fs::path> files = meshesToRender(paths, o.folderMeshes);
@@ -244,6 +246,7 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
 
 void checkPreview(const fs::path& png, const ComputeDevice& device, const fs::path& createdLater)
 {
+  const ComputeDevice::Turn turn = device.takeTurn();
   render::requirePngPath(png, nameOf(Parameter::Preview));
   device.drawingContext().requireDrawing(", or leave out " + nameOf(Parameter::Preview));
   std::error_code ec;

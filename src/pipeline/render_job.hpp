@@ -12,10 +12,10 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/compute_device.hpp"
-#include "render/image.hpp"
-#include "render/view.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/render/image.hpp"
+#include "lbmshape/render/view.hpp"
 
 namespace lbmshape {
 

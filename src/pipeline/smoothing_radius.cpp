@@ -1,4 +1,4 @@
-#include "pipeline/smoothing_radius.hpp"
+#include "lbmshape/pipeline/smoothing_radius.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 #include <sstream>
 #include <string>
 
-#include "core/error.hpp"
-#include "core/parameter_bounds.hpp"
-#include "core/parameter_names.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/feature_probe.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
 
 namespace lbmshape {
 namespace {

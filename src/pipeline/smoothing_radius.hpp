@@ -10,7 +10,7 @@
 
 #include <optional>
 
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

@@ -1,8 +1,8 @@
-#include "pipeline/smoothing_stop.hpp"
+#include "lbmshape/pipeline/smoothing_stop.hpp"
 
 #include <cmath>
 
-#include "lbm/surface_change.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 
 namespace lbmshape::smoothing_stop {
 

@@ -1,8 +1,8 @@
-#include "pipeline/stage_clock.hpp"
+#include "lbmshape/pipeline/stage_clock.hpp"
 
 #include <cstdio>
 
-#include "core/log.hpp"
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/interrupt.hpp"
-#include "core/progress.hpp"
-#include "core/stopwatch.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape {
 

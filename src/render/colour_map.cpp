@@ -1,4 +1,4 @@
-#include "render/colour_map.hpp"
+#include "lbmshape/render/colour_map.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
-#include "render/curvature_colours.hpp"
+#include "lbmshape/render/curvature_colours.hpp"
 
-#include "render/colour_map.hpp"
-#include "render/surface_values.hpp"
+#include "lbmshape/render/colour_map.hpp"
+#include "lbmshape/render/surface_values.hpp"
 
 namespace lbmshape::render {
 

@@ -1,4 +1,4 @@
-#include "render/image.hpp"
+#include "lbmshape/render/image.hpp"
 
 #include <algorithm>
 

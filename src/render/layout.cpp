@@ -1,10 +1,10 @@
-#include "render/layout.hpp"
+#include "lbmshape/render/layout.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/parameter_bounds.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
 
 namespace lbmshape::render {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/picture.hpp"
+#include "lbmshape/render/picture.hpp"
 
 namespace lbmshape::render {
 

@@ -9,9 +9,9 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/triangle_mesh.hpp"
-#include "render/colour_map.hpp"
-#include "render/view.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/render/colour_map.hpp"
+#include "lbmshape/render/view.hpp"
 
 namespace lbmshape::render {
 

@@ -1,11 +1,11 @@
-#include "render/png_file.hpp"
+#include "lbmshape/render/png_file.hpp"
 
 #include <algorithm>
 #include <cctype>
 
 #include <stb/stb_image_write.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape::render {
 

@@ -3,8 +3,8 @@
 
 #include <filesystem>
 
-#include "core/atomic_file.hpp"
-#include "render/image.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/render/image.hpp"
 
 namespace lbmshape::render {
 

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render_interface.h"
+#include "lbmshape/shaders/render_interface.h"
 
 namespace lbmshape::render {
 

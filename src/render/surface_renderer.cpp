@@ -1,17 +1,17 @@
-#include "render/surface_renderer.hpp"
+#include "lbmshape/render/surface_renderer.hpp"
 
 #include <cstring>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "core/log.hpp"
-#include "core/stopwatch.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
-#include "gpu/gpu_image.hpp"
-#include "gpu/shader_registry.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "render_interface.h"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_image.hpp"
+#include "lbmshape/gpu/shader_registry.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/shaders/render_interface.h"
 
 namespace lbmshape::render {
 namespace {

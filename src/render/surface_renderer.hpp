@@ -5,9 +5,9 @@
 // after, on the CPU (text_overlay.hpp).
 #pragma once
 
-#include "render/image.hpp"
-#include "render/layout.hpp"
-#include "render/picture.hpp"
+#include "lbmshape/render/image.hpp"
+#include "lbmshape/render/layout.hpp"
+#include "lbmshape/render/picture.hpp"
 
 namespace lbmshape::gpu {
 class GpuContext;

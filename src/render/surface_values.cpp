@@ -1,10 +1,10 @@
-#include "render/surface_values.hpp"
+#include "lbmshape/render/surface_values.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "mesh/mesh_geometry.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape::render {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/text_overlay.hpp"
+#include "lbmshape/render/text_overlay.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,7 +11,7 @@
 #include <stb/stb_easy_font.h>
 #pragma GCC diagnostic pop
 
-#include "core/number_text.hpp"
+#include "lbmshape/core/number_text.hpp"
 
 namespace lbmshape::render {
 namespace {

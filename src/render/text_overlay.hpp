@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "render/colour_map.hpp"
-#include "render/image.hpp"
-#include "render/layout.hpp"
+#include "lbmshape/render/colour_map.hpp"
+#include "lbmshape/render/image.hpp"
+#include "lbmshape/render/layout.hpp"
 
 namespace lbmshape::render {
 

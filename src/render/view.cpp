@@ -1,10 +1,10 @@
-#include "render/view.hpp"
+#include "lbmshape/render/view.hpp"
 
 #include <cmath>
 #include <cstdlib>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 namespace lbmshape::render {
 

@@ -1,13 +1,13 @@
-#include "sdf/band_distance.hpp"
+#include "lbmshape/sdf/band_distance.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cmath>
 
-#include "core/interrupt.hpp"
-#include "sdf/cell_space.hpp"
-#include "sdf/point_triangle.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/point_triangle.hpp"
 
 namespace lbmshape {
 

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/volume.hpp"
-#include "sdf/grid_frame.hpp"
-#include "core/progress.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 

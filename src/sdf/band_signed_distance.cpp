@@ -1,19 +1,19 @@
-#include "sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/log.hpp"
-#include "core/stopwatch.hpp"
-#include "sdf/band_distance.hpp"
-#include "sdf/cell_space.hpp"
-#include "sdf/far_field.hpp"
-#include "sdf/triangle_bvh.hpp"
-#include "sdf/winding_gradient_bound.hpp"
-#include "sdf/winding_sign.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/stopwatch.hpp"
+#include "lbmshape/sdf/band_distance.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/far_field.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/winding_gradient_bound.hpp"
+#include "lbmshape/sdf/winding_sign.hpp"
 
 namespace lbmshape {
 namespace {

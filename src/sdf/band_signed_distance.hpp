@@ -13,12 +13,12 @@
 #include <functional>
 #include <vector>
 
-#include "band/band_field.hpp"
-#include "core/progress.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
-#include "sdf/signed_distance.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 

@@ -14,9 +14,9 @@
 
 #include <glm/glm.hpp>
 
-#include "band/brick_set.hpp"
-#include "core/extent.hpp"
-#include "sdf/grid_blocks.hpp"
+#include "lbmshape/band/brick_set.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/sdf/grid_blocks.hpp"
 
 namespace lbmshape {
 

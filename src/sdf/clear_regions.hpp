@@ -19,8 +19,8 @@
 
 #include <omp.h>
 
-#include "core/concurrent_union_find.hpp"
-#include "core/interrupt.hpp"
+#include "lbmshape/core/concurrent_union_find.hpp"
+#include "lbmshape/core/interrupt.hpp"
 
 namespace lbmshape {
 

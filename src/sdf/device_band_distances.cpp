@@ -1,4 +1,4 @@
-#include "sdf/device_band_distances.hpp"
+#include "lbmshape/sdf/device_band_distances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <optional>
 #include <vector>
 
-#include "band_distance_interface.h"
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/gpu_context.hpp"
-#include "sdf/cell_space.hpp"
-#include "sdf/point_triangle.hpp"
+#include "lbmshape/shaders/band_distance_interface.h"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/point_triangle.hpp"
 
 namespace lbmshape {
 namespace {

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sdf/grid_frame.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 

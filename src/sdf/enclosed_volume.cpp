@@ -1,10 +1,10 @@
-#include "sdf/enclosed_volume.hpp"
+#include "lbmshape/sdf/enclosed_volume.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 namespace lbmshape {
 

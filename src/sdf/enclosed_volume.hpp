@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "band/band_field.hpp"
-#include "core/volume.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/volume.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "sdf/far_field.hpp"
+#include "lbmshape/sdf/far_field.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -8,8 +8,8 @@
 
 #include <omp.h>
 
-#include "core/interrupt.hpp"
-#include "sdf/cell_space.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
 
 namespace lbmshape {
 namespace {

@@ -27,9 +27,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/volume.hpp"
-#include "sdf/grid_frame.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 

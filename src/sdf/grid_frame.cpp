@@ -1,12 +1,12 @@
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/number_text.hpp"
-#include "core/parameter_names.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/parameter_names.hpp"
 
 namespace lbmshape {
 namespace {

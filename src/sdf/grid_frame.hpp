@@ -5,8 +5,8 @@
 
 #include <glm/glm.hpp>
 
-#include "core/extent.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/core/extent.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "sdf/shell_orientation.hpp"
+#include "lbmshape/sdf/shell_orientation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

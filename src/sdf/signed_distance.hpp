@@ -12,10 +12,10 @@
 
 #include <cstddef>
 
-#include "core/progress.hpp"
-#include "core/volume.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

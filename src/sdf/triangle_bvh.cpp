@@ -1,4 +1,4 @@
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,8 +6,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "sdf/point_triangle.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/sdf/point_triangle.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,4 +1,4 @@
-#include "sdf/winding_gradient_bound.hpp"
+#include "lbmshape/sdf/winding_gradient_bound.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <numbers>
 #include <unordered_map>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 namespace {

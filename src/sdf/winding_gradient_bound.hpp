@@ -19,7 +19,7 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

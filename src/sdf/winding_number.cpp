@@ -13,8 +13,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "sdf/point_triangle.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/point_triangle.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 
 #include <stdexcept>
 

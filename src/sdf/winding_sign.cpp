@@ -1,4 +1,4 @@
-#include "sdf/winding_sign.hpp"
+#include "lbmshape/sdf/winding_sign.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <unordered_map>
 #include <utility>
 
-#include "core/interrupt.hpp"
-#include "sdf/cell_space.hpp"
-#include "sdf/clear_regions.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/clear_regions.hpp"
 
 namespace lbmshape {
 namespace {

@@ -22,10 +22,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/volume.hpp"
-#include "sdf/grid_frame.hpp"
-#include "sdf/triangle_bvh.hpp"
-#include "sdf/winding_gradient_bound.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/winding_gradient_bound.hpp"
 
 namespace lbmshape {
 

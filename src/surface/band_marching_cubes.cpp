@@ -1,4 +1,4 @@
-#include "surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -10,10 +10,10 @@
 
 #include <parallel/algorithm>
 
-#include "core/error.hpp"
-#include "surface/case_triangulation.hpp"
-#include "surface/cube_cases.hpp"
-#include "surface/edge_vertex.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/surface/case_triangulation.hpp"
+#include "lbmshape/surface/cube_cases.hpp"
+#include "lbmshape/surface/edge_vertex.hpp"
 
 namespace lbmshape {
 namespace {

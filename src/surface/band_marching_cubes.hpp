@@ -8,9 +8,9 @@
 // band's half width (at least 2 voxels beyond the surface) provides.
 #pragma once
 
-#include "band/band_field.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

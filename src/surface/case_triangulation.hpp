@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "surface/cube_cases.hpp"
-#include "surface/loop_triangulation.hpp"
+#include "lbmshape/surface/cube_cases.hpp"
+#include "lbmshape/surface/loop_triangulation.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "surface/cube_cases.hpp"
+#include "lbmshape/surface/cube_cases.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/extent.hpp"
+#include "lbmshape/core/extent.hpp"
 
 namespace lbmshape {
 

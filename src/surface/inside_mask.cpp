@@ -1,9 +1,9 @@
-#include "surface/inside_mask.hpp"
+#include "lbmshape/surface/inside_mask.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/volume.hpp"
+#include "lbmshape/core/volume.hpp"
 
 namespace lbmshape {
 

@@ -1,4 +1,4 @@
-#include "surface/loop_triangulation.hpp"
+#include "lbmshape/surface/loop_triangulation.hpp"
 
 #include <algorithm>
 #include <cmath>

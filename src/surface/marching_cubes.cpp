@@ -8,7 +8,7 @@
 // plane by counting the same way, but leaves writing them to their owner.
 // Both passes walk the inside bitmask a word at a time, so they spend their
 // time where the surface is.
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -20,12 +20,12 @@
 
 #include <omp.h>
 
-#include "core/error.hpp"
-#include "surface/case_triangulation.hpp"
-#include "surface/cube_cases.hpp"
-#include "surface/edge_vertex.hpp"
-#include "surface/inside_mask.hpp"
-#include "surface/loop_triangulation.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/surface/case_triangulation.hpp"
+#include "lbmshape/surface/cube_cases.hpp"
+#include "lbmshape/surface/edge_vertex.hpp"
+#include "lbmshape/surface/inside_mask.hpp"
+#include "lbmshape/surface/loop_triangulation.hpp"
 
 namespace lbmshape {
 namespace {

@@ -2,9 +2,9 @@
 // back into a triangle mesh (marching cubes over the cell centres).
 #pragma once
 
-#include "core/volume.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

@@ -15,9 +15,9 @@
 
 #include <glm/glm.hpp>
 
-#include "band/band_field.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

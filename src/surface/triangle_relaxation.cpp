@@ -1,4 +1,4 @@
-#include "surface/triangle_relaxation.hpp"
+#include "lbmshape/surface/triangle_relaxation.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
 
 namespace lbmshape {
 namespace {

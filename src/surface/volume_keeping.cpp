@@ -1,10 +1,10 @@
-#include "surface/volume_keeping.hpp"
+#include "lbmshape/surface/volume_keeping.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/ordered_sum.hpp"
-#include "surface/field_sampling.hpp"
+#include "lbmshape/core/ordered_sum.hpp"
+#include "lbmshape/surface/field_sampling.hpp"
 
 namespace lbmshape {
 namespace {

@@ -14,10 +14,10 @@
 // cancels. docs/denoising.md has the measurements.
 #pragma once
 
-#include "band/band_field.hpp"
-#include "core/volume.hpp"
-#include "mesh/triangle_mesh.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 

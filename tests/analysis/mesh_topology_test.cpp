@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "core/error.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/core/error.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "support/shared_assets.hpp"
 
 namespace lbmshape {

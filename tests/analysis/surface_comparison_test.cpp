@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
-#include "analysis/surface_comparison.hpp"
-#include "analysis/surface_sampling.hpp"
-#include "core/error.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/analysis/surface_sampling.hpp"
+#include "lbmshape/core/error.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

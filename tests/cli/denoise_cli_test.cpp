@@ -11,15 +11,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/gltf_validator.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
-#include "surface/triangle_relaxation.hpp"
+#include "lbmshape/surface/triangle_relaxation.hpp"
 
 namespace lbmshape {
 namespace {

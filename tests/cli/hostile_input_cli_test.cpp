@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/mesh_file_cases.hpp"
 #include "support/scratch_folder.hpp"

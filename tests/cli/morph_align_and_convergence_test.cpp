@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"

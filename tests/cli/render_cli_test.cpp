@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"

@@ -15,9 +15,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "core/address_sanitizer.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/core/address_sanitizer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"

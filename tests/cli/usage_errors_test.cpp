@@ -100,6 +100,12 @@ INSTANTIATE_TEST_SUITE_P(
                   {"morph", "a.obj", "b.obj", "frames", "--band", "--noise", "0.05"},
                   "--band and --noise"},
         UsageCase{"half_width_without_band", {"bench", "--half-width", "4", "--size", "8,8,8"}, "--band"},
+        // Named choices are named back, never the enum's numbers (which are refused).
+        UsageCase{"sdf_unknown", {"--sdf", "gpu", "info"}, "--sdf: must be auto, cpu or device, not 'gpu'"},
+        UsageCase{"sdf_by_number", {"--sdf", "1", "info"}, "--sdf: must be auto, cpu or device, not '1'"},
+        UsageCase{"align_unknown",
+                  {"morph", "a.obj", "b.obj", "frames", "--align", "left"},
+                  "--align: must be none, center or fit, not 'left'"},
         UsageCase{
             "band_half_width_zero", {"bench", "--band", "--half-width", "0.5", "--size", "16,16,16"}, "--half-width"},
         UsageCase{

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "core/concurrent_union_find.hpp"
+#include "lbmshape/core/concurrent_union_find.hpp"
 
 namespace lbmshape {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/address_sanitizer.hpp"
-#include "core/host_memory.hpp"
+#include "lbmshape/core/address_sanitizer.hpp"
+#include "lbmshape/core/host_memory.hpp"
 
 namespace lbmshape {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/last_resort.hpp"
+#include "lbmshape/core/last_resort.hpp"
 
 #include <atomic>
 #include <new>

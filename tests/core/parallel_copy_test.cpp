@@ -1,4 +1,4 @@
-#include "core/parallel_copy.hpp"
+#include "lbmshape/core/parallel_copy.hpp"
 
 #include <numeric>
 #include <vector>

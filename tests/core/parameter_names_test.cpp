@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 
 namespace lbmshape {
 namespace {

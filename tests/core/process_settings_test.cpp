@@ -1,4 +1,4 @@
-#include "core/process_settings.hpp"
+#include "lbmshape/core/process_settings.hpp"
 
 #include <cstdlib>
 #include <optional>

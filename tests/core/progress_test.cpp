@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/log.hpp"
-#include "core/progress.hpp"
-#include "core/stopwatch.hpp"
+#include "lbmshape/core/log.hpp"
+#include "lbmshape/core/progress.hpp"
+#include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/worker_threads.hpp"
+#include "lbmshape/core/worker_threads.hpp"
 
 #include <atomic>
 #include <chrono>

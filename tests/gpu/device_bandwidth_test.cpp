@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "bench/memory_bandwidth.hpp"
+#include "lbmshape/bench/memory_bandwidth.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace lbmshape {

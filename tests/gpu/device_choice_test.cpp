@@ -2,8 +2,8 @@
 // one by index or by part of its name (pure logic, no Vulkan needed).
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "gpu/device_description.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/gpu/device_description.hpp"
 
 namespace lbmshape {
 namespace {

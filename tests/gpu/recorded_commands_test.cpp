@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_buffer.hpp"
-#include "gpu/recorded_commands.hpp"
-#include "lbm/band_reference_solver.hpp"
-#include "lbm/band_vulkan_solver.hpp"
-#include "lbm/reference_solver.hpp"
-#include "lbm/vulkan_solver.hpp"
+#include "lbmshape/gpu/gpu_buffer.hpp"
+#include "lbmshape/gpu/recorded_commands.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
+#include "lbmshape/lbm/vulkan_solver.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 #include "support/gpu_fixture.hpp"

@@ -2,7 +2,7 @@
 // only as good as the plumbing: prove that a real misuse is counted.
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape {
 namespace {

@@ -18,6 +18,7 @@ endfunction()
 
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed bin/lbmshape lib/liblbmshape.so include/lbmshape/lbmshape.hpp include/lbmshape/version.hpp
+                  include/lbmshape/core/error.hpp include/lbmshape/shaders/band_interface.h share/doc/lbmshape/LICENSE
                   lib/cmake/lbmshape/lbmshapeConfig.cmake lib/pkgconfig/lbmshape.pc
                   share/bash-completion/completions/lbmshape ${MAN_PAGE})
   if(NOT EXISTS ${prefix}/${installed})
@@ -38,8 +39,16 @@ find_program(PKG_CONFIG pkg-config REQUIRED)
 set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
 run("pkg-config lbmshape" ${PKG_CONFIG} --cflags --libs lbmshape)
 separate_arguments(flags UNIX_COMMAND "${output}")
-run("compiling with pkg-config's flags" c++ -O1 ${SOURCE_DIR}/examples/denoise_in_memory/main.cpp ${flags}
-    -Wl,-rpath,${prefix}/lib -o ${WORK_DIR}/denoise_with_pkg_config)
+# A program's own headers of the same names as the library's (a core/ or
+# mesh/ folder of its own) come first on its include path: the library's
+# headers, which include each other as "lbmshape/...", never reach them.
+file(GLOB_RECURSE library_headers RELATIVE ${prefix}/include/lbmshape ${prefix}/include/lbmshape/*.hpp
+     ${prefix}/include/lbmshape/*.h)
+foreach(header IN LISTS library_headers)
+  file(WRITE ${WORK_DIR}/programs_own_headers/${header} "#error the program's own ${header} was included\n")
+endforeach()
+run("compiling with pkg-config's flags" c++ -O1 ${SOURCE_DIR}/examples/denoise_in_memory/main.cpp
+    -I${WORK_DIR}/programs_own_headers ${flags} -Wl,-rpath,${prefix}/lib -o ${WORK_DIR}/denoise_with_pkg_config)
 run("running what pkg-config built" ${WORK_DIR}/denoise_with_pkg_config --res 32)
 message(STATUS "pkg-config lbmshape: ${output}")
 

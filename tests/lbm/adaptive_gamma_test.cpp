@@ -15,9 +15,9 @@
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
-#include "lbm/adaptive_gamma.hpp"
-#include "lbm/band_reference_solver.hpp"
-#include "lbm/reference_solver.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 

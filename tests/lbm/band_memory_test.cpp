@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "band/brick_set.hpp"
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "lbm/band_vulkan_solver.hpp"
+#include "lbmshape/band/brick_set.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
 #include "support/roomy_device.hpp"
 
 namespace lbmshape {

@@ -10,12 +10,12 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "lbm/band_vulkan_solver.hpp"
-#include "lbm/band_width.hpp"
-#include "lbm/frozen_bricks.hpp"
-#include "lbm/relaxation.hpp"
-#include "lbm/surface_change.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
+#include "lbmshape/lbm/band_width.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 

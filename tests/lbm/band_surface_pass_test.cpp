@@ -8,15 +8,15 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "lbm/band_vulkan_solver.hpp"
-#include "gpu/device_description.hpp"
-#include "gpu/gpu_context.hpp"
-#include "pipeline/compute_device.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
+#include "lbmshape/gpu/device_description.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/surface_pieces.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/surface_pieces.hpp"
 
 namespace lbmshape {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "lbm/relaxation.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/lbm/relaxation.hpp"
 #include "support/backends.hpp"
 #include "support/fields.hpp"
 

@@ -7,8 +7,8 @@
 // through zero: on an NVIDIA H100, 5.6e-3 there, from fused multiply-adds.)
 #include <gtest/gtest.h>
 
-#include "lbm/reference_solver.hpp"
-#include "lbm/vulkan_solver.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
+#include "lbmshape/lbm/vulkan_solver.hpp"
 #include "support/fields.hpp"
 #include "support/gpu_fixture.hpp"
 

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "lbm/lattice_memory.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/lbm/lattice_memory.hpp"
 #include "support/roomy_device.hpp"
 
 namespace lbmshape {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/lattice_bench.hpp"
+#include "lbmshape/bench/lattice_bench.hpp"
 
 namespace lbmshape {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lbm/surface_change.hpp"
+#include "lbmshape/lbm/surface_change.hpp"
 
 namespace lbmshape {
 namespace {

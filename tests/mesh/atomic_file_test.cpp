@@ -11,13 +11,13 @@
 
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/temporary_files.hpp"
-#include "mesh/gltf_writer.hpp"
-#include "mesh/obj_writer.hpp"
-#include "mesh/openmesh_writer.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/temporary_files.hpp"
+#include "lbmshape/mesh/gltf_writer.hpp"
+#include "lbmshape/mesh/obj_writer.hpp"
+#include "lbmshape/mesh/openmesh_writer.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 

@@ -13,14 +13,14 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
-#include "core/error.hpp"
-#include "mesh/glb_container.hpp"
-#include "mesh/gltf_animation.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
+#include "lbmshape/mesh/gltf_animation.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh/hand_made_gltf.hpp"
 #include "mesh/mesh_fixtures.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/gltf_validator.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"

@@ -2,9 +2,9 @@
 // scenes, strips and fans, unindexed primitives, external buffers and GLB.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 #include "mesh/hand_made_gltf.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 

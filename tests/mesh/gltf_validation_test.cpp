@@ -3,12 +3,12 @@
 // any time.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "mesh/gltf_animation.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/gltf_animation.hpp"
 #include "mesh/hand_made_gltf.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 #include "support/gltf_validator.hpp"

@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "mesh/glb_container.hpp"
-#include "mesh/glb_stream.hpp"
-#include "mesh/gltf_animation.hpp"
-#include "mesh/gltf_builder.hpp"
+#include "lbmshape/core/atomic_file.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/glb_container.hpp"
+#include "lbmshape/mesh/glb_stream.hpp"
+#include "lbmshape/mesh/gltf_animation.hpp"
+#include "lbmshape/mesh/gltf_builder.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 

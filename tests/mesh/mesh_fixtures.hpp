@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 

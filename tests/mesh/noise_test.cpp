@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 

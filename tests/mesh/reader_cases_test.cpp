@@ -4,9 +4,9 @@
 // says what is wrong, in one line. Read from memory and from a file alike.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 #include "mesh/mesh_fixtures.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "support/mesh_file_cases.hpp"
 
 namespace lbmshape {

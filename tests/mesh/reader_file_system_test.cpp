@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 #include "mesh/hand_made_gltf.hpp"
 #include "mesh/mesh_fixtures.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 
 namespace lbmshape {
 namespace {

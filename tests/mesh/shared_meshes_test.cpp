@@ -2,7 +2,7 @@
 // their README lists; bunny_scan, which has holes, with all its faces.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "support/shared_assets.hpp"
 
 namespace lbmshape {

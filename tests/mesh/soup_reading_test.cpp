@@ -2,7 +2,7 @@
 // face survives (manifold or not), and only zero-area triangles are dropped.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "support/test_meshes.hpp"
 

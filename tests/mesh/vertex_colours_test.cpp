@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "mesh/hand_made_gltf.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/scratch_folder.hpp"
 
 namespace lbmshape {

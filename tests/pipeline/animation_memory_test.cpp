@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_geometry.hpp"
-#include "pipeline/animation_memory.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/pipeline/animation_memory.hpp"
 #include "support/implicit_fields.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {

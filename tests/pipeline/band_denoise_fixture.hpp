@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 #include "support/scratch_folder.hpp"
 
 namespace lbmshape::testing {

@@ -2,7 +2,7 @@
 // 0.05 voxel (mean), for every smoothing mode.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_writer.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
 #include "support/test_meshes.hpp"
 
 #include "band_denoise_fixture.hpp"

@@ -4,10 +4,10 @@
 // without it.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "pipeline/compute_device.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 #include "support/test_meshes.hpp"

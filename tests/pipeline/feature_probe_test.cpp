@@ -1,9 +1,9 @@
 // The copy --preserve-features finds the edges on: how it is smoothed.
 #include <gtest/gtest.h>
 
-#include "core/parameter_bounds.hpp"
-#include "lbm/reference_solver.hpp"
-#include "pipeline/feature_probe.hpp"
+#include "lbmshape/core/parameter_bounds.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
 
 namespace lbmshape {
 namespace {

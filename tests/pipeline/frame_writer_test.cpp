@@ -1,4 +1,4 @@
-#include "pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/frame_writer.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "support/fields.hpp"
 #include "support/scratch_folder.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {

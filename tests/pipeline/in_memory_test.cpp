@@ -6,13 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

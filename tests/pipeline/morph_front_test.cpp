@@ -1,9 +1,9 @@
-#include "pipeline/morph_front.hpp"
+#include "lbmshape/pipeline/morph_front.hpp"
 
 #include <gtest/gtest.h>
 
-#include "lbm/frozen_bricks.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/lbm/frozen_bricks.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 #include "support/band_fields.hpp"
 
 namespace lbmshape {

@@ -6,13 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "core/error.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/morph.hpp"
-#include "pipeline/morph_schedule.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/morph.hpp"
+#include "lbmshape/pipeline/morph_schedule.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 

@@ -1,10 +1,10 @@
-#include "pipeline/recycled_fields.hpp"
+#include "lbmshape/pipeline/recycled_fields.hpp"
 
 #include <thread>
 
 #include <gtest/gtest.h>
 
-#include "core/volume.hpp"
+#include "lbmshape/core/volume.hpp"
 
 namespace lbmshape {
 namespace {

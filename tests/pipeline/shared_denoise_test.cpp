@@ -4,12 +4,12 @@
 // isotropic smoothing. Distances are in voxels of the grid used.
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/denoise.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/shared_assets.hpp"
 

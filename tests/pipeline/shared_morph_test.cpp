@@ -2,10 +2,10 @@
 // flows into the bunny.
 #include <gtest/gtest.h>
 
-#include "analysis/surface_comparison.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/morph.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/morph.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/shared_assets.hpp"
 #include "support/test_meshes.hpp"

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/feature_probe.hpp"
-#include "pipeline/smoothing_radius.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
+#include "lbmshape/pipeline/smoothing_radius.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

@@ -3,13 +3,13 @@
 // the noisier its input.
 #include <gtest/gtest.h>
 
-#include "analysis/surface_comparison.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "mesh/mesh_writer.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/smoothing_stop.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/smoothing_stop.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 

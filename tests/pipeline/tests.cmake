@@ -12,6 +12,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_front_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recycled_fields_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/shared_device_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_radius_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/twicing_test.cpp

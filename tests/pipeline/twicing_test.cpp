@@ -5,14 +5,14 @@
 
 #include <iostream>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "mesh/mesh_geometry.hpp"
-#include "mesh/mesh_noise.hpp"
-#include "pipeline/denoise.hpp"
-#include "pipeline/feature_probe.hpp"
-#include "pipeline/twicing.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_noise.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
+#include "lbmshape/pipeline/twicing.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "render/colour_map.hpp"
-#include "render/surface_values.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/render/colour_map.hpp"
+#include "lbmshape/render/surface_values.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape::render {

@@ -10,9 +10,9 @@
 #include <stb/stb_image_write.h>
 
 #include "picture_support.hpp"
-#include "render/surface_renderer.hpp"
-#include "render/surface_values.hpp"
-#include "render/text_overlay.hpp"
+#include "lbmshape/render/surface_renderer.hpp"
+#include "lbmshape/render/surface_values.hpp"
+#include "lbmshape/render/text_overlay.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_meshes.hpp"
 

@@ -1,7 +1,7 @@
 // Where meshes, labels and the legend go, and the camera that frames them.
 #include <gtest/gtest.h>
 
-#include "render/layout.hpp"
+#include "lbmshape/render/layout.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape::render {

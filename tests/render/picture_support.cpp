@@ -4,7 +4,7 @@
 
 #include <stb/stb_image.h>
 
-#include "render/surface_renderer.hpp"
+#include "lbmshape/render/surface_renderer.hpp"
 
 namespace lbmshape::testing {
 

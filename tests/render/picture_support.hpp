@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <vector>
 
-#include "gpu/gpu_context.hpp"
-#include "render/image.hpp"
-#include "render/layout.hpp"
-#include "render/picture.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
+#include "lbmshape/render/image.hpp"
+#include "lbmshape/render/layout.hpp"
+#include "lbmshape/render/picture.hpp"
 
 namespace lbmshape::testing {
 

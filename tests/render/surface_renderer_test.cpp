@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "lbmshape/core/error.hpp"
 #include "picture_support.hpp"
-#include "render/shading.hpp"
-#include "render/surface_values.hpp"
-#include "render/surface_renderer.hpp"
+#include "lbmshape/render/shading.hpp"
+#include "lbmshape/render/surface_values.hpp"
+#include "lbmshape/render/surface_renderer.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_meshes.hpp"
 

@@ -1,9 +1,9 @@
 // --view: the named views, azimuth and elevation, and the camera's axes.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/parameter_names.hpp"
-#include "render/view.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/render/view.hpp"
 
 namespace lbmshape::render {
 namespace {

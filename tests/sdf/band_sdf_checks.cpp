@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/grid_frame.hpp"
-#include "sdf/signed_distance.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
 
 namespace lbmshape {
 

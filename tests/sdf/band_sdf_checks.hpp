@@ -3,7 +3,7 @@
 // shared meshes.
 #pragma once
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
 

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/grid_frame.hpp"
-#include "sdf/signed_distance.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
 #include "support/test_meshes.hpp"
 
 #include "band_sdf_checks.hpp"

@@ -7,8 +7,8 @@
 #include <queue>
 #include <random>
 
-#include "sdf/cell_space.hpp"
-#include "sdf/clear_regions.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/clear_regions.hpp"
 
 namespace lbmshape {
 namespace {

@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "pipeline/compute_device.hpp"
-#include "sdf/band_signed_distance.hpp"
-#include "sdf/cell_space.hpp"
-#include "sdf/device_band_distances.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/pipeline/compute_device.hpp"
+#include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/cell_space.hpp"
+#include "lbmshape/sdf/device_band_distances.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_meshes.hpp"
 

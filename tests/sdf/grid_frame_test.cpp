@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "core/number_text.hpp"
-#include "core/parameter_names.hpp"
-#include "pipeline/denoise.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
+#include "lbmshape/core/parameter_names.hpp"
+#include "lbmshape/pipeline/denoise.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "sdf/point_triangle.hpp"
+#include "lbmshape/sdf/point_triangle.hpp"
 #include "support/test_meshes.hpp"
 
 #include "sdf_fixtures.hpp"

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape::testing::sdf {

@@ -2,7 +2,7 @@
 // field wherever the lattice needs it (band_signed_distance_test.cpp).
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
 #include "support/shared_assets.hpp"
 
 #include "band_sdf_checks.hpp"

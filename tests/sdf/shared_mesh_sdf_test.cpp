@@ -8,9 +8,9 @@
 #include <iostream>
 #include <random>
 
-#include "mesh/mesh_reader.hpp"
-#include "sdf/signed_distance.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 #include "support/shared_assets.hpp"
 
 #include "sdf_fixtures.hpp"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "sdf/shell_orientation.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/sdf/shell_orientation.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {

@@ -8,9 +8,9 @@
 #include <omp.h>
 #include <random>
 
-#include "core/error.hpp"
-#include "sdf/signed_distance.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/sdf/signed_distance.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 #include "support/test_meshes.hpp"
 
 #include "sdf_fixtures.hpp"

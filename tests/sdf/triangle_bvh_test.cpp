@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "core/error.hpp"
-#include "sdf/triangle_bvh.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 #include "support/test_meshes.hpp"
 
 #include "sdf_fixtures.hpp"

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "sdf/triangle_bvh.hpp"
-#include "sdf/winding_gradient_bound.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
+#include "lbmshape/sdf/winding_gradient_bound.hpp"
 #include "support/test_meshes.hpp"
 
 #include "sdf_fixtures.hpp"

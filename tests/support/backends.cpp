@@ -1,7 +1,7 @@
 #include "support/backends.hpp"
 
-#include "lbm/reference_solver.hpp"
-#include "lbm/vulkan_solver.hpp"
+#include "lbmshape/lbm/reference_solver.hpp"
+#include "lbmshape/lbm/vulkan_solver.hpp"
 
 namespace lbmshape::testing {
 

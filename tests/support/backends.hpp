@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "lbm/lattice_solver.hpp"
+#include "lbmshape/lbm/lattice_solver.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace lbmshape::testing {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "lbm/band_reference_solver.hpp"
-#include "lbm/band_vulkan_solver.hpp"
+#include "lbmshape/lbm/band_reference_solver.hpp"
+#include "lbmshape/lbm/band_vulkan_solver.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace lbmshape::testing {

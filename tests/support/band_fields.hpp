@@ -5,9 +5,9 @@
 
 #include <memory>
 
-#include "band/band_field.hpp"
-#include "core/volume.hpp"
-#include "lbm/band_solver.hpp"
+#include "lbmshape/band/band_field.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/lbm/band_solver.hpp"
 #include "support/backends.hpp"
 
 namespace lbmshape::testing {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/address_sanitizer.hpp"
+#include "lbmshape/core/address_sanitizer.hpp"
 
 namespace lbmshape::testing {
 

@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-#include "core/volume.hpp"
-#include "lbm/adaptive_gamma.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/lbm/adaptive_gamma.hpp"
 
 namespace lbmshape::testing {
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_context.hpp"
+#include "lbmshape/gpu/gpu_context.hpp"
 
 namespace lbmshape::testing {
 

@@ -7,8 +7,8 @@
 
 #include <glm/glm.hpp>
 
-#include "core/volume.hpp"
-#include "sdf/grid_frame.hpp"
+#include "lbmshape/core/volume.hpp"
+#include "lbmshape/sdf/grid_frame.hpp"
 
 namespace lbmshape::testing {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "gpu/device_description.hpp"
+#include "lbmshape/gpu/device_description.hpp"
 
 namespace lbmshape::testing {
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/process_settings.hpp"
+#include "lbmshape/core/process_settings.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh/icosphere.hpp"
-#include "mesh/triangle_mesh.hpp"
+#include "lbmshape/mesh/icosphere.hpp"
+#include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape::testing {
 

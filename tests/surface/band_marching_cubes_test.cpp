@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "core/error.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 #include "support/band_fields.hpp"
 #include "support/implicit_fields.hpp"
 

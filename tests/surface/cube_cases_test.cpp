@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "surface/cube_cases.hpp"
-#include "surface/loop_triangulation.hpp"
+#include "lbmshape/surface/cube_cases.hpp"
+#include "lbmshape/surface/loop_triangulation.hpp"
 
 namespace lbmshape {
 namespace {

@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "analysis/surface_comparison.hpp"
-#include "core/error.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/surface_comparison.hpp"
+#include "lbmshape/core/error.hpp"
 #include "support/implicit_fields.hpp"
 #include "support/test_meshes.hpp"
-#include "surface/marching_cubes.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "core/error.hpp"
-#include "surface/band_marching_cubes.hpp"
-#include "surface/surface_pieces.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/surface/band_marching_cubes.hpp"
+#include "lbmshape/surface/surface_pieces.hpp"
 #include "support/band_fields.hpp"
 #include "support/implicit_fields.hpp"
 

@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
 #include "support/implicit_fields.hpp"
 #include "support/test_meshes.hpp"
-#include "surface/marching_cubes.hpp"
-#include "surface/triangle_relaxation.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
+#include "lbmshape/surface/triangle_relaxation.hpp"
 
 namespace lbmshape {
 namespace {

@@ -5,9 +5,9 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
-#include "analysis/mesh_topology.hpp"
-#include "surface/marching_cubes.hpp"
-#include "surface/volume_keeping.hpp"
+#include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/surface/marching_cubes.hpp"
+#include "lbmshape/surface/volume_keeping.hpp"
 #include "support/band_fields.hpp"
 #include "support/fields.hpp"
 

@@ -21,9 +21,11 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <pybind11/eval.h>
 #include <pybind11/numpy.h>
@@ -186,12 +188,20 @@ std::shared_ptr<ComputeDevice>& defaultDevice()
   return device;
 }
 
-Smoothing smoothingNamed(const std::string& name)
+// The value a keyword's `name` chooses among `choices`; anything else is
+// "parameter must be 'a', 'b' or 'c', not 'x'".
+template <class Value>
+Value chosen(const std::string& parameter, const std::string& name,
+             std::initializer_list<std::pair<const char*, Value>> choices)
 {
-  if (name == "isotropic") return Smoothing::Isotropic;
-  if (name == "anisotropic") return Smoothing::Anisotropic;
-  if (name == "preserve-features") return Smoothing::PreserveFeatures;
-  throw UsageError("smoothing must be 'isotropic', 'anisotropic' or 'preserve-features', not '" + name + "'");
+  std::string listed;
+  size_t i = 0;
+  for (const auto& [choice, value] : choices) {
+    if (name == choice) return value;
+    listed += std::string(i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + "'" + choice + "'";
+    ++i;
+  }
+  throw UsageError(parameter + " must be " + listed + ", not '" + name + "'");
 }
 
 py::object denoise(const Vertices& vertices, const py::array& triangles, int res, std::optional<int> steps,
@@ -204,7 +214,10 @@ py::object denoise(const Vertices& vertices, const py::array& triangles, int res
   options.steps = steps;
   options.radius = radius;
   options.gamma = gamma;
-  options.smoothing = smoothingNamed(smoothing);
+  options.smoothing = chosen<Smoothing>("smoothing", smoothing,
+                                        {{"isotropic", Smoothing::Isotropic},
+                                         {"anisotropic", Smoothing::Anisotropic},
+                                         {"preserve-features", Smoothing::PreserveFeatures}});
   options.keepVolume = keepVolume;
   options.twicing = twicing;
   options.relaxRounds = relax;
@@ -222,18 +235,7 @@ py::object denoise(const Vertices& vertices, const py::array& triangles, int res
 // `parameter` ("sdf", "extract") named `name`.
 RunsOn runsOnNamed(const std::string& parameter, const std::string& name)
 {
-  if (name == "auto") return RunsOn::Auto;
-  if (name == "cpu") return RunsOn::Cpu;
-  if (name == "device") return RunsOn::Device;
-  throw UsageError(parameter + " must be 'auto', 'cpu' or 'device', not '" + name + "'");
-}
-
-Alignment alignmentNamed(const std::string& name)
-{
-  if (name == "none") return Alignment::None;
-  if (name == "center") return Alignment::Center;
-  if (name == "fit") return Alignment::Fit;
-  throw UsageError("align must be 'none', 'center' or 'fit', not '" + name + "'");
+  return chosen<RunsOn>(parameter, name, {{"auto", RunsOn::Auto}, {"cpu", RunsOn::Cpu}, {"device", RunsOn::Device}});
 }
 
 // The morph's frames, each handed to `onFrame(index, vertices, triangles)`
@@ -251,7 +253,8 @@ py::object morph(const Vertices& sourceVertices, const py::array& sourceTriangle
   options.steps = steps;
   options.cs = cs;
   options.gamma = gamma;
-  options.align = alignmentNamed(align);
+  options.align = chosen<Alignment>(
+      "align", align, {{"none", Alignment::None}, {"center", Alignment::Center}, {"fit", Alignment::Fit}});
   options.band = band;
   const TriangleMesh source = toMesh(sourceVertices, sourceTriangles, "source_"),
                      target = toMesh(targetVertices, targetTriangles, "target_");
@@ -412,10 +415,9 @@ def iter_morph(*args, **kwargs):
   m.def(
       "set_log_level",
       [](const std::string& level) {
-        if (level == "quiet") return log::setLevel(log::Level::Quiet);
-        if (level == "normal") return log::setLevel(log::Level::Normal);
-        if (level == "verbose") return log::setLevel(log::Level::Verbose);
-        throw UsageError("level must be 'quiet', 'normal' or 'verbose', not '" + level + "'");
+        log::setLevel(chosen<log::Level>(
+            "level", level,
+            {{"quiet", log::Level::Quiet}, {"normal", log::Level::Normal}, {"verbose", log::Level::Verbose}}));
       },
       py::arg("level"),
       "What the calls print on stderr: 'quiet' (warnings alone), 'normal' (the default: progress and what was "

@@ -124,7 +124,8 @@ public:
   // crashed in the warm-up). A call waits for the one before to end; a stop
   // request ends the wait (Interrupted). Calls meant to run at once open a
   // device each. A call within a call on the same thread (a denoise's
-  // preview) shares its turn.
+  // preview) shares its turn. A call checks its options, paths and meshes
+  // before it takes the turn, so a bad one fails at once, busy device or not.
   using Turn = std::unique_lock<std::recursive_timed_mutex>;
   [[nodiscard]] Turn takeTurn() const;
   // While one lives, on a morph's frame writer's thread around its frame

@@ -648,13 +648,13 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
                           const ComputeDevice& device)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   // What readMesh checks of a file, for a mesh that comes from a program:
   // indices in range, finite coordinates, a surface that is not flat.
   TriangleMesh checked = mesh;
   validateInputMesh(checked, name);
+  const ComputeDevice::Turn turn = device.takeTurn();
   StageClock clock([&device] { return device.deviceBusyMs(); });
   const MeshTopology inputTopology = orientTheInput(checked, name);
   DenoiseResult smoothed = smoothMesh(checked, inputTopology, name, o, device, clock);
@@ -668,12 +668,12 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
 DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output, o.compression);
   if (o.colourByCurvature) requireColourFormat(output, output.string());
+  const ComputeDevice::Turn turn = device.takeTurn();
   if (o.preview) checkPreview(*o.preview, device);
   StageClock clock([&device] { return device.deviceBusyMs(); });
 

@@ -569,9 +569,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
 nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
                           const MorphOptions& o, const ComputeDevice& device)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
+  const ComputeDevice::Turn turn = device.takeTurn();
   if (o.preview) checkPreview(*o.preview, device, folder);
   StageClock clock([&device] { return device.deviceBusyMs(); });
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
@@ -583,7 +583,6 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
                            const ComputeDevice& device, const FrameSink& sink)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   MorphOptions o = options;
   o.animation = false;  // about files: the program has every frame
   o.preview.reset();
@@ -592,6 +591,7 @@ nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& targe
   validateInputMesh(checkedSource, "the source mesh");
   validateInputMesh(checkedTarget, "the target mesh");
   if (!sink) throw UsageError("the morph's frame sink is empty: its frames would go nowhere");
+  const ComputeDevice::Turn turn = device.takeTurn();
   StageClock clock([&device] { return device.deviceBusyMs(); });
   const FrameSink guarded = [&](int frame, const TriangleMesh& mesh) {
     const ComputeDevice::FrameSinkOf callsFromTheSink(device);

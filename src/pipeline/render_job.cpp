@@ -209,9 +209,9 @@ std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int per
 nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& png, const RenderOptions& o,
                            const ComputeDevice& device)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   checkRenderOptions(o);
   render::requirePngPath(png, "the picture");
+  const ComputeDevice::Turn turn = device.takeTurn();
   const std::vector<fs::path> files = meshesToRender(paths, o.folderMeshes);
   if (files.size() > size_t(parameter_bounds::maxFolderMeshes))
     throw UsageError("a picture shows at most " + std::to_string(parameter_bounds::maxFolderMeshes) + " meshes; " +
@@ -246,8 +246,8 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
 
 void checkPreview(const fs::path& png, const ComputeDevice& device, const fs::path& createdLater)
 {
-  const ComputeDevice::Turn turn = device.takeTurn();
   render::requirePngPath(png, nameOf(Parameter::Preview));
+  const ComputeDevice::Turn turn = device.takeTurn();
   device.drawingContext().requireDrawing(", or leave out " + nameOf(Parameter::Preview));
   std::error_code ec;
   if (!createdLater.empty() && fs::weakly_canonical(png.parent_path().empty() ? "." : png.parent_path(), ec) ==

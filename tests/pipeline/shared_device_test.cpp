@@ -7,6 +7,7 @@
 #include <future>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -70,6 +71,31 @@ TEST(SharedDevice, ACallWaitingForItsTurnStopsOnRequest)
   }
   interrupt::clearStopRequest();
   EXPECT_NO_THROW(denoiseMesh(testing::icosphere(3), "a sphere", smallDenoise(), device));  // its turn is free
+}
+
+// Options and meshes are checked before the turn is taken: a bad call
+// fails at once, not after the call that holds the device.
+TEST(SharedDevice, ABadCallFailsWithoutWaitingForItsTurn)
+{
+  const ComputeDevice device{"", true};
+  ComputeDevice::Turn held = device.takeTurn();  // another call's
+  DenoiseOptions badGamma = smallDenoise();
+  badGamma.gamma = -1;
+  TriangleMesh badIndex = testing::icosphere(2);
+  badIndex.triangles[0][0] = uint32_t(badIndex.vertexCount());
+  std::future<void> gamma = std::async(std::launch::async, [&] {
+    EXPECT_THROW(denoiseMesh(testing::icosphere(2), "a sphere", badGamma, device), UsageError);
+  });
+  std::future<void> index = std::async(std::launch::async, [&] {
+    EXPECT_THROW(morphMeshes(badIndex, testing::icosphere(2), MorphOptions{}, device, [](int, const TriangleMesh&) {}),
+                 InputError);
+  });
+  // Generous: without the checks first, they wait for as long as `held` is held.
+  std::vector<std::future_status> ended;
+  for (std::future<void>* call : {&gamma, &index}) ended.push_back(call->wait_for(std::chrono::seconds(60)));
+  held.unlock();
+  EXPECT_EQ(ended[0], std::future_status::ready) << "the bad denoise waited for its turn";
+  EXPECT_EQ(ended[1], std::future_status::ready) << "the bad morph waited for its turn";
 }
 
 TEST(SharedDevice, ACallFromAFrameSinkOnTheMorphsOwnDeviceIsAUsageError)

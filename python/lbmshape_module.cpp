@@ -18,6 +18,7 @@
 // unusable), lbmshape.OutputError (an OSError), lbmshape.DeviceError (a
 // RuntimeError), lbmshape.NumericalError (a RuntimeError: a result that is
 // not a number), lbmshape.Interrupted, all from lbmshape.Error.
+#include <stop_token>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -207,9 +208,10 @@ Value chosen(const std::string& parameter, const std::string& name,
 py::object denoise(const Vertices& vertices, const py::array& triangles, int res, std::optional<int> steps,
                    std::optional<double> radius, double gamma, const std::string& smoothing, bool keepVolume,
                    std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report,
-                   int relax)
+                   int relax, const std::optional<std::stop_source>& stop)
 {
   DenoiseOptions options;
+  if (stop) options.stop = stop->get_token();
   options.grid.resolution = res;
   options.steps = steps;
   options.radius = radius;
@@ -245,9 +247,10 @@ RunsOn runsOnNamed(const std::string& parameter, const std::string& name)
 py::object morph(const Vertices& sourceVertices, const py::array& sourceTriangles, const Vertices& targetVertices,
                  const py::array& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
                  double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
-                 py::object onFrame, bool report)
+                 py::object onFrame, bool report, const std::optional<std::stop_source>& stop)
 {
   MorphOptions options;
+  if (stop) options.stop = stop->get_token();
   options.frames = frames;
   options.grid.resolution = res;
   options.steps = steps;
@@ -342,21 +345,36 @@ PYBIND11_MODULE(lbmshape, m)
            "(lbmshape --extract)")
       .def_property_readonly("name", &ComputeDevice::name);
 
+  // One call's own stop (C++: the options' std::stop_token), where
+  // request_stop() stops every call under way.
+  py::class_<std::stop_source>(m, "Stop",
+                               "Pass as stop= to a call; request() from any thread stops that call alone, at its "
+                               "next check, with lbmshape.Interrupted. One Stop may serve several calls; once "
+                               "requested it stays so: make a new one for the next call.")
+      .def(py::init<>())
+      .def(
+          "request", [](std::stop_source& s) { s.request_stop(); }, "Ask the calls given this Stop to stop.")
+      .def_property_readonly(
+          "requested", [](const std::stop_source& s) { return s.stop_requested(); }, "Whether request() was called.");
+
   m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
         py::arg("steps") = py::none(), py::arg("radius") = py::none(), py::arg("gamma") = 0.2,
         py::arg("smoothing") = "preserve-features", py::arg("keep_volume") = true, py::arg("twicing") = py::none(),
         py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
         // Last: a call that passes the ones before it by position keeps its meaning.
-        py::arg("relax") = defaultRelaxationRounds,
+        py::arg("relax") = defaultRelaxationRounds, py::arg("stop") = py::none(),
         "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
-        "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict.");
+        "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict. stop: an "
+        "lbmshape.Stop whose request() stops this call alone (lbmshape.Interrupted).");
   m.def("morph", &morph, py::arg("source_vertices"), py::arg("source_triangles"), py::arg("target_vertices"),
         py::arg("target_triangles"), py::arg("frames") = 48, py::arg("res") = 128, py::arg("steps") = py::none(),
         py::arg("cs") = 0.1, py::arg("gamma") = 0.05, py::arg("align") = "fit", py::arg("band") = true,
         py::arg("device") = nullptr, py::arg("on_frame") = py::none(), py::arg("report") = false,
+        py::arg("stop") = py::none(),
         "Morph one closed mesh into another, as `lbmshape morph` with the same defaults: a list of `frames` "
         "(vertices, triangles) pairs, or each passed to on_frame(index, vertices, triangles) as it is made (then "
-        "None); with report=True also the figures `morph --json` prints, as a dict.");
+        "None); with report=True also the figures `morph --json` prints, as a dict. stop: an lbmshape.Stop whose "
+        "request() stops this call alone (lbmshape.Interrupted).");
   // iter_morph: morph's frames as a generator, in Python on top of morph's
   // on_frame: the morph runs on a thread of its own, two frames ahead at
   // most; leaving the loop early stops it.
@@ -371,6 +389,9 @@ def iter_morph(*args, **kwargs):
     if kwargs.get("report"):
         raise TypeError("iter_morph() yields frames, not a report: use lbmshape.morph(..., report=True) instead")
     frames, stop, done, failure = queue.Queue(maxsize=2), threading.Event(), object(), []
+    # Leaving the loop stops the morph at its next check, not at its next
+    # frame; a Stop the caller gave stops it too.
+    own_stop, callers_stop = Stop(), kwargs.pop("stop", None)
 
     class _Left(Exception):
         pass
@@ -386,7 +407,7 @@ def iter_morph(*args, **kwargs):
 
     def run():
         try:
-            morph(*args, on_frame=on_frame, **kwargs)
+            morph(*args, on_frame=on_frame, stop=own_stop, **kwargs)
         except BaseException as e:
             failure.append(e)
         finally:
@@ -396,12 +417,18 @@ def iter_morph(*args, **kwargs):
     worker.start()
     try:
         while True:
-            item = frames.get()
+            if callers_stop is not None and callers_stop.requested:
+                own_stop.request()
+            try:
+                item = frames.get(timeout=0.05)
+            except queue.Empty:
+                continue
             if item is done:
                 break
             yield item
     finally:
         stop.set()
+        own_stop.request()
         while worker.is_alive():
             try:
                 frames.get(timeout=0.05)

@@ -22,7 +22,9 @@
 // lbmshape::interrupt::requestStop(); the call throws lbmshape::Interrupted
 // at its next check, within a fraction of a second, having written nothing
 // partial. The request stands for every call, on any thread, until
-// lbmshape::interrupt::clearStopRequest() (core/interrupt.hpp).
+// lbmshape::interrupt::clearStopRequest() (core/interrupt.hpp). To stop one
+// call alone, give it a std::stop_token in its options (DenoiseOptions::stop,
+// MorphOptions::stop, RenderOptions::stop) and request_stop() its source.
 //
 // Threads: calls that share a ComputeDevice take turns, each holding it from
 // start to end (one waits for the other; a stop request ends the wait).

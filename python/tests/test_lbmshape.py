@@ -329,6 +329,44 @@ class Morph(unittest.TestCase):
         frames = lbmshape.morph(v, f, vt, ft, frames=3, res=24, steps=20, align="none")
         self.assertEqual(len(frames), 3)
 
+    def test_a_stop_of_its_own_stops_one_call_and_not_the_other(self):
+        # Two morphs on threads of their own; the first's Stop is requested
+        # from its frame 1: it alone stops, the other makes every frame.
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        first, results = lbmshape.Stop(), {}
+
+        def run(name, stop, on_frame):
+            try:
+                lbmshape.morph(v, f, vt, ft, frames=12, res=24, steps=240, align="none", on_frame=on_frame,
+                               stop=stop)
+                results[name] = "done"
+            except lbmshape.Interrupted as e:
+                results[name] = str(e)
+
+        seen = {"first": [], "second": []}
+
+        def first_frame(k, vk, fk):
+            seen["first"].append(k)
+            if k == 1:
+                first.request()
+
+        threads = [threading.Thread(target=run, args=("first", first, first_frame)),
+                   threading.Thread(target=run, args=("second", lbmshape.Stop(),
+                                                      lambda k, vk, fk: seen["second"].append(k)))]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertRegex(results["first"], "^stopped: ")
+        self.assertLess(len(seen["first"]), 12)
+        self.assertEqual(results["second"], "done")
+        self.assertEqual(seen["second"], list(range(12)))
+        self.assertTrue(first.requested)
+        with self.assertRaises(lbmshape.Interrupted):  # a requested Stop stops a later call at once
+            lbmshape.denoise(v, f, res=24, stop=first)
+        self.assertGreater(len(lbmshape.denoise(v, f, res=24, stop=lbmshape.Stop())[1]), 0)
+
 
 class IterMorph(unittest.TestCase):
     def test_the_frames_come_one_by_one_in_order(self):
@@ -345,6 +383,18 @@ class IterMorph(unittest.TestCase):
                 break
         v2, f2 = lbmshape.denoise(v, f, res=24)
         self.assertGreater(len(f2), 0)
+
+    def test_a_stop_given_to_the_loop_stops_the_morph(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        stop, seen = lbmshape.Stop(), []
+        with self.assertRaisesRegex(lbmshape.Interrupted, "^stopped: "):
+            for k, vk, fk in lbmshape.iter_morph(v, f, vt, ft, frames=40, res=24, steps=400, align="none",
+                                                 stop=stop):
+                seen.append(k)
+                if k == 1:
+                    stop.request()
+        self.assertLess(len(seen), 40)
 
     def test_a_call_in_the_loop_runs_beside_the_morph(self):
         # The loop's thread has a default device of its own, so its call

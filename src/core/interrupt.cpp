@@ -70,6 +70,24 @@ std::string stoppedBy(int signal)
 {
   throw Interrupted(stoppedBy(signal) + whatWasDone, signal == byTheProgram ? 0 : signal);
 }
+
+// The tokens of the calls under way on this thread (CallStop), innermost
+// last.
+thread_local std::vector<std::stop_token> callTokens;
+
+bool anyStopped(const std::vector<std::stop_token>& tokens)
+{
+  for (const std::stop_token& token : tokens)
+    if (token.stop_requested()) return true;
+  return false;
+}
+
+// What stops the calls on this thread: a signal's number, byTheProgram, or 0.
+int stopOfThisThread()
+{
+  if (const int signal = received) return signal;
+  return anyStopped(callTokens) ? byTheProgram : 0;
+}
 }  // namespace
 
 void installHandler()
@@ -87,18 +105,37 @@ void installHandler()
   }
 }
 
-bool requested() { return received != 0; }
+bool requested() { return stopOfThisThread() != 0; }
 int signalReceived() { return received == byTheProgram ? 0 : int(received); }
 
 void check(const std::string& whatWasDone)
 {
-  if (const int signal = received) stop(signal, whatWasDone);
+  if (const int signal = stopOfThisThread()) stop(signal, whatWasDone);
 }
 
 void check(const std::function<std::string()>& whatWasDone)
 {
-  if (const int signal = received) stop(signal, whatWasDone());
+  if (const int signal = stopOfThisThread()) stop(signal, whatWasDone());
 }
+
+CallStop::CallStop(std::stop_token token)
+{
+  if (!token.stop_possible()) return;
+  callTokens.push_back(std::move(token));
+  added_ = 1;
+}
+
+CallStop::CallStop(const Watch& call)
+{
+  callTokens.insert(callTokens.end(), call.tokens_.begin(), call.tokens_.end());
+  added_ = call.tokens_.size();
+}
+
+CallStop::~CallStop() { callTokens.resize(callTokens.size() - added_); }
+
+Watch::Watch() : tokens_(callTokens) {}
+
+bool Watch::requested() const { return received != 0 || anyStopped(tokens_); }
 
 void requestStop()
 {

@@ -10,11 +10,15 @@
 // A program that links the library can ask for the same stop itself
 // (requestStop: a Cancel button), and clear it before its next call; a host
 // with signal handlers of its own (Python) lends SIGINT to the flag only
-// while a call runs (SigintStopsCalls).
+// while a call runs (SigintStopsCalls). One call among several (a job of a
+// batch that runs on threads of its own) is stopped alone through the
+// std::stop_token it was given (CallStop).
 #pragma once
 
 #include <functional>
+#include <stop_token>
 #include <string>
+#include <vector>
 
 #include <signal.h>  // struct sigaction
 
@@ -22,11 +26,14 @@ namespace lbmshape::interrupt {
 
 // The command line's handlers, for the life of the process.
 void installHandler();
+// Whether the process, or the call under way on this thread (CallStop), was
+// asked to stop. On a thread the call lends work to, ask a Watch made on the
+// call's thread instead.
 bool requested();
 // The first signal received (SIGINT, SIGTERM or SIGHUP), 0 before any or
 // where the program asked (requestStop).
 int signalReceived();
-// Throws Interrupted with `whatWasDone` if a stop was requested.
+// Throws Interrupted with `whatWasDone` if a stop was requested (requested()).
 void check(const std::string& whatWasDone);
 // The same, asking whatWasDone() only when stopping: what is complete may
 // only be known once the work under way has been wound down.
@@ -40,6 +47,38 @@ void requestStop();
 // runs. The command line never clears: a process that was asked to stop
 // ends.
 void clearStopRequest();
+
+// For the life of this object, a stop requested through `token` stops the
+// call on this thread as requestStop would, and that call alone: its checks
+// throw Interrupted ("stopped: ...", signal 0). Made at the start of a
+// library call given a token; a token that cannot be stopped (a default
+// one) changes nothing. Nested calls each add their own.
+class CallStop {
+public:
+  explicit CallStop(std::stop_token token);
+  // On a thread that a call lends work to: the call's tokens, as `Watch`
+  // took them on the call's thread.
+  explicit CallStop(const class Watch& call);
+  ~CallStop();
+  CallStop(const CallStop&) = delete;
+  CallStop& operator=(const CallStop&) = delete;
+
+private:
+  size_t added_ = 0;
+};
+
+// requested() for the threads of a parallel region (or a std::thread) that
+// does a call's work: the call's tokens are its thread's (CallStop), which
+// those threads do not see. Made on the call's thread before the region.
+class Watch {
+public:
+  Watch();
+  bool requested() const;
+
+private:
+  friend class CallStop;
+  std::vector<std::stop_token> tokens_;
+};
 
 // For a host with its own SIGINT handler (Python's raises KeyboardInterrupt,
 // but only once the call returns to it): for the life of this object SIGINT

@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
@@ -73,8 +74,10 @@ void runSideBySide(const std::function<void()>& here, const std::function<void()
   const int threads = omp_get_max_threads();
   const int thereThreads = std::max(1, threads / 2), hereThreads = std::max(1, threads - thereThreads);
   std::future<void> other;
+  const interrupt::Watch callsStop;  // for `there`'s thread, which is not the call's
   try {
     other = std::async(std::launch::async, [&] {
+      const interrupt::CallStop carried(callsStop);
       const RegionThreads share(thereThreads);
       prepareParallelRegions();  // this new thread's pool, where a failure can be seen
       there();

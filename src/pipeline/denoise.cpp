@@ -9,6 +9,7 @@
 #include "lbmshape/analysis/mesh_topology.hpp"
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/core/parameter_names.hpp"
 #include "lbmshape/core/number_text.hpp"
 #include "lbmshape/core/parameter_bounds.hpp"
@@ -648,6 +649,7 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
                           const ComputeDevice& device)
 {
+  const interrupt::CallStop ownStop(o.stop);
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   // What readMesh checks of a file, for a mesh that comes from a program:
@@ -668,6 +670,7 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
 DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
+  const interrupt::CallStop ownStop(o.stop);
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
   checkNotTheInput(output, input, o.replaceInput);

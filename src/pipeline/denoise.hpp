@@ -2,6 +2,7 @@
 // smoothing (section 5.1 of the paper), marching cubes, mesh out.
 #pragma once
 
+#include <stop_token>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -73,6 +74,10 @@ struct DenoiseOptions {
   bool colourByCurvature = false;
   // The output quantized and meshopt-encoded (--compress; .glb only).
   GltfCompression compression = GltfCompression::None;
+  // This call's own stop (a Cancel button for one job among several): a
+  // request through its std::stop_source stops this call alone, as
+  // interrupt::requestStop stops every call (Interrupted, "stopped: ...").
+  std::stop_token stop;
   // A picture of the input and the output side by side (--preview).
   std::optional<std::filesystem::path> preview;
 };

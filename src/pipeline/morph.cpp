@@ -569,6 +569,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
 nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
                           const MorphOptions& o, const ComputeDevice& device)
 {
+  const interrupt::CallStop ownStop(o.stop);
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
   const ComputeDevice::Turn turn = device.takeTurn();
@@ -583,6 +584,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
 nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
                            const ComputeDevice& device, const FrameSink& sink)
 {
+  const interrupt::CallStop ownStop(options.stop);
   MorphOptions o = options;
   o.animation = false;  // about files: the program has every frame
   o.preview.reset();

@@ -4,6 +4,7 @@
 // distance field. Frames are written while the lattice goes on.
 #pragma once
 
+#include <stop_token>
 #include <filesystem>
 #include <optional>
 
@@ -62,6 +63,10 @@ struct MorphOptions {
   // Lattice steps between two Ctrl-C checks; by default batches of about a
   // quarter of a second. The frames do not depend on it (for tests).
   std::optional<int> stepsPerBatch;
+  // This call's own stop (a Cancel button for one job among several): a
+  // request through its std::stop_source stops this call alone, as
+  // interrupt::requestStop stops every call (Interrupted, "stopped: ...").
+  std::stop_token stop;
 };
 
 void checkMorphOptions(const MorphOptions& options);

@@ -5,6 +5,7 @@
 
 #include "lbmshape/core/atomic_file.hpp"
 #include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/core/parameter_names.hpp"
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/parameter_bounds.hpp"
@@ -141,6 +142,7 @@ void checkRenderOptions(const RenderOptions& o)
 render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptions& o, const ComputeDevice& device,
                          nlohmann::json* figures)
 {
+  const interrupt::CallStop ownStop(o.stop);
   const ComputeDevice::Turn turn = device.takeTurn();
   render::Picture picture;
   picture.view = o.view;
@@ -209,6 +211,7 @@ std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int per
 nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& png, const RenderOptions& o,
                            const ComputeDevice& device)
 {
+  const interrupt::CallStop ownStop(o.stop);
   checkRenderOptions(o);
   render::requirePngPath(png, "the picture");
   const ComputeDevice::Turn turn = device.takeTurn();

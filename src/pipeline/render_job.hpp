@@ -4,6 +4,7 @@
 // opened.
 #pragma once
 
+#include <stop_token>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -39,6 +40,10 @@ struct RenderOptions {
   bool labels = false;
   int columns = 0;       // of the grid of meshes; 0: by their number
   int folderMeshes = 8;  // a folder shows this many of its meshes, evenly chosen, first and last included
+  // This call's own stop (a Cancel button for one job among several): a
+  // request through its std::stop_source stops this call alone, as
+  // interrupt::requestStop stops every call (Interrupted, "stopped: ...").
+  std::stop_token stop;
 };
 void checkRenderOptions(const RenderOptions& options);
 

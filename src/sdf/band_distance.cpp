@@ -32,9 +32,10 @@ std::vector<NearBlock> blocksNearSurface(const Cells& cells, const TriangleBvh& 
 {
   const double band = bandVoxels * frame.voxel;
   std::vector<uint32_t> found(cells.blockCount(), TriangleBvh::kNoTriangle);
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 16)
   for (size_t b = 0; b < cells.blockCount(); b += stride) {
-    if (b % 256 == 0 && interrupt::requested()) continue;  // the caller stops after the loop
+    if (b % 256 == 0 && stop.requested()) continue;  // the caller stops after the loop
     glm::ivec3 lo, hi;
     cells.blockRange(b, lo, hi);
     const glm::dvec3 first(lo), last(hi - 1);
@@ -57,9 +58,10 @@ size_t exactBandDistancesIn(const Cells& cells, const std::vector<NearBlock>& ne
   if (progress) progress->beginPart("exact band", double(near.size()), progressWeight);
   const double band = bandVoxels * frame.voxel;
   size_t written = 0;
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : written)
   for (size_t k = 0; k < near.size(); ++k) {
-    if (interrupt::requested()) continue;  // the caller stops after the loop
+    if (stop.requested()) continue;  // the caller stops after the loop
     if (progress) progress->advance();
     uint32_t hint = near[k].triangle;
     cells.forEachCellOf(near[k].block, [&](size_t i, const glm::ivec3& c) {
@@ -159,9 +161,10 @@ size_t exactBandByTriangles(const TriangleBvh& bvh, const GridFrame& frame, cons
   std::vector<uint64_t> best(cells.count(), ~uint64_t(0));
   const double band = bandVoxels * frame.voxel, band2 = band * band;
   const double halfDiagonal = 0.5 * (brickEdge - 1) * std::sqrt(3.0) * frame.voxel;
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 256)
   for (size_t t = 0; t < count; ++t) {
-    if (interrupt::requested()) continue;  // the caller stops after the loop
+    if (stop.requested()) continue;  // the caller stops after the loop
     if (progress && t % 256 == 0) progress->advance(256);
     const uint32_t triangle = uint32_t(t);
     const TriangleReach reach(bvh, frame, triangle, bandVoxels);

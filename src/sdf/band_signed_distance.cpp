@@ -33,9 +33,10 @@ std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& fr
   };
   const double brickReach = reachFrom(brickEdge), quarterReach = reachFrom(brickEdge / 2);
   std::vector<uint8_t> near(grid.cells(), 0);
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 64)
   for (size_t b = 0; b < grid.cells(); ++b) {
-    if (b % 256 == 0 && interrupt::requested()) continue;  // the caller stops after the loop
+    if (b % 256 == 0 && stop.requested()) continue;  // the caller stops after the loop
     const glm::ivec3 brick(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
     const glm::dvec3 first = glm::dvec3(brickEdge * brick);
     if (bvh.closest(frame.toWorld(first + 0.5 * (brickEdge - 1)), brickReach).triangle == TriangleBvh::kNoTriangle)

@@ -44,13 +44,14 @@ std::vector<uint32_t> clearRegions(const Cells& cells, const float* distance, fl
   // every thread's writes to the roots of the one region that holds nearly
   // every cell of a morph's band.
   std::atomic<bool> interrupted = false;
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel
   {
     const size_t threads = size_t(omp_get_num_threads()), thread = size_t(omp_get_thread_num());
     const size_t begin = count * thread / threads, end = count * (thread + 1) / threads;
     std::vector<std::pair<uint32_t, uint32_t>> crossing;  // joined after the barrier
     for (size_t i = begin; i < end; ++i) {
-      if ((i - begin) % 65536 == 0 && interrupt::requested()) interrupted = true;
+      if ((i - begin) % 65536 == 0 && stop.requested()) interrupted = true;
       if (interrupted.load(std::memory_order_relaxed)) break;
       // Cells beyond the grid (the band's bricks overhang it) stay alone,
       // as the flood never reaches them.

@@ -119,12 +119,13 @@ size_t propagateIn(const Cells& space, const TriangleBvh& bvh, const GridFrame& 
       if (lower(listed[j], bucket)) out.push_back({uint32_t(j), bucket});
     });
   };
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel
   {
     std::vector<Push> local;
 #pragma omp for schedule(dynamic, 1024) nowait
     for (size_t i = 0; i < cells; ++i) {
-      if (state[i] != kSettled || (i % 4096 == 0 && interrupt::requested())) continue;
+      if (state[i] != kSettled || (i % 4096 == 0 && stop.requested())) continue;
       const glm::ivec3 c = space.coords(i);
       bool open = false;
       space.forEachNeighbour(i, c, [&](size_t j, const glm::ivec3&) { open = open || state[j] == kPending; });

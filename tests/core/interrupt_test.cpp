@@ -3,11 +3,15 @@
 #include <signal.h>
 
 #include <atomic>
+#include <future>
+#include <stop_token>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/core/worker_threads.hpp"
 
 namespace lbmshape {
 namespace {
@@ -53,6 +57,43 @@ TEST(StopRequest, TheProgramsRequestStopsTheNextCheckUntilCleared)
   EXPECT_THROW(interrupt::check("again"), Interrupted);  // it stands
   interrupt::clearStopRequest();
   EXPECT_FALSE(interrupt::requested());
+  EXPECT_NO_THROW(interrupt::check("nothing"));
+}
+
+// A call's own token stops that call: its thread's checks, and the threads
+// it lends work to through a Watch, but no other thread's.
+TEST(CallStop, ACallsTokenStopsThatCallAndTheThreadsItLendsWorkTo)
+{
+  interrupt::clearStopRequest();
+  std::stop_source cancel;
+  {
+    const interrupt::CallStop call(cancel.get_token());
+    EXPECT_FALSE(interrupt::requested());
+    cancel.request_stop();
+    EXPECT_TRUE(interrupt::requested());
+    try {
+      interrupt::check("nothing was written");
+      ADD_FAILURE() << "no stop";
+    } catch (const Interrupted& e) {
+      EXPECT_EQ(std::string(e.what()), "stopped: nothing was written");
+      EXPECT_EQ(e.signal(), 0);
+    }
+    const interrupt::Watch watch;
+    EXPECT_TRUE(std::async(std::launch::async, [&] { return watch.requested(); }).get());
+    EXPECT_FALSE(std::async(std::launch::async, [] { return interrupt::requested(); }).get()) << "another call's";
+    EXPECT_TRUE(std::async(std::launch::async, [&] {
+                  const interrupt::CallStop carried(watch);
+                  return interrupt::requested();
+                }).get());
+    bool sawItThere = false;
+    runSideBySide([] {}, [&] { sawItThere = interrupt::requested(); });
+    EXPECT_TRUE(sawItThere) << "runSideBySide's second thread does the call's work";
+    {
+      const interrupt::CallStop nested{std::stop_token{}};  // a call within, given no token of its own
+      EXPECT_TRUE(interrupt::requested());
+    }
+  }
+  EXPECT_FALSE(interrupt::requested()) << "the call ended";
   EXPECT_NO_THROW(interrupt::check("nothing"));
 }
 

@@ -5,6 +5,7 @@
 // for ever, is told so.
 #include <chrono>
 #include <future>
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
@@ -96,6 +97,37 @@ TEST(SharedDevice, ABadCallFailsWithoutWaitingForItsTurn)
   held.unlock();
   EXPECT_EQ(ended[0], std::future_status::ready) << "the bad denoise waited for its turn";
   EXPECT_EQ(ended[1], std::future_status::ready) << "the bad morph waited for its turn";
+}
+
+// A call's own stop (the options' token) stops it alone: a morph on another
+// thread, on another device, makes all its frames meanwhile.
+TEST(SharedDevice, AStopOfItsOwnStopsThatCallAlone)
+{
+  interrupt::clearStopRequest();
+  const ComputeDevice one{"", true}, other{"", true};
+  MorphOptions morph;
+  morph.grid.resolution = 24;
+  morph.align = Alignment::None;
+  morph.frames = 6;
+  morph.steps = 60;
+  std::stop_source cancel;
+  DenoiseOptions stopped = smallDenoise();
+  stopped.stop = cancel.get_token();
+  int frames = 0;
+  std::future<void> running = std::async(std::launch::async, [&] {
+    morphMeshes(testing::icosphere(3), testing::scaled(testing::icosphere(3), 0.7), morph, other,
+                [&](int, const TriangleMesh&) { ++frames; });
+  });
+  cancel.request_stop();
+  try {
+    denoiseMesh(testing::icosphere(3), "a sphere", stopped, one);
+    ADD_FAILURE() << "the stopped call ran";
+  } catch (const Interrupted& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("stopped: ", 0), 0u) << e.what();
+  }
+  EXPECT_NO_THROW(running.get());
+  EXPECT_EQ(frames, morph.frames);
+  EXPECT_NO_THROW(denoiseMesh(testing::icosphere(3), "a sphere", smallDenoise(), one));  // the stop was that call's
 }
 
 TEST(SharedDevice, ACallFromAFrameSinkOnTheMorphsOwnDeviceIsAUsageError)

@@ -60,6 +60,7 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
   ComparisonOptions options;
   options.minSamples = args.samples;
   options.seed = args.seed;
+  options.stopsOnRequest = true;
   const SurfaceComparison c = compareSurfaces(a, b, options);
   common.report({{"command", "compare"},
                  {"a", topologyJson(args.a, ta)},

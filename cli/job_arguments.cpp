@@ -54,6 +54,8 @@ std::string optionText(const std::string& key, const nlohmann::json& value, cons
     // Empty, "--key=" would make the option take the next argument as its value.
     if (value.get<std::string>().empty())
       throw UsageError("option " + quoted + " is empty: give a value, or null (or leave it out) for the default");
+    if (value.get<std::string>().find('\0') != std::string::npos)
+      throw UsageError("option " + quoted + " holds a NUL character (\\u0000), which no argument may hold");
     return value.get<std::string>();
   }
   throw UsageError("option " + quoted + " must be a string, not " + value.dump());
@@ -84,6 +86,10 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
     if (!job.contains(name) || !job[name].is_string())
       throw UsageError(command + " job needs \"" + name + "\" (a path)");
     if (job[name].get<std::string>().empty()) throw UsageError(command + " job's \"" + name + "\" is empty");
+    // A file name cannot hold one: the system would end the name there and
+    // write another file than the one named.
+    if (job[name].get<std::string>().find('\0') != std::string::npos)
+      throw UsageError(command + " job's \"" + name + "\" holds a NUL character (\\u0000), which no path may hold");
     args.push_back(jobPath(base, job[name].get<std::string>()));
   }
   for (const auto& [key, value] : job.items()) {

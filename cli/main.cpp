@@ -45,7 +45,8 @@ std::string usageMessage(const CLI::App& app, const CLI::ParseError& e)
           commands += (commands.empty() ? "" : ", ") + command->get_name();
         return "unknown command '" + word + "'; the commands are " + commands + " (see lbmshape --help)";
       }
-  return std::string(e.what()) + " (see lbmshape --help)";
+  const auto given = app.get_subcommands();
+  return std::string(e.what()) + " (see lbmshape " + (given.empty() ? "" : given.front()->get_name() + " ") + "--help)";
 }
 
 int fail(lbmshape::ExitCode code, const std::string& message)
@@ -77,7 +78,9 @@ int main(int argc, char** argv)
   using namespace lbmshape;
   restartWithProcessSettings(argv);                 // before anything else (core/process_settings.hpp)
   useParameterNames(ParameterNaming::CommandLine);  // messages name the flags
-  CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan");
+  // Named, so that help and the man page say "lbmshape", not the path it
+  // was started by.
+  CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan", "lbmshape");
   app.set_version_flag("--version", LBMSHAPE_VERSION);
   app.require_subcommand(1);
   app.fallthrough();  // common options may follow the command name

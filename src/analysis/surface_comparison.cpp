@@ -12,6 +12,7 @@
 
 #include "lbmshape/analysis/surface_sampling.hpp"
 #include "lbmshape/core/error.hpp"
+#include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/sdf/triangle_bvh.hpp"
 
 namespace lbmshape {
@@ -50,8 +51,10 @@ DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target,
   const std::vector<glm::dvec3> sourceNormals = faceNormals(source), targetNormals = faceNormals(target);
   std::vector<double> distance(queries.size()), angle(queries.size(), -1.0);
   const int64_t count = int64_t(queries.size());
+  const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 1)
   for (int64_t block = 0; block < (count + blockSize - 1) / blockSize; ++block) {
+    if (options.stopsOnRequest && stop.requested()) continue;  // checked after the loop
     double previous = -1.0;
     glm::dvec3 previousPoint(0.0);
     for (int64_t i = block * blockSize; i < std::min(count, (block + 1) * blockSize); ++i) {
@@ -69,6 +72,7 @@ DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target,
     }
   }
 
+  if (options.stopsOnRequest) interrupt::check("nothing was written");
   DirectedDistance result;
   result.samples = queries.size();
   double sum = 0.0, squares = 0.0, angles = 0.0;

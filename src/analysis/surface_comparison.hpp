@@ -21,6 +21,10 @@ struct ComparisonOptions {
   double samplesPerTriangle = 10.0;
   bool includeVertices = true;
   uint64_t seed = 1;
+  // A stop request ends the measuring with Interrupted (the compare
+  // command, whose measuring is the whole job). Off where the comparison is
+  // a frame's figures, whose call stops at its own next check.
+  bool stopsOnRequest = false;
 };
 
 // From the samples of one surface (the source) to the other (the target).

@@ -266,13 +266,20 @@ int GltfBuilder::addNode(int mesh, const std::string& name, std::vector<double> 
   if (placed == placements_.end()) {
     node.mesh = mesh;
   } else {
-    tinygltf::Node placement;
-    placement.mesh = mesh;
+    // The translation on the node itself, so that a frame an animation
+    // hides (scale 0) shrinks to its own place, not to the origin, where
+    // a viewer's "frame all" would take it as part of the scene.
     const auto& [translation, step] = placed->second;
-    placement.translation = {translation.x, translation.y, translation.z};
-    if (step != 1.0) placement.scale = {step, step, step};
-    model_.nodes.push_back(placement);
-    node.children = {int(model_.nodes.size() - 1)};
+    node.translation = {translation.x, translation.y, translation.z};
+    if (step == 1.0) {
+      node.mesh = mesh;
+    } else {
+      tinygltf::Node quantized;  // the compressed positions' step, under the node's own scale
+      quantized.mesh = mesh;
+      quantized.scale = {step, step, step};
+      model_.nodes.push_back(quantized);
+      node.children = {int(model_.nodes.size() - 1)};
+    }
   }
   model_.nodes.push_back(node);
   const int index = int(model_.nodes.size() - 1);

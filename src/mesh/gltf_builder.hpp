@@ -32,11 +32,12 @@ public:
   // accessors), so nothing is added and the node stays without a mesh.
   int addMesh(const TriangleMesh& mesh, const std::string& name);
   // A node showing `mesh` (none if -1), made a root of the (single) scene;
-  // returns its index. A compressed mesh hangs from a child node whose
-  // translation and scale undo the quantization, and a mesh stored about its
-  // centre (single_precision.hpp) from one whose translation is that centre,
-  // so `scale` (and an animation of the node's scale) means the same as for
-  // a mesh stored as it is.
+  // returns its index. A mesh stored about its centre (single_precision.hpp)
+  // or quantized gets that centre (the quantization's offset) as the node's
+  // translation, and a quantized one hangs from a child node whose scale
+  // undoes the quantization's step. `scale` (and an animation of it) is
+  // then about that centre: 1 shows the mesh where it is, 0 shrinks it to a
+  // point within it rather than to the origin.
   int addNode(int mesh, const std::string& name, std::vector<double> scale = {});
   // A float accessor over `values` (count x components of `type`), in its
   // own buffer view; min/max are filled in when `withBounds`.

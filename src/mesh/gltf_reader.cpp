@@ -30,6 +30,20 @@ namespace {
 const std::set<std::string> unsupportedRequiredExtensions = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                                              "KHR_meshopt_compression", "EXT_mesh_gpu_instancing"};
 
+// Required extensions that change nothing lbmshape reads (materials,
+// textures, lights, metadata, animations beside the scene it reads) or that
+// it reads (quantized positions). Any other required extension is refused:
+// the glTF specification has a reader refuse what a file requires and it
+// does not know, which may change the geometry.
+bool understoodRequiredExtension(const std::string& extension)
+{
+  static const std::set<std::string> understood = {
+      "KHR_mesh_quantization",  "KHR_texture_transform", "KHR_texture_basisu",
+      "EXT_texture_webp",       "EXT_texture_avif",      "KHR_lights_punctual",
+      "KHR_materials_variants", "KHR_xmp_json_ld",       "KHR_animation_pointer"};
+  return understood.count(extension) > 0 || extension.starts_with("KHR_materials_");
+}
+
 // The geometry a scene may instance, in bytes of TriangleMesh: a file may
 // place one mesh many times, but never so often that a small file fills
 // the machine's memory.
@@ -252,9 +266,12 @@ TriangleMesh readGltf(const MeshSource& given, MeshFormat format)
   const std::vector<GltfBufferEntry> buffers = checkGltfJson(jsonOf(source, format), format == MeshFormat::Glb, source);
   GltfFileAccess files(source, buffers);
   const tinygltf::Model model = load(source, format, files);
-  for (const auto& extension : model.extensionsRequired)
+  for (const auto& extension : model.extensionsRequired) {
     if (unsupportedRequiredExtensions.count(extension))
       source.refuse("it requires " + extension + ", which lbmshape cannot decode");
+    if (!understoodRequiredExtension(extension))
+      source.refuse("it requires the extension '" + extension + "', which lbmshape does not know");
+  }
 
   // What the file holds bounds what it may make: for a compressed file, its
   // own size, not what it decoded to.

@@ -1,8 +1,12 @@
 #include "lbmshape/mesh/mesh_validation.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "lbmshape/core/error.hpp"
@@ -64,6 +68,57 @@ void refuseStrayVertices(const TriangleMesh& mesh, const std::string& prefix)
   throw InputError(s.str());
 }
 
+// Triangles with the same corners, in the same turn, as an earlier one: a
+// copy adds nothing to the surface, its distances or its sign (the winding
+// number counts it twice inside and out), but a hierarchy cannot separate
+// coincident triangles, so each search near them visits every copy: a
+// cube's face repeated a million times (8 MB of OBJ) kept the distances
+// busy for minutes. Compared by position, so copies in a triangle soup
+// (STL) are found too; a face and its reverse are not copies.
+size_t dropRepeatedTriangles(TriangleMesh& mesh)
+{
+  // Corners from the one that sorts first, so the three turns of one
+  // triangle compare alike and its mirror does not.
+  const auto corners = [&](const glm::uvec3& t) {
+    std::array<glm::dvec3, 3> c{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+    const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    const int first = less(c[1], c[0]) ? (less(c[2], c[1]) ? 2 : 1) : (less(c[2], c[0]) ? 2 : 0);
+    std::rotate(c.begin(), c.begin() + first, c.end());
+    return c;
+  };
+  const auto hashOf = [](const std::array<glm::dvec3, 3>& c) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const glm::dvec3& p : c)
+      for (int k = 0; k < 3; ++k) h = (h ^ std::bit_cast<uint64_t>(p[k] + 0.0)) * 0x100000001b3ull;  // -0 as 0
+    return h;
+  };
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) keyed[t] = {hashOf(corners(mesh.triangles[t])), uint32_t(t)};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint8_t> repeated(mesh.triangles.size(), 0);
+  for (size_t begin = 0; begin < keyed.size();) {
+    size_t end = begin + 1;
+    while (end < keyed.size() && keyed[end].first == keyed[begin].first) ++end;
+    // Within a run of equal hashes (in triangle order), each triangle is a
+    // copy when an earlier one that is not has its corners.
+    for (size_t i = begin + 1; i < end; ++i)
+      for (size_t j = begin; j < i && !repeated[keyed[i].second]; ++j)
+        if (!repeated[keyed[j].second] &&
+            corners(mesh.triangles[keyed[j].second]) == corners(mesh.triangles[keyed[i].second]))
+          repeated[keyed[i].second] = 1;
+    begin = end;
+  }
+  std::vector<glm::uvec3> kept;
+  kept.reserve(mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (!repeated[t]) kept.push_back(mesh.triangles[t]);
+  const size_t dropped = mesh.triangles.size() - kept.size();
+  mesh.triangles = std::move(kept);
+  return dropped;
+}
+
 }  // namespace
 
 void validateInputMesh(TriangleMesh& mesh, const std::string& name)
@@ -92,6 +147,11 @@ void validateInputMesh(TriangleMesh& mesh, const std::string& name)
   if (mesh.triangles.size() < before)
     log::warning(name + ": dropped " + std::to_string(before - mesh.triangles.size()) +
                  " degenerate (zero-area) triangles of " + std::to_string(before));
+
+  if (const size_t copies = dropRepeatedTriangles(mesh); copies > 0)
+    log::warning(
+        name + ": dropped " + std::to_string(copies) +
+        (copies == 1 ? " triangle that repeats another's corners" : " triangles that repeat another's corners"));
 
   refuseStrayVertices(mesh, prefix);
 

@@ -14,7 +14,8 @@ namespace lbmshape {
 // beyond single precision (every format but OBJ stores float), only
 // degenerate (zero-area) triangles, or encloses no volume because all of it
 // lies in one plane (which includes a single triangle). Otherwise removes the
-// degenerate triangles (saying so in the verbose log) and returns. Vertices no
+// degenerate triangles and those that repeat an earlier one's corners in the
+// same turn (a warning says how many of each) and returns. Vertices no
 // triangle uses are allowed and kept.
 void validateInputMesh(TriangleMesh& mesh, const std::string& name);
 

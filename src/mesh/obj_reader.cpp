@@ -12,6 +12,7 @@
 #include "lbmshape/mesh/obj_reader.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <optional>
@@ -111,7 +112,7 @@ public:
       switch (classify(line, arguments)) {
       case Statement::Vertex: vertex(line, arguments, result); break;
       case Statement::Face: face(line, arguments, corners, result); break;
-      case Statement::Other: break;
+      case Statement::Other: other(line, result); break;
       }
     }
   }
@@ -160,6 +161,25 @@ private:
       return;
     }
     appendFan(corners, result.triangles);
+  }
+
+  // Statements OBJ has and lbmshape needs not (vt, g, usemtl, ...) are
+  // passed over; a keyword with a byte that no OBJ keyword has (a NUL, a
+  // no-break space after "v") is a damaged line, and passing over a damaged
+  // vertex line would put every later face on the wrong vertices.
+  void other(std::string_view line, ChunkResult& result)
+  {
+    std::string_view rest = text::skipBlanks(line);
+    const std::string_view keyword = text::nextToken(rest);
+    for (const char c : keyword) {
+      const auto byte = static_cast<unsigned char>(c);
+      if (byte < 0x21 || byte > 0x7e) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", byte);
+        return fail(result, text::quoted(line) + " is not an OBJ statement: its keyword holds the byte " + hex +
+                                " (a damaged or binary file)");
+      }
+    }
   }
 
   void fail(ChunkResult& result, const std::string& what)

@@ -37,6 +37,14 @@ public:
   void skip(PlyType type) { take(byteSize(type)); }
   size_t bytesLeft() const { return rest_.size(); }
   size_t leastBytesPerValue(PlyType type) const { return byteSize(type); }
+  // Binary entries have no lines to keep to.
+  void beginEntry() {}
+  void endEntry() {}
+  // Bytes left that are more than padding (line ends, NULs).
+  size_t dataLeft() const
+  {
+    return size_t(std::count_if(rest_.begin(), rest_.end(), [](char c) { return !text::isSpace(c) && c != '\0'; }));
+  }
 
 private:
   const char* take(size_t bytes)
@@ -106,19 +114,48 @@ public:
   size_t leastBytesPerValue(PlyType) const { return 1; }
   size_t line() const { return line_; }
 
+  // Each entry on a line of its own, as PLY writes them: a line with a
+  // value too few or too many (a count in the header one too high, a vertex
+  // of two coordinates) is refused here, where reading the values as one
+  // stream would shift every later one silently onto the wrong property.
+  void beginEntry() { valuesOnLine_ = 0; }
+  void endEntry()
+  {
+    rest_ = text::skipBlanks(rest_);
+    if (!rest_.empty() && rest_[0] != '\n') {
+      std::string_view rest = rest_;
+      throw BodyFault{"its line holds more values than the header's properties (" + std::to_string(valuesOnLine_) +
+                      "): " + text::quoted(text::nextLine(rest)) + " is left over"};
+    }
+  }
+  // Whether anything but blanks and line ends follows.
+  bool anythingLeft() const
+  {
+    return std::any_of(rest_.begin(), rest_.end(), [](char c) { return !text::isSpace(c); });
+  }
+
 private:
   std::string_view next()
   {
     size_t start = 0;
-    while (start < rest_.size() && text::isSpace(rest_[start])) line_ += rest_[start++] == '\n';
+    while (start < rest_.size() && text::isSpace(rest_[start])) {
+      if (rest_[start++] == '\n') {
+        if (valuesOnLine_ > 0)
+          throw BodyFault{"its line ends after " + std::to_string(valuesOnLine_) +
+                          " values, before the header's properties do"};
+        ++line_;
+      }
+    }
     rest_.remove_prefix(start);
     const std::string_view token = text::nextToken(rest_);
     if (token.empty()) throw BodyFault{"the file ends in the middle of it"};
+    ++valuesOnLine_;
     return token;
   }
 
   std::string_view rest_;
-  size_t line_ = 0;  // line ends passed, from the start of the body
+  size_t line_ = 0;          // line ends passed, from the start of the body
+  size_t valuesOnLine_ = 0;  // of the entry being read
 };
 
 // Where x, y, z and the face indices sit among their element's properties.
@@ -182,12 +219,14 @@ public:
       if (element.properties.empty()) continue;  // nothing to read, however many entries
       for (uint64_t entry = 0; entry < element.count; ++entry) {
         try {
+          values_.beginEntry();
           if (&element == layout_.vertex)
             readVertex(element, mesh);
           else if (&element == layout_.face)
             readFace(element, mesh);
           else
             skipEntry(element);
+          values_.endEntry();
         } catch (const BodyFault& fault) {
           source.refuse(where() + text::printable(element.name, 60) + " " + std::to_string(entry + 1) + " of " +
                         std::to_string(element.count) + ": " + fault.what);
@@ -317,6 +356,17 @@ size_t readBody(const MeshSource& source, const PlyHeader& header, const Layout&
   if (layout.coloured()) mesh.colours.reserve(size_t(layout.vertex->count));
   BodyReader<Values> reader(header, layout, values);
   reader.read(source, mesh);
+  // Entries the header does not count (a face count one too low) would be
+  // left out silently: an open mesh, or a part missing.
+  if constexpr (std::is_same_v<Values, AsciiValues>) {
+    if (values.anythingLeft())
+      source.refuse("values follow line " + std::to_string(header.bodyFirstLine + values.line()) +
+                    ", the last entry the header counts (are its element counts too low?)");
+  } else if (values.dataLeft() > 0) {
+    log::warning(source.name + ": " + std::to_string(values.bytesLeft()) +
+                 " bytes follow the last entry the header counts; they were not read (are its element counts too "
+                 "low?)");
+  }
   return reader.shortFaces();
 }
 

@@ -21,6 +21,7 @@
 #include "lbmshape/mesh/mesh_writer.hpp"
 #include "lbmshape/pipeline/feature_probe.hpp"
 #include "lbmshape/pipeline/input_orientation.hpp"
+#include "lbmshape/pipeline/parts_check.hpp"
 #include "lbmshape/pipeline/interruptible_steps.hpp"
 #include "lbmshape/pipeline/render_job.hpp"
 #include "lbmshape/pipeline/smoothing_radius.hpp"
@@ -612,22 +613,6 @@ void warnIfFewGivenSteps(const DenoiseOptions& o)
   if (o.steps) relaxation::warnIfInaccurate(o.gamma, *o.steps);
 }
 
-// A closed result of other parts or another genus than the closed input:
-// thin parts cut off (a horse's hooves at --res 48) or gaps closed, which
-// the volume may not show and the user should not have to find by looking.
-void warnIfThePartsChanged(const MeshTopology& input, const MeshTopology& output, double voxel)
-{
-  if (!input.closedManifold || !output.closedManifold || !input.genus || !output.genus) return;
-  if (input.components == output.components && *input.genus == *output.genus) return;
-  const auto parts = [](size_t n) { return std::to_string(n) + (n == 1 ? " part" : " parts"); };
-  std::ostringstream m;
-  m << "the result has " << parts(output.components) << " of genus " << *output.genus << " where the input has "
-    << parts(input.components) << " of genus " << *input.genus
-    << ": parts or gaps thinner than about two voxels (voxel " << std::setprecision(3) << voxel
-    << ") were cut or closed on this grid; a finer " << nameOf(Parameter::Resolution) << " keeps them";
-  log::warning(m.str());
-}
-
 // The report's figures of the input and the result, as `denoise --json`
 // prints them (a file's path is added by its caller), and a warning where
 // the result's parts differ from the input's.
@@ -635,7 +620,8 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
                        const TriangleMesh& result)
 {
   const MeshTopology outputTopology = analyzeTopology(result);
-  warnIfThePartsChanged(inputTopology, outputTopology, report["grid"]["voxel"].get<double>());
+  warnIfThePartsChanged(inputTopology, "the input", outputTopology, "the result",
+                        report["grid"]["voxel"].get<double>());
   report["command"] = "denoise";
   report["input"] = meshSummary(input, inputTopology);
   report["output"] = meshSummary(result, outputTopology);

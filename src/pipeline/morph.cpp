@@ -1,5 +1,7 @@
 #include "lbmshape/pipeline/morph.hpp"
 
+#include <sstream>
+#include <iomanip>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -35,6 +37,7 @@
 #include "lbmshape/pipeline/morph_frame_report.hpp"
 #include "lbmshape/pipeline/morph_lattice.hpp"
 #include "lbmshape/pipeline/morph_schedule.hpp"
+#include "lbmshape/pipeline/parts_check.hpp"
 #include "lbmshape/pipeline/render_job.hpp"
 #include "lbmshape/render/curvature_colours.hpp"
 #include "lbmshape/pipeline/stage_clock.hpp"
@@ -69,6 +72,35 @@ Placement placeTarget(const Bounds& source, const Bounds& target, Alignment alig
   p.toCentre = source.centre();
   if (align == Alignment::Fit && target.diagonal() > 0) p.scale = source.diagonal() / target.diagonal();
   return p;
+}
+
+// One line saying where the target went, when it moved: the last frame is
+// the target as placed, not as it lies in its file.
+void reportPlacement(const Placement& p, Alignment align, const fs::path& targetPath)
+{
+  const glm::dvec3 moved = p.toCentre - p.fromCentre;
+  if (p.scale == 1.0 && moved == glm::dvec3(0.0)) return;
+  std::ostringstream line;
+  line << std::setprecision(4) << targetPath.filename().string() << " placed on the source ("
+       << nameOf(Parameter::Align) << " " << alignmentName(align) << "): ";
+  if (p.scale != 1.0) line << "scaled by " << p.scale << " about its centre" << (moved == glm::dvec3(0.0) ? "" : ", ");
+  if (moved != glm::dvec3(0.0)) line << "moved by (" << moved.x << ", " << moved.y << ", " << moved.z << ")";
+  line << "; the last frame is the target so placed";
+  log::info(line.str());
+}
+
+// Frames made at the same step as the frame before are the same shape: a
+// morph of few steps (a coarse grid, source and target close) for many
+// frames plays in jerks.
+void warnOfRepeatedFrames(const std::vector<int>& frameSteps, int totalSteps)
+{
+  size_t repeats = 0;
+  for (size_t k = 1; k < frameSteps.size(); ++k) repeats += frameSteps[k] == frameSteps[k - 1];
+  if (repeats == 0) return;
+  log::warning(std::to_string(repeats) + " of the " + std::to_string(frameSteps.size()) +
+               " frames repeat the frame before: the morph arrives in " + std::to_string(totalSteps) +
+               " lattice steps, fewer than the frames; fewer " + nameOf(Parameter::Frames) + ", or a finer " +
+               nameOf(Parameter::Resolution) + " (more steps), gives each frame a shape of its own");
 }
 
 Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
@@ -119,6 +151,19 @@ std::optional<FolderLock> checkFolder(const fs::path& folder, bool force)
   if (::access(existing.c_str(), W_OK | X_OK) != 0)
     throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not writable");
   return std::nullopt;
+}
+
+// A source or target that is one of the folder's frames (a morph continued
+// from the last frame of another into the same folder) would be removed or
+// replaced by the frames: refused before any work.
+void refuseInputsTheFramesReplace(const fs::path& folder, const fs::path& source, const fs::path& target)
+{
+  std::error_code ec;
+  for (const auto& [input, what] : {std::pair{&source, "source"}, std::pair{&target, "target"}})
+    if (isOurFile(*input) && fs::equivalent(fs::absolute(*input, ec).parent_path(), folder, ec))
+      throw UsageError("cannot write the frames to " + folder.string() + ": the " + what + " " + input->string() +
+                       " is one of the files a morph writes there (frame_*, morph.glb), which it would replace; "
+                       "copy it elsewhere or write the frames to another folder");
 }
 
 // Creates the folder; with --force only the files a morph writes (frame_*,
@@ -309,9 +354,11 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                      "finer " +
                      nameOf(Parameter::Resolution) +
                      (audienceCanSet(Parameter::Voxel) ? " or " + nameOf(Parameter::Voxel) : std::string()));
+  reportPlacement(placement, o.align, targetPath);  // once both are known to be shapes
   const double initialError = lattice->sourceErrorNearTarget();
   const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
   const std::vector<int>& frameSteps = schedule.frameSteps();
+  if (!stepsGiven(o)) warnOfRepeatedFrames(frameSteps, schedule.totalSteps());
   if (!stepsGiven(o))
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
@@ -395,7 +442,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   double lastError = 0.0;
   Stopwatch sinceProgress, running;
   FrameField current;
-  int currentStep = 0;  // the step of `current`: the solver may be one past it
+  int currentStep = 0;          // the step of `current`: the solver may be one past it
+  std::vector<int> madeAtStep;  // each frame's currentStep
   for (int k = 0; k < o.frames; ++k) {
     interrupt::check(whatWasDone);
     if (!convergedAt) {
@@ -436,6 +484,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       }
     }
     const int step = currentStep;
+    madeAtStep.push_back(step);
     frameReport.lattice(k, step, schedule.gammaAt(std::max(step - 1, 0)), schedule.csAt(std::max(step - 1, 0)),
                         lastError, lastError < o.tolerance);
     waitedMs += writer.push(k, current);
@@ -504,6 +553,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false}),
         frameReport.compareWithTargetLevel(meshes.back(), lastTree), analyzeTopology(meshes.back())};
   });
+  warnIfThePartsChanged(analyzeTopology(target), "the target", last, "the last frame", frame.voxel);
   // A morph that starts at its target takes no step, and has no last one.
   const auto ofTheLastStep = [&](double value) {
     return schedule.totalSteps() > 0 ? nlohmann::json(value) : nlohmann::json(nullptr);
@@ -514,7 +564,10 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       {"target", targetPath.string()},
       {"folder", to.folder ? nlohmann::json(to.folder->string()) : nlohmann::json(nullptr)},
       {"frames", o.frames},
-      {"frame_steps", frameSteps},
+      // The steps the frames were made at: the schedule's, but where the
+      // lattice stopped early on arriving (given steps), the step it
+      // stopped at for every later frame, as per_frame says.
+      {"frame_steps", madeAtStep},
       {"steps", steps},
       {"schedule",
        {{"kind", stepsGiven(o) ? "given steps, constant gamma" : "arrive"},
@@ -572,6 +625,7 @@ nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath
   const interrupt::CallStop ownStop(o.stop);
   checkMorphOptions(o);
   std::optional<FolderLock> lock = checkFolder(folder, o.force);
+  refuseInputsTheFramesReplace(folder, sourcePath, targetPath);
   const ComputeDevice::Turn turn = device.takeTurn();
   if (o.preview) checkPreview(*o.preview, device, folder);
   StageClock clock([&device] { return device.deviceBusyMs(); });

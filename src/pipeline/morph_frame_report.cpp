@@ -155,8 +155,9 @@ nlohmann::json MorphFrameReport::toJson() const
     const Frame& f = frames_[k];
     frames.push_back({{"frame", k},
                       {"step", f.step},
-                      {"gamma", f.gamma},
-                      {"cs", f.cs},
+                      // Of the step that led to the frame: none leads to a frame at step 0.
+                      {"gamma", f.step > 0 ? nlohmann::json(f.gamma) : nlohmann::json(nullptr)},
+                      {"cs", f.step > 0 ? nlohmann::json(f.cs) : nlohmann::json(nullptr)},
                       {"max_field_error_voxels", f.fieldError},
                       {"converged", f.converged},
                       {"mean_distance_to_target_voxels", orNull(f.meanDistance)},

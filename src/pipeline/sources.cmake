@@ -11,6 +11,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/morph_frame_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_front.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_schedule.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/parts_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_radius.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_lattice.cpp

@@ -208,6 +208,9 @@ const JobCase jobCases[] = {
     {"missing_output", {{"output", nullptr}}, "\"output\""},
     // "--preview=" would take the next argument as its value.
     {"empty_string", {{"preview", ""}}, "option \"preview\" is empty"},
+    // The system would end the name at the NUL and write another file.
+    {"nul_in_a_value", {{"preview", std::string("a\0.png", 6)}}, "option \"preview\" holds a NUL character"},
+    {"nul_in_a_path", {{"output", std::string("out\0.glb", 8)}}, "\"output\" holds a NUL character"},
     {"negative_seed", {{"seed", -1}}, "option \"seed\" must be a whole number from 0"},
     {"seed_beyond_32_bits", {{"seed", 4294967296LL}}, "option \"seed\" must be a whole number from 0"},
 };

@@ -384,6 +384,63 @@ TEST_F(MorphCli, ASecondMorphIntoTheSameFolderIsRefused)
   EXPECT_GE(expectOnlyCompleteFrames(out), 2);
 }
 
+// A morph continued from another's frame into the same folder, with
+// --force, would remove or replace its own source: refused before any work,
+// the frame left as it was.
+TEST_F(MorphCli, AnInputThatIsOneOfTheFoldersFramesIsRefused)
+{
+  const fs::path out = folder / "frames";
+  fs::create_directories(out);
+  const fs::path continued = out / "frame_0005.obj";
+  fs::copy_file(sphere, continued);
+  const auto before = fs::file_size(continued);
+  testing::CliResult r = testing::runLbmshape(
+      {"-v", "morph", continued.string(), torus, out.string(), "--res", "32", "--frames", "3", "--force"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("the source " + continued.string() + " is one of the files a morph writes"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("sdf"), std::string::npos) << "refused before any work: " << r.err;
+  ASSERT_TRUE(fs::exists(continued));
+  EXPECT_EQ(fs::file_size(continued), before);
+  // Beside the frames, under a name of its own, it is a source like any other.
+  const fs::path kept = out / "start.obj";
+  fs::rename(continued, kept);
+  EXPECT_EQ(testing::runLbmshape(
+                {"-q", "morph", kept.string(), torus, out.string(), "--res", "32", "--frames", "3", "--force"})
+                .exitCode,
+            0);
+  EXPECT_TRUE(fs::exists(kept));
+}
+
+// What the frames will not show by themselves is said on stderr: where
+// --align put the target, frames that repeat the one before (more frames
+// than the morph has steps), and a last frame whose parts differ from the
+// target's (a part too small for the grid).
+TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
+{
+  const fs::path bigger = folder / "bigger.obj";
+  writeMesh(testing::scaled(testing::torusMesh(1.0, 0.4, 48, 24), 3.0, glm::dvec3(0.0)), bigger);
+  testing::CliResult fit = testing::runLbmshape(
+      {"morph", sphere, bigger.string(), (folder / "fit").string(), "--res", "20", "--frames", "60"});
+  ASSERT_EQ(fit.exitCode, 0) << fit.err;
+  EXPECT_NE(fit.err.find("bigger.obj placed on the source (--align fit): scaled by 0.28"), std::string::npos)
+      << fit.err;
+  EXPECT_NE(fit.err.find(" of the 60 frames repeat the frame before"), std::string::npos) << fit.err;
+  EXPECT_EQ(fit.err.find("where the target has"), std::string::npos) << fit.err;
+
+  // A target of two parts, one far smaller than a voxel: the last frame
+  // has only the other.
+  const fs::path twoParts = folder / "two_parts.obj";
+  writeMesh(testing::merged(testing::icosphere(3), testing::icosphere(3, 0.01, {1.6, 0.0, 0.0})), twoParts);
+  testing::CliResult lost = testing::runLbmshape({"morph", sphere, twoParts.string(), (folder / "lost").string(),
+                                                  "--res", "24", "--frames", "3", "--align", "none"});
+  ASSERT_EQ(lost.exitCode, 0) << lost.err;
+  EXPECT_EQ(lost.err.find("placed on the source"), std::string::npos) << "--align none moves nothing: " << lost.err;
+  EXPECT_NE(lost.err.find("the last frame has 1 part of genus 0 where the target has 2 parts of genus 0"),
+            std::string::npos)
+      << lost.err;
+}
+
 // A folder that cannot be made is an output error before any work.
 TEST_F(MorphCli, AFolderThatCannotBeMadeIsRefusedBeforeAnyWork)
 {

@@ -178,10 +178,10 @@ TEST(LastResort, AnAbortInTheMiddleOfAMorphLeavesNoPartialFile)
   writeMesh(testing::icosphere(3), folder / "a.obj");
   writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
   const fs::path out = folder / "new" / "frames", log = folder / "stderr.txt";
-  const pid_t pid =
-      testing::spawnLbmshape({"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(),
-                              "--res", "48", "--frames", "400", "--format", "obj", "--no-animation"},
-                             log.string());
+  const pid_t pid = testing::spawnLbmshape(
+      {"-q", "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(), "--res", "48", "--frames",
+       "400", "--steps-per-frame", "1", "--format", "obj", "--no-animation"},
+      log.string());
   ASSERT_GT(pid, 0);
   testing::waitForFile(out / "frame_0002.obj", std::chrono::seconds(60));
   kill(pid, SIGABRT);

@@ -218,6 +218,14 @@ TEST(BadInputMessages, SayWhatIsWrong)
             }).find("single triangle"),
             std::string::npos);
   EXPECT_NE(messageOf([&] { readMesh(plyWithNaN(folder.path())); }).find("vertex 1"), std::string::npos);
+  // A damaged vertex line (a NUL before it, a no-break space after "v"),
+  // which passed over would put later faces on the wrong vertices.
+  for (const std::string damaged : {std::string("\0v 0 1 0\n", 9), std::string("v\xc2\xa0"
+                                                                               "0 1 0\n")}) {
+    const std::string text = "v 0 0 0\nv 1 0 0\n" + damaged + "v 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    EXPECT_NE(messageOf([&] { readMesh(objFile(folder.path(), text)); }).find("line 3"), std::string::npos)
+        << ::testing::PrintToString(damaged);
+  }
   EXPECT_NE(messageOf([&] { writeMesh(testing::icosphere(0), folder / "out.fbx"); }).find(".fbx"), std::string::npos);
 }
 
@@ -255,6 +263,44 @@ TEST(BadInputMessages, AStrayVertexFarFromTheRestIsNamed)
   for (const auto& t : far.triangles)
     twoParts.triangles.push_back(t + uint32_t(testing::icosphere(3).positions.size()));
   EXPECT_EQ(readMesh(objFile(folder.path(), textOf(twoParts))).triangleCount(), 2 * far.triangleCount());
+}
+
+// Copies of a triangle (the same corners in the same turn) are dropped on
+// reading, with a warning: a hierarchy cannot separate them, and a million
+// of them kept the distances busy for minutes. A triangle and its reverse
+// are not copies.
+TEST(RepeatedTriangles, CopiesAreDroppedAndTheReverseKept)
+{
+  testing::ScratchFolder folder;
+  const TriangleMesh cube = testing::box({0, 0, 0}, {1, 1, 1});
+  std::string text;
+  for (const auto& p : cube.positions)
+    text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  const auto face = [](uint32_t a, uint32_t b, uint32_t c) {
+    return "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + std::to_string(c + 1) + "\n";
+  };
+  for (const auto& t : cube.triangles) text += face(t[0], t[1], t[2]);
+  const glm::uvec3 first = cube.triangles.front();
+  for (int copy = 0; copy < 1000; ++copy) {
+    text += face(first[0], first[1], first[2]);
+    text += face(first[1], first[2], first[0]);  // the same triangle, from another corner
+  }
+  text += face(first[0], first[2], first[1]);  // its reverse
+  const TriangleMesh read = readMesh(objFile(folder.path(), text));
+  EXPECT_EQ(read.triangleCount(), cube.triangleCount() + 1);
+  EXPECT_EQ(read.triangles.back(), glm::uvec3(first[0], first[2], first[1]));
+
+  // In a soup (STL, a vertex per corner) by position, as in an indexed mesh.
+  TriangleMesh soup;
+  for (int copy = 0; copy < 3; ++copy)
+    for (const auto& t : cube.triangles) {
+      const uint32_t base = uint32_t(soup.positions.size());
+      for (int k = 0; k < 3; ++k) soup.positions.push_back(cube.positions[t[k]]);
+      soup.triangles.push_back({base, base + 1, base + 2});
+    }
+  const fs::path stl = folder.path() / "soup.stl";
+  writeMesh(soup, stl);
+  EXPECT_EQ(readMesh(stl).triangleCount(), cube.triangleCount());
 }
 
 TEST(FailedWrite, LeavesThePreviousFileAlone)

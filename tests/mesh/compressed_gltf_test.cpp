@@ -52,11 +52,14 @@ struct Decoded {
   std::vector<uint32_t> indices;
 };
 
-// The mesh of node `node`'s child, positions dequantized by the child's transform.
+// The mesh of node `node`'s child, positions dequantized by the node's
+// translation (the quantization's offset, on the node itself so that a
+// hidden frame shrinks to its own place) and the child's scale (its step).
 Decoded decodeMesh(const meshio::GlbContent& glb, int node)
 {
   const nlohmann::json& parent = glb.json["nodes"][node];
   const nlohmann::json& child = glb.json["nodes"][parent["children"][0].get<int>()];
+  EXPECT_FALSE(child.contains("translation"));
   const nlohmann::json& primitive = glb.json["meshes"][child["mesh"].get<int>()]["primitives"][0];
   const nlohmann::json& accessors = glb.json["accessors"];
   const nlohmann::json& position = accessors[primitive["attributes"]["POSITION"].get<int>()];
@@ -65,7 +68,7 @@ Decoded decodeMesh(const meshio::GlbContent& glb, int node)
   EXPECT_EQ(position["componentType"], 5123);  // unsigned short
   EXPECT_EQ(normal["componentType"], 5120);    // byte
   EXPECT_TRUE(normal["normalized"].get<bool>());
-  const glm::dvec3 translation(child["translation"][0], child["translation"][1], child["translation"][2]);
+  const glm::dvec3 translation(parent["translation"][0], parent["translation"][1], parent["translation"][2]);
   const double scale = child["scale"][0];
   EXPECT_EQ(child["scale"][1], scale);
   EXPECT_EQ(child["scale"][2], scale);

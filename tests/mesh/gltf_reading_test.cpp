@@ -89,8 +89,9 @@ TEST_P(GltfReading, WithoutScenesEveryRootNodeIsRead)
 {
   meshio::HandMadeGltf gltf;
   const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
-  gltf.json["nodes"] = {
-      {{"mesh", mesh}, {"children", {2}}}, {{"mesh", mesh}, {"translation", {3, 0, 0}}}, {{"mesh", mesh}}};
+  gltf.json["nodes"] = {{{"mesh", mesh}, {"children", {2}}},
+                        {{"mesh", mesh}, {"translation", {3, 0, 0}}},
+                        {{"mesh", mesh}, {"translation", {0, 3, 0}}}};
   EXPECT_EQ(readBack(gltf).triangleCount(), 12u) << "two roots, one child: each instance once";
 }
 
@@ -110,6 +111,27 @@ TEST_P(GltfReading, StripsFansUnindexedAndShortIndices)
   const TriangleMesh read = readBack(gltf);
   EXPECT_EQ(read.triangleCount(), 2u + 4u + 4u);
   EXPECT_NEAR(meshio::signedVolume(read), 1.0 / 3.0 + 1.0 / 6.0, 1e-9) << "strip and fan windings followed";
+}
+
+// A required extension that changes nothing lbmshape reads (a material's)
+// is read past; one it does not know may change the geometry, so, as the
+// glTF specification asks of a reader, the file is refused, naming it.
+TEST_P(GltfReading, AnUnknownRequiredExtensionIsRefusedNamingIt)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
+  gltf.json["nodes"] = {{{"mesh", mesh}}};
+  gltf.json["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  gltf.json["extensionsRequired"] = {"KHR_materials_emissive_strength"};
+  EXPECT_EQ(readBack(gltf).triangleCount(), 4u);
+  gltf.json["extensionsUsed"] = {"FOO_bent_space"};
+  gltf.json["extensionsRequired"] = {"FOO_bent_space"};
+  try {
+    readBack(gltf);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("requires the extension 'FOO_bent_space'"), std::string::npos) << e.what();
+  }
 }
 
 TEST_P(GltfReading, IndexBeyondTheVerticesIsAnInputError)

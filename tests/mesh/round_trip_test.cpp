@@ -107,6 +107,20 @@ TEST(RoundTrip, GltfKeepsAMeshFarFromTheOriginAndTheOthersRefuseIt)
   expectKept(readMesh(folder / "compressed.glb"), 1e-4, "compressed");  // 16-bit quantization of its box
   writeGltfAnimation({far}, 24, folder / "morph.glb");
   expectKept(readMesh(folder / "morph.glb"), 2e-7, "animation");
+  writeGltfAnimation({far, far}, 24, folder / "morph.glb");
+  // Each frame's node holds the translation itself, so a hidden frame (its
+  // node scaled to 0) shrinks to its centre, not to the origin, where a
+  // viewer's "frame all" took it as part of the scene.
+  const nlohmann::json animation = testing::glbJson(folder / "morph.glb");
+  ASSERT_EQ(animation["scenes"][0]["nodes"].size(), 2u);
+  for (const auto& root : animation["scenes"][0]["nodes"]) {
+    const nlohmann::json& node = animation["nodes"][root.get<int>()];
+    ASSERT_TRUE(node.contains("translation")) << node;
+    EXPECT_NEAR(
+        glm::distance(glm::dvec3(node["translation"][0], node["translation"][1], node["translation"][2]), centre), 0.0,
+        0.5)
+        << node;
+  }
   for (const char* extension : {".ply", ".stl", ".off"}) {
     const auto path = folder / (std::string("far") + extension);
     try {

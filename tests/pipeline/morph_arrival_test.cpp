@@ -171,6 +171,31 @@ TEST_F(MorphArrival, FramesChangeHowManyPicturesNeverWhereItEnds)
   }
 }
 
+// Given steps that arrive before the last frame: the lattice stops there,
+// and frame_steps says the step each frame was made at, as per_frame does,
+// not the schedule's plan; frame 0 had no step leading to it.
+TEST_F(MorphArrival, FrameStepsSayWhereAMorphThatStoppedEarlyMadeItsFrames)
+{
+  writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");
+  writeMesh(testing::scaled(testing::icosphere(3, 1.0), 0.8), folder / "smaller.obj");
+  MorphOptions o;
+  o.grid.resolution = 32;
+  o.align = Alignment::None;
+  o.format = "obj";
+  o.frames = 6;
+  o.stepsPerFrame = 40;
+  o.animation = false;
+  const nlohmann::json report = morphFiles(folder / "sphere.obj", folder / "smaller.obj", folder / "early", o, device);
+  ASSERT_FALSE(report["converged_at_step"].is_null()) << "the case needs a morph that arrives early";
+  ASSERT_LT(report["steps"].get<int>(), 40 * (o.frames - 1));
+  for (int k = 0; k < o.frames; ++k)
+    EXPECT_EQ(report["frame_steps"][size_t(k)], report["per_frame"][size_t(k)]["step"]) << k;
+  EXPECT_EQ(report["frame_steps"][size_t(o.frames - 1)], report["steps"]);
+  EXPECT_TRUE(report["per_frame"][0]["gamma"].is_null());
+  EXPECT_TRUE(report["per_frame"][0]["cs"].is_null());
+  EXPECT_EQ(report["per_frame"][1]["gamma"], o.gamma);
+}
+
 TEST_F(MorphArrival, ReportsEveryFrame)
 {
   writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");

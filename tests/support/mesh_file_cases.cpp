@@ -341,6 +341,12 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"obj_index_beyond_64_bits", ".obj", tetraObj + "f 1 2 99999999999999999999999\n", "has no vertex number"},
       {"obj_relative_index_before_the_first_vertex", ".obj", tetraObj + "f -1 -2 -9\n", "only 4 vertices come before"},
       {"obj_no_faces", ".obj", "v 0 0 0\nv 1 0 0\n", "no triangles"},
+      {"obj_nul_before_a_vertex", ".obj", std::string("\0v 0 0 0\n", 9) + tetraObj, "holds the byte 0x00"},
+      {"obj_no_break_space_after_v", ".obj",
+       "v\xc2\xa0"
+       "0 0 0\n" +
+           tetraObj,
+       "holds the byte 0xc2"},
       {"obj_empty", ".obj", "", "empty"},
       // PLY
       {"ply_property_before_any_element", ".ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n",
@@ -354,6 +360,29 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"ply_unknown_format", ".ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format"},
       {"ply_unknown_type", ".ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n",
        "unknown property type"},
+      // ASCII PLY keeps an entry to a line: values one too few or too many
+      // (a vertex count one too high, a vertex of two coordinates) shift
+      // every later value onto the wrong property if read as one stream.
+      {"ply_vertex_line_of_two_values", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 4\nproperty list uchar int vertex_indices\nend_header\n0 0\n0 1 0 0\n0 1 0\n0 0 1\n" +
+           tetraPlyFaces,
+       "line 10: vertex 1 of 4: its line ends after 2 values"},
+      {"ply_vertex_line_of_five_values", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0 7 7\n1 0 0\n0 1 0\n0 0 1\n" +
+           tetraPlyFaces,
+       "more values than the header's properties"},
+      {"ply_vertex_count_one_too_high", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" +
+           tetraPlyFaces,
+       "more values than the header's properties"},
+      {"ply_face_count_one_too_low", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 3\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" +
+           tetraPlyFaces,
+       "values follow line 16, the last entry the header counts"},
       {"ply_list_of_minus_one", ".ply", plyAsciiTetra("3 0 2 1\n-1 0 1 3\n3 0 3 2\n3 1 2 3\n"), "a list of -1 items"},
       {"ply_list_of_two_billion", ".ply", plyAsciiTetra("3 0 2 1\n2000000000 0 1 3\n3 0 3 2\n3 1 2 3\n"),
        "longer than the rest of the file"},

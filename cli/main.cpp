@@ -4,6 +4,8 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <vulkan/vulkan.hpp>
@@ -47,6 +49,20 @@ std::string usageMessage(const CLI::App& app, const CLI::ParseError& e)
       }
   const auto given = app.get_subcommands();
   return std::string(e.what()) + " (see lbmshape " + (given.empty() ? "" : given.front()->get_name() + " ") + "--help)";
+}
+
+// An empty value ("--res ''", "$UNSET" in a script) is refused, naming the
+// option: CLI11 would read it as 0 for a number, and as no folder at all
+// for a path.
+void refuseEmptyValues(CLI::App& app)
+{
+  const CLI::Validator notEmpty(
+      [](std::string& value) { return value.empty() ? std::string("the value is empty") : std::string(); }, "");
+  std::vector<CLI::App*> apps = app.get_subcommands([](const CLI::App*) { return true; });
+  apps.push_back(&app);
+  for (CLI::App* command : apps)
+    for (CLI::Option* option : command->get_options())
+      if (option->get_type_size() != 0) option->check(notEmpty);
 }
 
 int fail(lbmshape::ExitCode code, const std::string& message)
@@ -117,6 +133,7 @@ int main(int argc, char** argv)
   cli::addNoiseCommand(app, common);
   cli::addInfoCommand(app, common);
   cli::addBenchCommand(app, common);
+  refuseEmptyValues(app);
 
   interrupt::installHandler();
   installLastResortHandler();

@@ -225,7 +225,12 @@ void FrameWriter::run()
       }
       busy_ = false;
     } catch (...) {
-      std::lock_guard lock(mutex_);
+      std::unique_lock lock(mutex_);
+      // The frames made before this one are whole: their commits end first,
+      // so that the frames left are every one before the failure, whatever
+      // the two threads' timing (before, 2 to 4 of them, run to run).
+      if (commitBeside_)
+        changed_.wait(lock, [&] { return (toCommit_.empty() && !committing_) || stopping_ || error_; });
       if (!error_) error_ = std::current_exception();
       busy_ = false;
     }

@@ -281,7 +281,9 @@ void checkMorphOptions(const MorphOptions& o)
     throw UsageError("the morph would run " + std::to_string(total) + " steps (" + nameOf(Parameter::Steps) + ", or " +
                      nameOf(Parameter::StepsPerFrame) + " times " + nameOf(Parameter::Frames) + " - 1); at most " +
                      std::to_string(parameter_bounds::maxSteps));
-  if (!(o.fps > 0.0) || !std::isfinite(o.fps)) throw UsageError(nameOf(Parameter::Fps) + " must be positive");
+  if (!(o.fps > 0.0) || !std::isfinite(o.fps))
+    throw UsageError(nameOf(Parameter::Fps) + " must be a positive, finite number of frames a second, not " +
+                     numberText(o.fps));
   if (o.animation) {
     if (const std::string untimeable = untimeableInSinglePrecision(size_t(std::max(o.frames, 0)), o.fps);
         !untimeable.empty())

@@ -99,6 +99,9 @@ TEST_F(MorphThroughNothing, AMorphThatEndsWithNothingFails)
   EXPECT_NE(r.err.find("frame 4, the last, has no surface"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(frame(out, 4))) << "the empty last frame is not written";
   EXPECT_FALSE(fs::exists(out / "morph.glb"));
+  // Every frame before it is whole and kept, whatever the writer's two
+  // threads were doing when it failed (2 to 4 of them, run to run, before).
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(fs::exists(frame(out, k))) << k;
 }
 
 TEST_F(MorphThroughNothing, ATargetWithNoInsideOnTheGridIsAnInputError)

@@ -83,6 +83,12 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"morph_fps_too_high_to_time",
                   {"morph", "a.obj", "b.obj", "frames", "--fps", "1e300"},
                   "--fps 1e+300 does not fit the animation: 48 frames at 1e+300 per second are closer together"},
+        // An unset shell variable: not 0, not "no folder".
+        UsageCase{"denoise_res_empty", {"denoise", "in.obj", "out.glb", "--res", ""}, "--res: the value is empty"},
+        UsageCase{"morph_folder_empty", {"morph", "a.obj", "b.obj", ""}, "the value is empty"},
+        UsageCase{"morph_fps_infinite",
+                  {"morph", "a.obj", "b.obj", "frames", "--fps", "inf"},
+                  "--fps must be a positive, finite number of frames a second, not inf"},
         UsageCase{"morph_fps_too_low_to_time",
                   {"morph", "a.obj", "b.obj", "frames", "--fps", "1e-40"},
                   "would come later than single precision can time; use a higher frame rate"},

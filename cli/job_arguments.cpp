@@ -29,6 +29,14 @@ bool takesWholeNumber(const CLI::Option& o)
 bool takesNumber(const CLI::Option& o) { return takesWholeNumber(o) || o.get_type_name().rfind("FLOAT", 0) == 0; }
 bool isFlag(const CLI::Option& o) { return o.get_expected_min() == 0; }
 
+// A NUL in a job's string: no argument holds one, and a file name would end
+// there, so that another file than the one named would be written.
+void refuseNul(const std::string& text, const std::string& what)
+{
+  if (text.find('\0') != std::string::npos)
+    throw UsageError(what + " holds a NUL character (\\u0000), which no path or argument may hold");
+}
+
 // The text of `value` for option `key`, or UsageError when its JSON type
 // does not fit the option.
 std::string optionText(const std::string& key, const nlohmann::json& value, const CLI::Option& option)
@@ -54,8 +62,7 @@ std::string optionText(const std::string& key, const nlohmann::json& value, cons
     // Empty, "--key=" would make the option take the next argument as its value.
     if (value.get<std::string>().empty())
       throw UsageError("option " + quoted + " is empty: give a value, or null (or leave it out) for the default");
-    if (value.get<std::string>().find('\0') != std::string::npos)
-      throw UsageError("option " + quoted + " holds a NUL character (\\u0000), which no argument may hold");
+    refuseNul(value.get<std::string>(), "option " + quoted);
     return value.get<std::string>();
   }
   throw UsageError("option " + quoted + " must be a string, not " + value.dump());
@@ -86,10 +93,7 @@ std::vector<std::string> jobCommandLine(const nlohmann::json& job, const fs::pat
     if (!job.contains(name) || !job[name].is_string())
       throw UsageError(command + " job needs \"" + name + "\" (a path)");
     if (job[name].get<std::string>().empty()) throw UsageError(command + " job's \"" + name + "\" is empty");
-    // A file name cannot hold one: the system would end the name there and
-    // write another file than the one named.
-    if (job[name].get<std::string>().find('\0') != std::string::npos)
-      throw UsageError(command + " job's \"" + name + "\" holds a NUL character (\\u0000), which no path may hold");
+    refuseNul(job[name].get<std::string>(), command + " job's \"" + name + "\"");
     args.push_back(jobPath(base, job[name].get<std::string>()));
   }
   for (const auto& [key, value] : job.items()) {

@@ -75,19 +75,16 @@ std::string stoppedBy(int signal)
 // last.
 thread_local std::vector<std::stop_token> callTokens;
 
-bool anyStopped(const std::vector<std::stop_token>& tokens)
-{
-  for (const std::stop_token& token : tokens)
-    if (token.stop_requested()) return true;
-  return false;
-}
-
-// What stops the calls on this thread: a signal's number, byTheProgram, or 0.
-int stopOfThisThread()
+// What stops a call with these tokens: a signal's number, byTheProgram, or 0.
+int stopOf(const std::vector<std::stop_token>& tokens)
 {
   if (const int signal = received) return signal;
-  return anyStopped(callTokens) ? byTheProgram : 0;
+  for (const std::stop_token& token : tokens)
+    if (token.stop_requested()) return byTheProgram;
+  return 0;
 }
+
+int stopOfThisThread() { return stopOf(callTokens); }
 }  // namespace
 
 void installHandler()
@@ -135,7 +132,7 @@ CallStop::~CallStop() { callTokens.resize(callTokens.size() - added_); }
 
 Watch::Watch() : tokens_(callTokens) {}
 
-bool Watch::requested() const { return received != 0 || anyStopped(tokens_); }
+bool Watch::requested() const { return stopOf(tokens_) != 0; }
 
 void requestStop()
 {

@@ -78,13 +78,13 @@ void refuseStrayVertices(const TriangleMesh& mesh, const std::string& prefix)
 // (STL) are found too; a face and its reverse are not copies.
 size_t dropRepeatedTriangles(TriangleMesh& mesh)
 {
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  };
   // Corners from the one that sorts first, so the three turns of one
   // triangle compare alike and its mirror does not.
   const auto corners = [&](const glm::uvec3& t) {
     std::array<glm::dvec3, 3> c{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
-    const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
-      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-    };
     const int first = less(c[1], c[0]) ? (less(c[2], c[1]) ? 2 : 1) : (less(c[2], c[0]) ? 2 : 0);
     std::rotate(c.begin(), c.begin() + first, c.end());
     return c;
@@ -120,10 +120,7 @@ size_t dropRepeatedTriangles(TriangleMesh& mesh)
       const auto cornersOf = [&](uint64_t key) { return corners(mesh.triangles[triangleOf(key)]); };
       std::sort(keyed.begin() + ptrdiff_t(begin), keyed.begin() + ptrdiff_t(end), [&](uint64_t a, uint64_t b) {
         const auto ca = cornersOf(a), cb = cornersOf(b);
-        for (int k = 0; k < 3; ++k) {
-          const auto x = std::tie(ca[k].x, ca[k].y, ca[k].z), y = std::tie(cb[k].x, cb[k].y, cb[k].z);
-          if (x != y) return x < y;
-        }
+        if (ca != cb) return std::lexicographical_compare(ca.begin(), ca.end(), cb.begin(), cb.end(), less);
         return triangleOf(a) < triangleOf(b);
       });
       for (size_t i = begin + 1; i < end; ++i)

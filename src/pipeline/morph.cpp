@@ -321,7 +321,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                         StageClock& clock, const FrameDestination& to)
 {
   orientTheInput(source, sourcePath.string());
-  orientTheInput(target, targetPath.string());
+  // Moving and scaling the target below keeps its parts and genus.
+  const MeshTopology targetTopology = orientTheInput(target, targetPath.string());
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
@@ -555,7 +556,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false}),
         frameReport.compareWithTargetLevel(meshes.back(), lastTree), analyzeTopology(meshes.back())};
   });
-  warnIfThePartsChanged(analyzeTopology(target), "the target", last, "the last frame", frame.voxel);
+  warnIfThePartsChanged(targetTopology, "the target", last, "the last frame", frame.voxel);
   // A morph that starts at its target takes no step, and has no last one.
   const auto ofTheLastStep = [&](double value) {
     return schedule.totalSteps() > 0 ? nlohmann::json(value) : nlohmann::json(nullptr);

@@ -85,7 +85,8 @@ protected:
   ComputeDevice device{"", true};  // Vulkan, with the validation layer
   testing::ScratchFolder folder;
 
-  nlohmann::json morph(const std::string& target, const std::string& out, int frames, bool band = false)
+  // The tests' morph: on a 48-cell grid, unaligned, frames as OBJ files, no animation.
+  static MorphOptions options(int frames, bool band = false)
   {
     MorphOptions o;
     o.grid.resolution = 48;
@@ -94,7 +95,12 @@ protected:
     o.frames = frames;
     o.band = band;
     o.animation = false;
-    return morphFiles(folder / "sphere.obj", folder / target, folder / out, o, device);
+    return o;
+  }
+
+  nlohmann::json morph(const std::string& target, const std::string& out, int frames, bool band = false)
+  {
+    return morphFiles(folder / "sphere.obj", folder / target, folder / out, options(frames, band), device);
   }
 };
 
@@ -178,13 +184,9 @@ TEST_F(MorphArrival, FrameStepsSayWhereAMorphThatStoppedEarlyMadeItsFrames)
 {
   writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");
   writeMesh(testing::scaled(testing::icosphere(3, 1.0), 0.8), folder / "smaller.obj");
-  MorphOptions o;
+  MorphOptions o = options(6);
   o.grid.resolution = 32;
-  o.align = Alignment::None;
-  o.format = "obj";
-  o.frames = 6;
   o.stepsPerFrame = 40;
-  o.animation = false;
   const nlohmann::json report = morphFiles(folder / "sphere.obj", folder / "smaller.obj", folder / "early", o, device);
   ASSERT_FALSE(report["converged_at_step"].is_null()) << "the case needs a morph that arrives early";
   ASSERT_LT(report["steps"].get<int>(), 40 * (o.frames - 1));

@@ -25,6 +25,10 @@ struct CommonOptions {
   RunsOn distances = RunsOn::Auto;  // --sdf: where the band's distances are computed
   RunsOn surfaces = RunsOn::Auto;   // --extract: where a morph's frames' marching cubes run
 
+  // A jobs file's first pass (run_command.cpp): a command parses and checks
+  // its options, then returns without doing the work.
+  bool checkOnly = false;
+
   // Where a command's JSON report goes: printed with --json; a jobs file
   // collects one per job instead.
   std::function<void(const nlohmann::json&)> report;

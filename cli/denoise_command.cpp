@@ -34,6 +34,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.colourByCurvature = a.colour == "curvature";
   checkDenoiseOptions(a.options);  // before the device is opened
+  if (common.checkOnly) return;
   DenoiseResult result = denoiseFile(a.input, a.output, a.options, common.computeDevice());
   common.report(result.report);
   if (!common.json) {

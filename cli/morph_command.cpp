@@ -36,6 +36,7 @@ void runMorph(const CommonOptions& common, MorphArguments& a)
   a.options.colourByCurvature = a.colour == "curvature";
   a.options.frameFigures = common.json;  // only the JSON report shows them
   checkMorphOptions(a.options);          // before the device is opened
+  if (common.checkOnly) return;
   nlohmann::json report = morphFiles(a.source, a.target, a.folder, a.options, common.computeDevice());
   common.report(report);
   if (!common.json)

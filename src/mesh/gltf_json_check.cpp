@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lbmshape/core/checked_arithmetic.hpp"
+#include "lbmshape/mesh/gltf_json_element.hpp"
 #include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
@@ -18,40 +19,39 @@ namespace {
 constexpr uint64_t bytesPerContainer = 512, bytesPerScalar = 160;
 uint64_t structureBudget(uint64_t jsonBytes) { return std::max<uint64_t>(uint64_t(256) << 20, 8 * jsonBytes); }
 
-// The elements of the top-level arrays this pass looks into, with the
-// numbers and strings they hold directly.
-struct Element {
-  std::map<std::string, uint64_t> numbers;
-  std::map<std::string, std::string> strings;
-  std::set<std::string> negative;  // keys with a negative number
-};
+// How a property's value is shown in a message: short, and printable.
+std::string shown(const std::string& written)
+{
+  constexpr size_t longest = 40;
+  return written.size() <= longest ? written : written.substr(0, longest) + "...";
+}
 
 class GltfJsonScan : public nlohmann::json_sax<nlohmann::json> {
 public:
-  std::map<std::string, std::vector<Element>> arrays{{"buffers", {}}, {"bufferViews", {}}, {"images", {}}};
+  explicit GltfJsonScan(const MeshSource& source) : source_(source) {}
+
+  std::map<std::string, std::vector<GltfJsonElement>> kept{{"buffers", {}}, {"bufferViews", {}}, {"images", {}}};
+  GltfJsonElement top;  // the top-level object's own properties
+  uint64_t scenes = 0;
   bool tooDeep = false;
   uint64_t containers = 0, scalars = 0;
   std::string syntaxError;
 
-  bool null() override { return scalar(); }
-  bool boolean(bool) override { return scalar(); }
-  bool number_integer(number_integer_t n) override
+  bool null() override { return scalar("null"); }
+  bool boolean(bool b) override { return scalar(b ? "true" : "false"); }
+  bool number_integer(number_integer_t n) override { return scalar(std::to_string(n), true); }
+  bool number_unsigned(number_unsigned_t n) override { return scalar(std::to_string(n), true, n); }
+  // nlohmann refuses a number beyond a double's range: every one read is finite.
+  bool number_float(number_float_t, const string_t& written) override
   {
-    if (Element* e = element()) n >= 0 ? void(e->numbers[key_] = uint64_t(n)) : void(e->negative.insert(key_));
-    return scalar();
+    return scalar(text::printable(shown(written)), true);
   }
-  bool number_unsigned(number_unsigned_t n) override
-  {
-    if (Element* e = element()) e->numbers[key_] = n;
-    return scalar();
-  }
-  bool number_float(number_float_t, const string_t&) override { return scalar(); }
   bool string(string_t& s) override
   {
-    if (Element* e = element()) e->strings[key_] = s;
-    return scalar();
+    if (GltfJsonElement* e = directElement(); e && current_.back().collection == "buffers") e->strings[key_] = s;
+    return scalar(text::quoted(shown(s)));
   }
-  bool binary(binary_t&) override { return scalar(); }
+  bool binary(binary_t&) override { return scalar("binary data"); }
   bool key(string_t& k) override
   {
     key_ = k;
@@ -70,22 +70,64 @@ public:
 private:
   struct Container {
     bool array;
-    std::string key;  // the key under which it was opened, in its parent object
+    std::string key;     // the key under which it was opened, in its parent object
+    uint64_t items = 0;  // values in it so far
+  };
+  // An element of a checked collection being read, and the container depth of its object.
+  struct OpenElement {
+    std::string collection;
+    std::vector<uint64_t> index;
+    size_t depth;
+    GltfJsonElement element;
   };
 
-  // The element being read when a value sits directly in an object that is
-  // an element of one of the top-level arrays looked into.
-  Element* element()
+  // The element whose object holds the value about to be read directly.
+  GltfJsonElement* directElement()
   {
-    if (stack_.size() != 3 || stack_[2].array || !stack_[1].array) return nullptr;
-    auto found = arrays.find(stack_[1].key);
-    return found == arrays.end() || found->second.empty() ? nullptr : &found->second.back();
+    return !current_.empty() && current_.back().depth == stack_.size() ? &current_.back().element : nullptr;
   }
-  bool scalar()
+  // The summary of the array, directly in an element, that holds the value about to be read.
+  GltfJsonElement::Array* elementArray()
+  {
+    if (current_.empty() || current_.back().depth + 1 != stack_.size() || !stack_.back().array) return nullptr;
+    return &current_.back().element.arrays[stack_.back().key];
+  }
+  // Notes a value (a scalar, or a container about to open) in what holds it.
+  void note(const std::string& written, bool isNumber, std::optional<uint64_t> whole)
+  {
+    if (!stack_.empty()) ++stack_.back().items;
+    if (GltfJsonElement* e = directElement()) {
+      e->written[key_] = written;
+      if (whole) e->wholeNumbers[key_] = *whole;
+    } else if (GltfJsonElement::Array* a = elementArray()) {
+      ++a->count;
+      a->allNumbers = a->allNumbers && isNumber;
+      a->allWholeNumbers = a->allWholeNumbers && whole.has_value();
+    }
+  }
+  bool scalar(const std::string& written, bool isNumber = false, std::optional<uint64_t> whole = std::nullopt)
   {
     ++scalars;
+    note(written, isNumber, whole);
     key_.clear();
     return true;
+  }
+  // The dotted path of the collection whose element the object just opened
+  // is ("nodes", "meshes.primitives"), and its place in each array of the
+  // path; empty where the object is no element of a checked collection.
+  std::pair<std::string, std::vector<uint64_t>> collectionOfNewObject() const
+  {
+    if (stack_.size() != 3 && stack_.size() != 5) return {};
+    std::string path;
+    std::vector<uint64_t> index;
+    for (size_t k = 0; k < stack_.size(); ++k) {
+      if (stack_[k].array != (k % 2 == 1)) return {};
+      if (k % 2 == 1) {
+        path += (path.empty() ? "" : ".") + stack_[k].key;
+        index.push_back(stack_[k].items - 1);
+      }
+    }
+    return isCheckedGltfCollection(path) ? std::pair(path, index) : std::pair<std::string, std::vector<uint64_t>>{};
   }
   bool open(bool array)
   {
@@ -94,33 +136,54 @@ private:
       tooDeep = true;
       return false;
     }
-    const std::string parentKey = stack_.size() == 1 && !stack_[0].array ? key_ : std::string();
-    stack_.push_back({array, parentKey});
-    if (stack_.size() == 3 && !array && stack_[1].array) {
-      auto found = arrays.find(stack_[1].key);
-      if (found != arrays.end()) found->second.emplace_back();
+    note(array ? "an array" : "an object", false, std::nullopt);
+    if (GltfJsonElement::Array* a = elementArray()) a->allNumbers = a->allWholeNumbers = false;
+    const bool inObject = !stack_.empty() && !stack_.back().array;
+    stack_.push_back({array, inObject ? key_ : std::string()});
+    if (stack_.size() == 1 && !array) {
+      current_.push_back({"", {}, 1, {}});
+    } else if (!array) {
+      auto [collection, index] = collectionOfNewObject();
+      if (!collection.empty()) current_.push_back({collection, index, stack_.size(), {}});
+    } else if (GltfJsonElement* e = current_.empty() || current_.back().depth + 1 != stack_.size()
+                                        ? nullptr
+                                        : &current_.back().element) {
+      e->arrays[stack_.back().key] = {};  // an array directly in an element: summarized
     }
     key_.clear();
     return true;
   }
   bool close()
   {
+    if (!current_.empty() && current_.back().depth == stack_.size()) {
+      OpenElement& done = current_.back();
+      if (done.collection.empty()) {
+        top = std::move(done.element);
+      } else {
+        checkGltfElement(done.collection, done.index, done.element, source_);
+        if (done.collection == "scenes") ++scenes;
+        if (kept.count(done.collection)) kept[done.collection].push_back(std::move(done.element));
+      }
+      current_.pop_back();
+    }
     stack_.pop_back();
     key_.clear();
     return true;
   }
 
+  const MeshSource& source_;
   std::vector<Container> stack_;
+  std::vector<OpenElement> current_;
   std::string key_;
 };
 
-std::optional<uint64_t> number(const Element& e, const std::string& key)
+std::optional<uint64_t> number(const GltfJsonElement& e, const std::string& key)
 {
-  auto found = e.numbers.find(key);
-  return found == e.numbers.end() ? std::nullopt : std::optional<uint64_t>(found->second);
+  auto found = e.wholeNumbers.find(key);
+  return found == e.wholeNumbers.end() ? std::nullopt : std::optional<uint64_t>(found->second);
 }
 
-void checkBuffers(const std::vector<Element>& buffers, bool glb, const MeshSource& source)
+void checkBuffers(const std::vector<GltfJsonElement>& buffers, bool glb, const MeshSource& source)
 {
   std::set<std::string> files;
   for (size_t b = 0; b < buffers.size(); ++b) {
@@ -139,23 +202,36 @@ void checkBuffers(const std::vector<Element>& buffers, bool glb, const MeshSourc
   }
 }
 
+// tinygltf reads a "scene" that is no scene's index as absent, and lbmshape
+// showed scene 0 in its place.
+void checkDefaultScene(const GltfJsonScan& scan, const MeshSource& source)
+{
+  auto written = scan.top.written.find("scene");
+  if (written == scan.top.written.end()) return;
+  const auto scene = number(scan.top, "scene");
+  if (!scene) source.refuse("its \"scene\" is " + written->second + ", not a whole number of 0 or more");
+  if (*scene >= scan.scenes)
+    source.refuse("its default scene is scene " + std::to_string(*scene) + ", but it has " +
+                  std::to_string(scan.scenes) + (scan.scenes == 1 ? " scene" : " scenes"));
+}
+
 // tinygltf hands an image's buffer view to the image loader without
 // checking that the view lies in its buffer.
 void checkImageViews(const GltfJsonScan& scan, const MeshSource& source)
 {
-  const std::vector<Element>& views = scan.arrays.at("bufferViews");
-  const std::vector<Element>& buffers = scan.arrays.at("buffers");
-  const std::vector<Element>& images = scan.arrays.at("images");
+  const std::vector<GltfJsonElement>& views = scan.kept.at("bufferViews");
+  const std::vector<GltfJsonElement>& buffers = scan.kept.at("buffers");
+  const std::vector<GltfJsonElement>& images = scan.kept.at("images");
   for (size_t i = 0; i < images.size(); ++i) {
     const auto view = number(images[i], "bufferView");
     if (!view) continue;
     const std::string name = "image " + std::to_string(i);
     if (*view >= views.size())
       source.refuse(name + " refers to buffer view " + std::to_string(*view) + ", which does not exist");
-    const Element& v = views[*view];
+    const GltfJsonElement& v = views[*view];
     const auto buffer = number(v, "buffer"), length = number(v, "byteLength");
     const uint64_t offset = number(v, "byteOffset").value_or(0);
-    if (!buffer || *buffer >= buffers.size() || !length || v.negative.count("byteOffset"))
+    if (!buffer || *buffer >= buffers.size() || !length)
       source.refuse(name + "'s buffer view " + std::to_string(*view) + " does not name a buffer and a length");
     const auto end = checkedAdd(offset, *length);
     if (!end || *end > number(buffers[*buffer], "byteLength").value_or(0))
@@ -167,7 +243,7 @@ void checkImageViews(const GltfJsonScan& scan, const MeshSource& source)
 
 std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, const MeshSource& source)
 {
-  GltfJsonScan scan;
+  GltfJsonScan scan(source);
   nlohmann::json::sax_parse(json.begin(), json.end(), &scan, nlohmann::json::input_format_t::json);
   if (scan.tooDeep)
     source.refuse("its JSON nests more than " + std::to_string(maxGltfJsonDepth) +
@@ -176,11 +252,12 @@ std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, cons
   if (scan.containers * bytesPerContainer + scan.scalars * bytesPerScalar > structureBudget(json.size()))
     source.refuse("its JSON holds " + std::to_string(scan.containers + scan.scalars) +
                   " values, more than a glTF file of this size needs");
-  checkBuffers(scan.arrays.at("buffers"), glb, source);
+  checkDefaultScene(scan, source);
+  checkBuffers(scan.kept.at("buffers"), glb, source);
   checkImageViews(scan, source);
 
   std::vector<GltfBufferEntry> buffers;
-  for (const Element& b : scan.arrays.at("buffers")) {
+  for (const GltfJsonElement& b : scan.kept.at("buffers")) {
     auto uri = b.strings.find("uri");
     buffers.push_back({uri == b.strings.end() ? std::string() : uri->second, number(b, "byteLength").value_or(0)});
   }

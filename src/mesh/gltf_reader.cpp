@@ -63,17 +63,26 @@ std::string_view jsonOf(const MeshSource& source, MeshFormat format)
   // GLB: magic, version, length; chunk 0: length, "JSON", bytes; then
   // optionally chunk 1: length, "BIN\0", bytes.
   const std::string_view bytes = source.bytes;
-  if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") source.refuse("not a GLB file (no 'glTF' magic)");
+  if (bytes.size() < 12 || bytes.substr(0, 4) != "glTF") source.refuse("not a GLB file (no 'glTF' magic)");
+  if (glbWord(bytes, 4) != 2)
+    source.refuse("it is a GLB file of version " + std::to_string(glbWord(bytes, 4)) +
+                  "; lbmshape reads version 2 (glTF 2.0)");
   if (glbWord(bytes, 8) > bytes.size()) source.refuse("its GLB header claims more bytes than the file has");
+  if (bytes.size() < 20) source.refuse("it ends after its GLB header, before any JSON chunk");
   const uint64_t jsonLength = glbWord(bytes, 12);
   if (bytes.substr(16, 4) != "JSON" || jsonLength > bytes.size() - 20)
     source.refuse("its first GLB chunk is not JSON that fits in the file");
-  const uint64_t rest = bytes.size() - 20 - jsonLength;
-  if (rest > 0) {
-    if (rest < 8 || uint64_t(glbWord(bytes, 20 + jsonLength)) > rest - 8)
-      source.refuse("its second GLB chunk claims more bytes than follow it");
-    if (bytes.substr(20 + jsonLength + 4, 4) != std::string_view("BIN\0", 4))
-      source.refuse("its second GLB chunk is not a binary chunk");
+  // The chunks after the JSON: the binary chunk, then any others, which a
+  // reader skips; fewer than a chunk header's 8 bytes at the end are padding.
+  uint64_t at = 20 + jsonLength;
+  for (int chunk = 2; bytes.size() - at >= 8; ++chunk) {
+    const uint64_t rest = bytes.size() - at - 8, length = glbWord(bytes, at);
+    if (length > rest)
+      source.refuse("its GLB chunk " + std::to_string(chunk) + " claims " + std::to_string(length) + " bytes, but " +
+                    std::to_string(rest) + " follow it");
+    if (chunk == 2 && bytes.substr(at + 4, 4) != std::string_view("BIN\0", 4))
+      source.refuse("its GLB chunk 2 is not a binary chunk (BIN)");
+    at += 8 + length;
   }
   return glbChunks(bytes).json;
 }
@@ -131,7 +140,7 @@ public:
       if (!t.counted) {
         for (size_t p = 0; p < primitives.size(); ++p) {
           const auto& primitive = primitives[p];
-          const int mode = modeOf(primitive);
+          const int mode = primitive.mode;  // one of glTF's (gltf_json_element.hpp); triangles when absent
           auto position = primitive.attributes.find("POSITION");
           if (!isTriangles(mode) || position == primitive.attributes.end()) continue;
           const std::string name = primitiveName(instance.mesh, p);
@@ -170,10 +179,6 @@ private:
   {
     return "mesh " + std::to_string(mesh) + " primitive " + std::to_string(primitive);
   }
-  static int modeOf(const tinygltf::Primitive& primitive)
-  {
-    return primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-  }
   static bool isTriangles(int mode)
   {
     return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
@@ -202,7 +207,7 @@ private:
 
   void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world)
   {
-    const int mode = modeOf(primitive);
+    const int mode = primitive.mode;  // one of glTF's (gltf_json_element.hpp); triangles when absent
     if (!isTriangles(mode)) {
       log::warning("reading " + source_.name + ": skipped " + name + ": points or lines, not triangles");
       return;

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace lbmshape {
@@ -9,21 +10,34 @@ namespace {
 
 constexpr int noParent = -1;
 
-glm::dmat4 localTransform(const tinygltf::Node& node)
+std::string nodeName(size_t index) { return "node " + std::to_string(index); }
+
+// The node's transform. Its properties' types and lengths are checked
+// (gltf_json_element.hpp); what is left is what the numbers mean.
+glm::dmat4 localTransform(const tinygltf::Node& node, size_t index, const MeshSource& source)
 {
-  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF stores it
+  if (node.matrix.size() == 16) {
+    const glm::dmat4 m = glm::make_mat4(node.matrix.data());  // column-major, as glTF stores it
+    // glTF: a matrix decomposable into translation, rotation and scale; a
+    // projective one would put a divide in every position.
+    if (glm::row(m, 3) != glm::dvec4(0, 0, 0, 1))
+      source.refuse(nodeName(index) + "'s matrix is not affine (its last row is not 0 0 0 1)");
+    return m;
+  }
   glm::dmat4 m(1.0);
   if (node.translation.size() == 3)
     m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
-  if (node.rotation.size() == 4)  // glTF: (x, y, z, w); glm's constructor: (w, x, y, z)
-    m = m * glm::mat4_cast(
-                glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])));
+  if (node.rotation.size() == 4) {  // glTF: (x, y, z, w); glm's constructor: (w, x, y, z)
+    const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    // A unit quaternion; one a little off is normalized, as renderers do,
+    // but 0 0 0 0 is no rotation at all.
+    if (!(glm::length(q) > 1e-6)) source.refuse(nodeName(index) + "'s rotation is not a unit quaternion");
+    m = m * glm::mat4_cast(glm::normalize(q));
+  }
   if (node.scale.size() == 3)
     m = m * glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
   return m;
 }
-
-std::string nodeName(size_t index) { return "node " + std::to_string(index); }
 
 // Each node's parent, checking that no node has two and none is its own ancestor.
 std::vector<int> parentsOf(const tinygltf::Model& model, const MeshSource& source)
@@ -69,8 +83,9 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
   const std::vector<int> parent = parentsOf(model, source);
   std::vector<int> roots;
   if (!model.scenes.empty()) {
-    const size_t scene =
-        model.defaultScene >= 0 && size_t(model.defaultScene) < model.scenes.size() ? size_t(model.defaultScene) : 0;
+    // The default scene is checked to exist (gltf_json_check.hpp); without one, scene 0.
+    const size_t scene = model.defaultScene >= 0 ? size_t(model.defaultScene) : 0;
+    if (scene >= model.scenes.size()) source.refuse("its default scene " + std::to_string(scene) + " does not exist");
     for (int root : model.scenes[scene].nodes) {
       if (root < 0 || size_t(root) >= model.nodes.size())
         source.refuse("scene " + std::to_string(scene) + " refers to node " + std::to_string(root) +
@@ -97,7 +112,7 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
     if (visited[size_t(index)]) continue;  // a root listed twice
     visited[size_t(index)] = true;
     const tinygltf::Node& node = model.nodes[size_t(index)];
-    const glm::dmat4 world = parentWorld * localTransform(node);
+    const glm::dmat4 world = parentWorld * localTransform(node, size_t(index), source);
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size())
         source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) +

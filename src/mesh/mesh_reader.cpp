@@ -2,6 +2,7 @@
 
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/mapped_file.hpp"
+#include "lbmshape/mesh/compressed_file.hpp"
 #include "lbmshape/mesh/gltf_reader.hpp"
 #include "lbmshape/mesh/mesh_validation.hpp"
 #include "lbmshape/mesh/obj_reader.hpp"
@@ -14,6 +15,9 @@ namespace lbmshape {
 TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty)
 {
   if (source.bytes.empty()) source.refuse("the file is empty");
+  // A binary STL's 80-byte header is free text: a compressed STL is told
+  // from a binary one by its size (stl_reader.cpp).
+  if (format != MeshFormat::Stl) refuseCompressed(source);
   TriangleMesh mesh;
   switch (format) {
   case MeshFormat::Obj: mesh = readObj(source); break;

@@ -12,6 +12,7 @@
 
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/log.hpp"
+#include "lbmshape/core/number_text.hpp"
 #include "lbmshape/mesh/mesh_geometry.hpp"
 #include "lbmshape/mesh/text_scan.hpp"
 
@@ -176,10 +177,18 @@ void validateInputMesh(TriangleMesh& mesh, const std::string& name)
   const Bounds box = bounds(mesh);
   const glm::dvec3 size = box.size();
   const double largest = std::max({size.x, size.y, size.z});
-  for (int axis = 0; axis < 3; ++axis)
-    if (size[axis] <= flatTolerance * largest)
-      throw InputError(prefix + "it is flat (its bounding box has no extent along " + std::string(1, char('x' + axis)) +
+  const auto axisName = [](int axis) { return std::string(1, char('x' + axis)); };
+  for (int axis = 0; axis < 3; ++axis) {
+    if (size[axis] == 0)
+      throw InputError(prefix + "it is flat (its bounding box has no extent along " + axisName(axis) +
                        "), so it encloses no volume");
+    if (size[axis] <= flatTolerance * largest) {
+      const int longest = int(std::max_element(&size.x, &size.x + 3) - &size.x);
+      throw InputError(prefix + "its bounding box is " + threeSignificantDigits(largest) + " along " +
+                       axisName(longest) + " but " + threeSignificantDigits(size[axis]) + " along " + axisName(axis) +
+                       ": flat on any grid lbmshape can hold (are some of its parts far from the others?)");
+    }
+  }
   // Flat but tilted: every vertex in the plane of the largest triangle (the
   // one whose normal is known best).
   const glm::uvec3* largestTriangle = &mesh.triangles.front();

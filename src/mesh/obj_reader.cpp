@@ -55,8 +55,11 @@ std::string_view nextStatement(std::string_view& rest, std::string& scratch, siz
 Statement classify(std::string_view line, std::string_view& arguments)
 {
   line = text::skipBlanks(line);
-  if (line.size() < 2 || !text::isBlank(line[1])) return Statement::Other;  // "v1", "vt", "f", "" ...
-  arguments = line.substr(2);
+  // "vt", "v1", "" ... are not; a bare "v" or "f" is a vertex or face of
+  // nothing, refused or skipped as such (passing over a bare "v" put every
+  // later face on the wrong vertices).
+  if (line.empty() || (line.size() > 1 && !text::isBlank(line[1]))) return Statement::Other;
+  arguments = line.substr(std::min<size_t>(2, line.size()));
   if (line[0] == 'v') return Statement::Vertex;
   if (line[0] == 'f') return Statement::Face;
   return Statement::Other;
@@ -123,7 +126,7 @@ private:
     glm::dvec3 p;
     for (int k = 0; k < 3; ++k) {
       const auto value = text::coordinate(text::nextToken(arguments));
-      if (!value) return fail(result, text::quoted(line) + " is not a vertex with three finite coordinates");
+      if (!value) return fail(result, text::quoted(line) + " is " + text::notAVertex);
       p[k] = *value;
     }
     const auto index = uint32_t(firstVertex_ + verticesRead_++);
@@ -138,14 +141,32 @@ private:
     result.colours.emplace_back(index, colour);
   }
 
+  // What follows a corner's vertex number: "/vt", "/vt/vn" or "//vn", each
+  // number an integer ("1/" and "1//" pass: some exporters write them).
+  static bool isCornerTail(std::string_view tail)
+  {
+    for (int fields = 0; !tail.empty(); ++fields) {
+      if (fields == 2) return false;  // a third slash
+      tail.remove_prefix(1);
+      const std::string_view field = tail.substr(0, tail.find('/'));
+      if (!field.empty() && !text::integer(field)) return false;
+      tail.remove_prefix(field.size());
+    }
+    return true;
+  }
+
   void face(std::string_view line, std::string_view arguments, std::vector<uint32_t>& corners, ChunkResult& result)
   {
     corners.clear();
     // Vertices defined before this line: what a relative index counts back from.
     const size_t before = firstVertex_ + verticesRead_;
     for (std::string_view token = text::nextToken(arguments); !token.empty(); token = text::nextToken(arguments)) {
-      const auto index = text::integer(token.substr(0, token.find('/')));
+      const size_t slash = token.find('/');
+      const auto index = text::integer(token.substr(0, slash));
       if (!index) return fail(result, text::quoted(line) + ": corner " + text::quoted(token) + " has no vertex number");
+      if (slash != std::string_view::npos && !isCornerTail(token.substr(slash)))
+        return fail(result, text::quoted(line) + ": corner " + text::quoted(token) +
+                                " is not of the form v, v/vt, v/vt/vn or v//vn");
       int64_t zeroBased = *index > 0 ? *index - 1 : int64_t(before) + *index;
       if (*index == 0) return fail(result, text::quoted(line) + ": vertex numbers start at 1, not 0");
       if (*index < 0 && zeroBased < 0)
@@ -257,7 +278,8 @@ TriangleMesh readObj(const MeshSource& source)
       mesh.colours[vertex] = colour;
     }
   if (shortFaces)
-    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + " faces with fewer than 3 corners");
+    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + (shortFaces == 1 ? " face" : " faces") +
+                 " with fewer than 3 corners");
   return mesh;
 }
 

@@ -107,7 +107,7 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
     glm::dvec3 p;
     for (int k = 0; k < 3; ++k) {
       const auto value = text::coordinate(text::nextToken(words));
-      if (!value) lines.fail(text::quoted(line) + " is not a vertex with three finite coordinates");
+      if (!value) lines.fail(text::quoted(line) + " is " + text::notAVertex);
       p[k] = *value;
     }
     mesh.positions.push_back(p);

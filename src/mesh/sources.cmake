@@ -1,4 +1,5 @@
 target_sources(lbmshape_mesh PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/compressed_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/glb_container.cpp
   ${CMAKE_CURRENT_LIST_DIR}/glb_stream.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
@@ -7,6 +8,7 @@ target_sources(lbmshape_mesh PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/gltf_compression.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_file_access.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_json_check.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_json_element.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_meshopt_decoding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_scene_walk.cpp

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "lbmshape/mesh/compressed_file.hpp"
 #include "lbmshape/mesh/text_scan.hpp"
 #include "lbmshape/mesh/vertex_welding.hpp"
 
@@ -107,7 +108,7 @@ private:
     glm::dvec3 p;
     for (int k = 0; k < 3; ++k) {
       const auto value = text::coordinate(text::nextToken(words));
-      if (!value) fail("not a vertex with three finite coordinates");
+      if (!value) fail(text::notAVertex);
       p[k] = *value;
     }
     if (!text::nextToken(words).empty()) fail("a vertex with more than three coordinates");
@@ -137,7 +138,11 @@ TriangleMesh readStl(const MeshSource& source)
   if (looksBinary(source.bytes, triangles)) return welded(readBinaryCorners(source, triangles));
   std::string_view start =
       text::withoutByteOrderMark(source.bytes.substr(0, std::min<size_t>(source.bytes.size(), 512)));
-  if (keywordIs(text::nextToken(start), "solid")) return welded(AsciiStl(source).corners());
+  const std::string_view keyword = text::nextToken(start);
+  if (keywordIs(keyword, "solid")) return welded(AsciiStl(source).corners());
+  refuseCompressed(source);
+  if (keywordIs(keyword, "facet"))
+    source.refuse("ASCII STL that does not begin with 'solid' (it begins with 'facet'): add a 'solid' line first");
   if (source.bytes.size() >= headerBytes + countBytes)
     source.refuse("binary STL whose header counts " + std::to_string(triangles) + " triangles (" +
                   std::to_string(headerBytes + countBytes + triangleBytes * triangles) + " bytes), but the file has " +

@@ -58,6 +58,10 @@ inline std::string_view nextLine(std::string_view& rest)
 // lbmshape writes except OBJ stores float, and the lattice works in float.
 inline constexpr double largestCoordinate = double(std::numeric_limits<float>::max());
 
+// What a reader says of a vertex whose coordinates are not all coordinates.
+inline constexpr const char* notAVertex =
+    "not a vertex with three finite coordinates (numbers of magnitude at most 3.4e38, single precision's largest)";
+
 // A whole token as a finite coordinate ("1", "-2.5e3", "+.5"), or nothing:
 // "nan", "inf", "1e39", "1,5" and "abc" are not coordinates.
 inline std::optional<double> coordinate(std::string_view token)

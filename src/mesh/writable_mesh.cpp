@@ -11,6 +11,21 @@
 namespace lbmshape {
 namespace {
 
+// A hundredth of an edge: the triangles keep their shape and normals.
+bool roundingKeepsTheShape(double rounding, double edge) { return rounding <= 0.01 * edge; }
+
+// The formats to suggest when single precision would collapse a mesh's
+// triangles: OBJ keeps doubles; glTF stores single precision about the
+// mesh's centre, which keeps a mesh far from the origin but not one whose
+// edges are themselves too small for single precision.
+std::string formatsThatKeep(const TriangleMesh& mesh, CoordinatePrecision precision, double edge)
+{
+  const bool aboutItsCentreHolds =
+      precision != CoordinatePrecision::SingleAboutAnOrigin &&
+      roundingKeepsTheShape(singlePrecisionRounding(mesh, singlePrecisionOrigin(mesh)), edge);
+  return aboutItsCentreHolds ? ".obj or .glb, which keep them" : ".obj, which keeps doubles";
+}
+
 void requireSinglePrecisionHolds(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& prefix,
                                  CoordinatePrecision precision)
 {
@@ -21,17 +36,16 @@ void requireSinglePrecisionHolds(const TriangleMesh& mesh, const std::filesystem
     if (glm::any(glm::greaterThan(glm::abs(p - origin), glm::dvec3(largest))))
       throw OutputError(prefix + " has a coordinate beyond single precision (" + numberText(largest) + "), which " +
                         path.extension().string() + " stores; write .obj, which keeps doubles");
-  // A hundredth of an edge: the triangles keep their shape and normals.
   const double rounding = singlePrecisionRounding(mesh, origin), edge = meanEdgeLength(mesh);
-  if (rounding > 0.01 * edge) {
+  if (!roundingKeepsTheShape(rounding, edge)) {
     const Bounds box = bounds(mesh);
     const glm::dvec3 corner = glm::max(glm::abs(box.min), glm::abs(box.max));
     const double farthest = std::max({corner.x, corner.y, corner.z});
     throw OutputError(prefix + " lies up to " + threeSignificantDigits(farthest) + " from the origin, where " +
                       path.extension().string() + "'s single-precision coordinates would move its vertices by up to " +
                       threeSignificantDigits(rounding) + ", more than a hundredth of its edges (" +
-                      threeSignificantDigits(edge) +
-                      " on average), and its triangles would collapse; write .obj or .glb, which keep them");
+                      threeSignificantDigits(edge) + " on average), and its triangles would collapse; write " +
+                      formatsThatKeep(mesh, precision, edge));
   }
 }
 

@@ -38,6 +38,7 @@
 #include "lbmshape/pipeline/morph_lattice.hpp"
 #include "lbmshape/pipeline/morph_schedule.hpp"
 #include "lbmshape/pipeline/parts_check.hpp"
+#include "lbmshape/pipeline/staged_frames.hpp"
 #include "lbmshape/pipeline/render_job.hpp"
 #include "lbmshape/render/curvature_colours.hpp"
 #include "lbmshape/pipeline/stage_clock.hpp"
@@ -119,12 +120,6 @@ void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, c
   writePreview(shown, render::parseView("iso"), png, device);
 }
 
-bool isOurFile(const fs::path& file)
-{
-  const std::string name = file.filename().string();
-  return name == "morph.glb" || (FrameWriter::isFrameName(file) && meshFormatOf(file).has_value());
-}
-
 // The output folder may be missing or empty; a non-empty one only with
 // --force. Checked before anything else, changes nothing.
 // Before any work: the folder is a folder, empty unless --force, no other
@@ -160,22 +155,18 @@ void refuseInputsTheFramesReplace(const fs::path& folder, const fs::path& source
 {
   std::error_code ec;
   for (const auto& [input, what] : {std::pair{&source, "source"}, std::pair{&target, "target"}})
-    if (isOurFile(*input) && fs::equivalent(fs::absolute(*input, ec).parent_path(), folder, ec))
+    if (isMorphOutputFile(*input) && fs::equivalent(fs::absolute(*input, ec).parent_path(), folder, ec))
       throw UsageError("cannot write the frames to " + folder.string() + ": the " + what + " " + input->string() +
                        " is one of the files a morph writes there (frame_*, morph.glb), which it would replace; "
                        "copy it elsewhere or write the frames to another folder");
 }
 
-// Creates the folder; with --force only the files a morph writes (frame_*,
-// morph.glb) are removed, so that no frame of an earlier, longer run stays
-// behind.
+// Creates the folder. With --force, the files an earlier morph wrote there
+// (frame_*, morph.glb) are replaced once this one is complete
+// (StagedFrames), so that no frame of an earlier, longer run stays behind.
 void prepareFolder(const fs::path& folder)
 {
   std::error_code ec;
-  if (fs::is_directory(folder, ec) && !fs::is_empty(folder, ec)) {
-    for (const auto& entry : fs::directory_iterator(folder, ec))
-      if (entry.is_regular_file() && isOurFile(entry.path())) fs::remove(entry.path(), ec);
-  }
   {
     const temporary_files::Creation creation;  // the new folders are listed (FolderIfLeftEmpty)
     fs::create_directories(folder, ec);
@@ -373,12 +364,16 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   if (o.colourByCurvature) reportCurvatureColours(colourScale, "the target's");
   MorphFrameReport frameReport(std::move(targetLevel), frame, o.frames, o.frameFigures);
   std::optional<FolderIfLeftEmpty> newFolder;
+  std::optional<StagedFrames> staged;
   if (to.folder) {
     newFolder.emplace(*to.folder);
     newFolder->listForLastResort();  // before they exist: an abort as they are made still removes them
     prepareFolder(*to.folder);       // only now: a bad input leaves no folder behind
     if (!*to.lock) to.lock->emplace(*to.folder);
+    staged.emplace(*to.folder);
   }
+  const std::optional<fs::path> framesFolder =
+      staged ? std::optional<fs::path>(staged->destination()) : std::optional<fs::path>();
   lattice->start(device, o, schedule, clock);
   const bool framesAsPieces = lattice->framesAsSurfacePieces(frameReport.probeCells());
   if (framesAsPieces) log::verbose("frames: marching cubes on the device, only the surfaces' pieces read back");
@@ -389,7 +384,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   // only its JSON is left to write (at 256^3 assembling and writing 48
   // frames took 0.81 s after the last one).
   std::optional<GltfAnimation> animation;
-  if (to.folder && o.animation) animation.emplace(*to.folder / "morph.glb", size_t(o.frames), o.fps, o.compression);
+  if (framesFolder && o.animation)
+    animation.emplace(*framesFolder / "morph.glb", size_t(o.frames), o.fps, o.compression);
   double figuresMs = 0.0, animationMs = 0.0;  // the writer's thread's, read after writer.finish()
   const FrameWriter::Keep keep = o.preview ? FrameWriter::Keep::EveryFrame : FrameWriter::Keep::LastFrame;
   const FrameWriter::Inspect inspect =
@@ -413,16 +409,25 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                                              : FrameWriter::Decorate();
   std::optional<FrameWriter> frames;
   if (to.folder)
-    frames.emplace(frame, *to.folder, "." + o.format, o.frames, keep, inspect, o.compression, decorate);
+    frames.emplace(frame, *framesFolder, "." + o.format, o.frames, keep, inspect, o.compression, decorate);
   else
     frames.emplace(frame, *to.sink, o.frames, keep, inspect, decorate);
   FrameWriter& writer = *frames;
   InterruptibleSteps stepper(solver, o.stepsPerBatch);
   // Asked only when stopping: the frame being written is finished first, so
   // the count is what the folder holds.
+  // "N complete frames in FOLDER", or where they replace an earlier morph's
+  // files, that those stay.
+  const auto framesDone = [&](int count) {
+    const std::string done = std::to_string(count) + " complete frames";
+    if (!to.folder) return done;
+    return done + (staged->replacesEarlierFiles()
+                       ? ", not kept: " + to.folder->string() + " keeps the earlier morph's files"
+                       : " in " + to.folder->string());
+  };
   const std::function<std::string()> whatWasDone = [&] {
-    return std::to_string(writer.stop()) + " complete frames" + (to.folder ? " in " + to.folder->string() : "") +
-           " (at step " + std::to_string(solver.stepsTaken()) + " of " + std::to_string(schedule.totalSteps()) + ")";
+    return framesDone(writer.stop()) + " (at step " + std::to_string(solver.stepsTaken()) + " of " +
+           std::to_string(schedule.totalSteps()) + ")";
   };
   // Steps up to `step`, gamma and Cs following the schedule. A new Cs is
   // two push constants (setSourceStrength): set only when it changes
@@ -527,12 +532,13 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                  std::to_string(int(writer.commitMs())) + " ms");
   if (waitedMs > 0.0) log::verbose("the lattice waited " + std::to_string(int(waitedMs)) + " ms for the frame writer");
 
-  interrupt::check(std::to_string(o.frames) + " complete frames" + (to.folder ? " in " + to.folder->string() : ""));
+  interrupt::check(framesDone(o.frames));
   if (animation) {
     clock.record("animation", animationMs);
     log::verbose("animation: " + std::to_string(int(animationMs)) + " ms assembling it alongside the frames");
     clock.time("animation", [&] { animation->write(); });
   }
+  if (staged) staged->commit();
   device.requireCleanValidation();
   if (to.folder && o.preview)
     clock.time("preview",

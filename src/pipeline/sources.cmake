@@ -14,6 +14,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/parts_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_radius.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/staged_frames.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/render_job.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stage_clock.cpp

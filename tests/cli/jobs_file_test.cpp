@@ -95,6 +95,63 @@ TEST_F(JobsFile, BadJobsAreUsageErrorsOfTheirOwn)
   EXPECT_EQ(testing::nonEmptyLines(notJson.err).size(), 1u) << notJson.err;
 }
 
+// A job whose options are wrong is found before any job runs: said at once
+// (the others still run), or with --fail-fast the run stops before the
+// first job; --check checks every job and runs none. A mistake in the last
+// job of a long batch used to surface only after all the others had run.
+TEST_F(JobsFile, WrongOptionsAreFoundBeforeAnyJobRuns)
+{
+  nlohmann::json jobs = threeJobs();
+  jobs[1] = {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "fine.glb"}, {"res", 24}};
+  jobs.push_back({{"command", "morph"},
+                  {"source", "sphere.obj"},
+                  {"target", "torus.obj"},
+                  {"output", "late"},
+                  {"frames", 1}});  // fewer than 2 frames
+  jobs.push_back({{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "typo.glb"}, {"rez", 24}});
+  const fs::path file = write(jobs);
+  const auto nothingWritten = [&](const std::string& how) {
+    for (const char* output : {"sphere_smooth.glb", "fine.glb", "frames", "late", "typo.glb"})
+      EXPECT_FALSE(fs::exists(folder / output)) << how << ": " << output;
+  };
+
+  testing::CliResult check = testing::runLbmshape({"run", file.string(), "--check", "--json"});
+  EXPECT_EQ(check.exitCode, 2) << check.err;
+  nothingWritten("--check");
+  const auto checked = nlohmann::json::parse(check.out);
+  EXPECT_EQ(checked["run"], 0);
+  EXPECT_EQ(checked["failed"], 2);
+  ASSERT_EQ(checked["results"].size(), 5u);
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(checked["results"][k]["ok"].get<bool>()) << checked["results"][k];
+  EXPECT_NE(checked["results"][3]["error"].get<std::string>().find("job 4 (morph"), std::string::npos);
+  EXPECT_NE(checked["results"][3]["error"].get<std::string>().find("--frames"), std::string::npos);
+  EXPECT_NE(checked["results"][4]["error"].get<std::string>().find("unknown option \"rez\""), std::string::npos);
+  EXPECT_NE(check.err.find("2 of 5 jobs have wrong options; first: job 4"), std::string::npos) << check.err;
+
+  testing::CliResult failFast = testing::runLbmshape({"run", file.string(), "--fail-fast", "--json"});
+  EXPECT_EQ(failFast.exitCode, 2) << failFast.err;
+  nothingWritten("--fail-fast");
+  const auto stopped = nlohmann::json::parse(failFast.out);
+  ASSERT_EQ(stopped["results"].size(), 1u);
+  EXPECT_EQ(stopped["results"][0]["job"], 4);
+  EXPECT_NE(failFast.err.find("found before any job ran"), std::string::npos) << failFast.err;
+
+  testing::CliResult all = testing::runLbmshape({"run", file.string(), "--json"});
+  EXPECT_EQ(all.exitCode, 2) << all.err;
+  const auto lines = testing::nonEmptyLines(all.err);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(all.err.find("2 of 5 jobs have wrong options and will fail when their turn comes"), std::string::npos)
+      << all.err;
+  EXPECT_TRUE(fs::exists(folder / "fine.glb")) << "the right jobs still run";
+
+  jobs.erase(4);
+  jobs.erase(3);
+  fs::remove_all(folder / "frames");
+  testing::CliResult fine = testing::runLbmshape({"run", write(jobs).string(), "--check"});
+  EXPECT_EQ(fine.exitCode, 0) << fine.err;
+  EXPECT_FALSE(fs::exists(folder / "frames")) << "--check runs nothing";
+}
+
 // A key twice in one job, or two jobs writing one output (by different
 // spellings of the path too), would make one silently win: both are refused
 // before any job runs, naming the job and the key or the two jobs.

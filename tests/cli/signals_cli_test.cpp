@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -120,6 +121,50 @@ TEST(StopSignal, TheMessageCountsTheFramesTheFolderHolds)
   const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(message.find("terminated (SIGTERM): " + std::to_string(frames) + " complete frames"), std::string::npos)
       << frames << " frames; " << message;
+}
+
+// A rerun with --force that is stopped leaves the earlier morph's files as
+// they were (its new frames are made in a hidden folder, which goes); before,
+// the earlier files were removed first and neither set was left whole.
+TEST(StopSignal, AStoppedRerunWithForceKeepsTheEarlierMorph)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "a.obj");
+  writeMesh(testing::torusMesh(0.8, 0.3, 32, 16), folder / "b.obj");
+  const fs::path out = folder / "frames", log = folder / "stderr.txt";
+  const std::vector<std::string> morph = {
+      "-q",       "morph", (folder / "a.obj").string(), (folder / "b.obj").string(), out.string(), "--res", "24",
+      "--format", "obj"};
+  std::vector<std::string> first = morph;
+  first.insert(first.end(), {"--frames", "3"});
+  ASSERT_EQ(testing::runLbmshape(first).exitCode, 0);
+  const auto contents = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      files[entry.path().filename().string()] =
+          std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+    return files;
+  };
+  const auto earlier = contents();
+  ASSERT_EQ(earlier.size(), 4u);  // three frames and morph.glb
+
+  std::vector<std::string> rerun = morph;
+  rerun[6] = "40";
+  rerun.insert(rerun.end(), {"--frames", "400", "--no-animation", "--force"});
+  const pid_t pid = testing::spawnLbmshape(rerun, log.string());
+  ASSERT_GT(pid, 0);
+  testing::waitForFile(out / ".lbmshape-new-frames" / "frame_0004.obj", std::chrono::seconds(60));
+  kill(pid, SIGTERM);
+  const int status = testing::waitForExit(pid, std::chrono::seconds(30));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_EQ(contents(), earlier) << "the earlier morph's files, and nothing else";
+  std::ifstream in(log);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("not kept: " + out.string() + " keeps the earlier morph's files"), std::string::npos)
+      << message;
 }
 
 // A jobs file stopped in its second job still reports, with --json, the

@@ -137,6 +137,27 @@ TEST(RoundTrip, GltfKeepsAMeshFarFromTheOriginAndTheOthersRefuseIt)
   for (const auto& node : near["nodes"]) EXPECT_FALSE(node.contains("translation"));
 }
 
+// A mesh whose edges are below single precision's smallest normal numbers
+// collapses whatever the origin: .glb is refused like the others, and the
+// message suggests only .obj (it used to suggest .glb to a .glb output).
+TEST(RoundTrip, AMeshTooSmallForSinglePrecisionIsOnlyOfferedObj)
+{
+  const TriangleMesh tiny = testing::icosphere(2, 1e-44, {0.0, 0.0, 0.0});
+  testing::ScratchFolder folder;
+  for (const char* extension : {".glb", ".ply"}) {
+    const auto path = folder / (std::string("tiny") + extension);
+    try {
+      writeMesh(tiny, path);
+      ADD_FAILURE() << extension << " was written";
+    } catch (const OutputError& e) {
+      EXPECT_NE(std::string(e.what()).find("write .obj, which keeps doubles"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(path)) << extension;
+  }
+  writeMesh(tiny, folder / "tiny.obj");
+  EXPECT_EQ(readMesh(folder / "tiny.obj").triangleCount(), tiny.triangleCount());
+}
+
 TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
 {
   // A box with a fin: a triangle on one of its edges, so that edge has three

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "lbmshape/analysis/mesh_topology.hpp"
@@ -158,6 +160,23 @@ TEST_F(Morph, RefusesANonEmptyFolderUnlessForced)
   o.force = true;
   EXPECT_NO_THROW(morph(o));
   EXPECT_TRUE(std::filesystem::exists(folder / "frames" / "mine.obj")) << "--force only replaces frames";
+}
+
+// A forced morph over a longer one replaces all of its files, and leaves
+// nothing of its own making behind (the hidden folder it made them in).
+TEST_F(Morph, AForcedMorphReplacesAnEarlierLongerOne)
+{
+  MorphOptions o = sphereToTorus();
+  o.frames = 4;
+  morph(o);
+  o.frames = 2;
+  o.force = true;
+  morph(o);
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder / "frames"))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"frame_0000.obj", "frame_0001.obj", "morph.glb"}));
 }
 
 }  // namespace

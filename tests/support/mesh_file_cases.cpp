@@ -264,6 +264,7 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
       {"obj_windows_line_ends_colours_and_w", ".obj",
        "v 0 0 0 1\r\nv 1 0 0 1 0 0\r\nv 0 1 0 0 1 0\r\nv 0 0 1 0.5 0.5 0.5\r\nf 1 3 2\r\nf 1 2 4\r\nf 1 4 3\r\nf 2 3 4",
        "", false},
+      {"obj_face_of_no_corners_skipped", ".obj", tetraObj + "f\n", "", false},
       {"obj_with_byte_order_mark", ".obj", "\xEF\xBB\xBF" + tetraObj, "", false},
       {"obj_line_continuations_and_comments", ".obj",
        "# a tetrahedron\nv 0 0 0 # the origin\nv 1 0 \\\n  0\nv 0 1 0\nv 0 0 1\nf 1 3 2 # base\nf 1 2 \\\n4\nf 1 4 "
@@ -320,6 +321,12 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
          g.json["nodes"] = {{{"translation", {5, 0, 0}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {0, 2, 0}}}};
        }).glb(),
        "", false},
+      {"glb_with_a_chunk_of_an_unknown_type", ".glb", Gltf::tetra().glb() + little(uint32_t(4)) + "XTRA" + "data", "",
+       false},
+      {"gltf_rotation_a_little_off_unit_length", ".gltf", tetraWith([](Gltf& g) {
+                                                            g.json["nodes"][0]["rotation"] = {0, 0, 0, 1.001};
+                                                          }).gltf(),
+       "", false},
       {"gltf_node_chain_100000_deep", ".gltf", [] { return nodeChain(100000).gltf(); }, "", true},
   };
   return cases;
@@ -334,8 +341,11 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"obj_vertex_with_two_coordinates", ".obj", "v 1 2\n" + tetraObj, finite},
       {"obj_vertex_nan", ".obj", "v nan 0 0\n" + tetraObj, finite},
       {"obj_vertex_infinite", ".obj", "v 0 inf 0\n" + tetraObj, finite},
-      {"obj_vertex_beyond_float", ".obj", "v 0 0 1e39\n" + tetraObj, finite},
+      {"obj_vertex_beyond_float", ".obj", "v 0 0 1e39\n" + tetraObj, "magnitude at most 3.4e38"},
       {"obj_vertex_word", ".obj", "v abc 0 0\n" + tetraObj, finite},
+      {"obj_corner_of_three_slashes", ".obj", tetraObj + "f 1///1 2 3\n", "is not of the form v, v/vt, v/vt/vn or v//vn"},
+      {"obj_corner_with_a_word_for_its_normal", ".obj", tetraObj + "f 1 2 3//n\n", "'3//n' is not of the form"},
+      {"obj_bare_v_before_the_vertices", ".obj", "v\n" + tetraObj, "line 1: 'v' is not a vertex"},
       {"obj_index_zero", ".obj", tetraObj + "f 0 1 2\n", "start at 1"},
       {"obj_index_beyond_the_vertices", ".obj", tetraObj + "f 1 2 99\n", "vertex number 99"},
       {"obj_index_beyond_64_bits", ".obj", tetraObj + "f 1 2 99999999999999999999999\n", "has no vertex number"},
@@ -348,6 +358,14 @@ std::vector<MeshFileCase> hostileMeshFiles()
            tetraObj,
        "holds the byte 0xc2"},
       {"obj_empty", ".obj", "", "empty"},
+      {"obj_two_tetrahedra_a_million_apart", ".obj",
+       tetraObj + "v 1e6 0 0\nv 1000001 0 0\nv 1e6 1 0\nv 1e6 0 1\nf 5 7 6\nf 5 6 8\nf 5 8 7\nf 6 7 8\n",
+       "its bounding box is 1e+06 along x but 1 along y: flat on any grid"},
+      // Compressed files, whichever name they were given.
+      {"obj_gzip_compressed", ".obj", std::string("\x1f\x8b\x08\x00", 4) + repeat("x", 200), "gzip-compressed"},
+      {"ply_zip_compressed", ".ply", std::string("PK\x03\x04", 4) + repeat("x", 200), "zip-compressed"},
+      {"stl_gzip_compressed", ".stl", std::string("\x1f\x8b\x08\x00", 4) + repeat("x", 200), "gzip-compressed"},
+      {"glb_xz_compressed", ".glb", std::string("\xfd" "7zXZ\x00", 6) + repeat("x", 200), "xz-compressed"},
       // PLY
       {"ply_property_before_any_element", ".ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n",
        "property before any element"},
@@ -452,6 +470,8 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"stl_binary_of_the_wrong_size", ".stl", stlBinaryTetra("binary").substr(0, 84 + 50 * 3 + 10),
        "header counts 4 triangles"},
       {"stl_too_short_for_anything", ".stl", "abc", "not an STL file"},
+      {"stl_ascii_without_solid", ".stl", stlAsciiTetra(false).substr(stlAsciiTetra(false).find('\n') + 1),
+       "does not begin with 'solid' (it begins with 'facet')"},
       {"stl_binary_with_nan_corners", ".stl",
        "binary" + std::string(74, ' ') + little(uint32_t(1000)) + std::string(50000, '\xff'), "not finite numbers"},
       {"stl_vertex_outside_a_facet", ".stl", "solid x\nvertex 0 0 0\nendsolid x\n", "expected 'facet' or 'endsolid'"},
@@ -590,7 +610,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
          bytes.replace(20 + jsonLength, 4, little(uint32_t(1) << 20));
          return bytes;
        }(),
-       "second GLB chunk claims more bytes"},
+       "GLB chunk 2 claims 1048576 bytes"},
       {"gltf_accessor_of_no_elements_past_its_view", ".gltf", tetraWith([](Gltf& g) {
                                                                 g.json["accessors"][0]["count"] = 0;
                                                                 g.json["accessors"][0]["byteOffset"] =
@@ -621,6 +641,48 @@ std::vector<MeshFileCase> hostileMeshFiles()
          return bytes;
        }(),
        "first GLB chunk"},
+      // Properties of the wrong type or length, which tinygltf reads as
+      // absent: each gave another shape and exit 0.
+      {"gltf_default_scene_that_does_not_exist", ".gltf", tetraWith([](Gltf& g) { g.json["scene"] = 5; }).gltf(),
+       "default scene is scene 5, but it has 1 scene"},
+      {"gltf_node_mesh_as_a_string", ".gltf", tetraWith([](Gltf& g) { g.json["nodes"][0]["mesh"] = "0"; }).gltf(),
+       "node 0's \"mesh\" must be a whole number"},
+      {"gltf_negative_accessor_offset", ".gltf",
+       tetraWith([](Gltf& g) { g.json["accessors"][1]["byteOffset"] = -4; }).gltf(),
+       "accessor 1's \"byteOffset\" must be a whole number of 0 or more; it is -4"},
+      {"gltf_translation_not_all_numbers", ".gltf",
+       tetraWith([](Gltf& g) { g.json["nodes"][0]["translation"] = {"a", 0, 0}; }).gltf(),
+       "\"translation\" must be an array of 3 numbers; it is an array of 3 values, not all numbers"},
+      {"gltf_matrix_of_12_numbers", ".gltf",
+       tetraWith([](Gltf& g) { g.json["nodes"][0]["matrix"] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0}; }).gltf(),
+       "must be an array of 16 numbers; it is an array of 12 numbers"},
+      {"gltf_matrix_beside_a_translation", ".gltf", tetraWith([](Gltf& g) {
+                                                      g.json["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0,
+                                                                                      0, 0, 1, 0, 0, 0, 0, 1};
+                                                      g.json["nodes"][0]["translation"] = {1, 0, 0};
+                                                    }).gltf(),
+       "both a matrix and a translation"},
+      {"gltf_projective_matrix", ".gltf", tetraWith([](Gltf& g) {
+                                            g.json["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0,
+                                                                            0, 0, 1, 1, 0, 0, 0, 1};
+                                          }).gltf(),
+       "matrix is not affine"},
+      {"gltf_rotation_of_zeros", ".gltf",
+       tetraWith([](Gltf& g) { g.json["nodes"][0]["rotation"] = {0, 0, 0, 0}; }).gltf(), "not a unit quaternion"},
+      {"gltf_mode_minus_one", ".gltf",
+       tetraWith([](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = -1; }).gltf(),
+       "mesh 0 primitive 0's \"mode\" must be a whole number"},
+      {"gltf_mode_nine", ".gltf", tetraWith([](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = 9; }).gltf(),
+       "mode 9 is not a glTF primitive mode"},
+      {"glb_of_version_1", ".glb",
+       [] {
+         std::string bytes = Gltf::tetra().glb();
+         return bytes.replace(4, 4, little(uint32_t(1)));
+       }(),
+       "GLB file of version 1"},
+      {"glb_header_alone", ".glb", "glTF" + little(uint32_t(2)) + little(uint32_t(12)), "before any JSON chunk"},
+      {"glb_third_chunk_longer_than_the_file", ".glb",
+       Gltf::tetra().glb() + little(uint32_t(1) << 31) + "XTRA", "chunk 3 claims 2147483648 bytes, but 0 follow"},
       {"glb_count_whose_size_wraps", ".glb",
        tetraWith([](Gltf& g) { g.json["accessors"][0]["count"] = uint64_t(6148914691236517206ull); }).glb(),
        "reads past the end of buffer view"},

@@ -67,13 +67,15 @@ void refuseEmptyValues(CLI::App& app)
 
 int fail(lbmshape::ExitCode code, const std::string& message)
 {
-  // One line of printable text, whatever the message (it may quote a
-  // file's bytes): scripts grep for it, terminals show it.
+  // One line, whatever the message: scripts grep for it, terminals show
+  // it. Control characters go; bytes of 0x80 and up stay, so that a path
+  // in UTF-8 ("scans/ü.obj") is named as it is (a file's own bytes are
+  // quoted printable where a reader quotes them: text::printable).
   std::string line = message;
   for (char& c : line)
     if (c == '\n' || c == '\r' || c == '\t')
       c = ' ';
-    else if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+    else if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) == 0x7f)
       c = '?';
   std::cerr << "lbmshape: error: " << line << std::endl;
   return int(code);

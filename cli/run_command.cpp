@@ -16,6 +16,7 @@
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/mapped_file.hpp"
 #include "job_arguments.hpp"
+#include "job_files.hpp"
 #include "mesh_commands.hpp"
 
 namespace lbmshape::cli {
@@ -63,79 +64,6 @@ struct DuplicateKey {
   size_t job;
   std::string key;
 };
-
-// What a job writes: its output (a file, or a morph's folder) and its
-// preview picture, each as an absolute path without a trailing separator.
-struct JobWrite {
-  fs::path path;
-  size_t job;        // 1-based
-  std::string text;  // as the jobs file gives it
-  bool folder;       // a morph's folder of frames
-};
-
-std::vector<JobWrite> writesOf(const nlohmann::json& jobs, const fs::path& file)
-{
-  std::vector<JobWrite> writes;
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    if (!jobs[i].is_object()) continue;
-    const bool morph = jobs[i].contains("command") && jobs[i]["command"] == "morph";
-    for (const char* key : {"output", "preview"}) {
-      if (!jobs[i].contains(key) || !jobs[i][key].is_string()) continue;
-      std::error_code ec;
-      const fs::path given = fs::absolute(file.parent_path() / jobs[i][key].get<std::string>(), ec);
-      fs::path path = fs::weakly_canonical(given, ec);
-      if (ec) path = given.lexically_normal();
-      if (path.has_relative_path() && path.filename().empty()) path = path.parent_path();  // "frames/" is "frames"
-      writes.push_back({path, i + 1, jobs[i][key].get<std::string>(), morph && std::string(key) == "output"});
-    }
-  }
-  return writes;
-}
-
-// Whether `inner` lies inside folder `outer`.
-bool inside(const fs::path& inner, const fs::path& outer)
-{
-  const auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-  return o == outer.end() && i != inner.end();
-}
-
-// Two jobs writing the same file (the second would replace the first's
-// result), however its path is spelled, or one writing into another's
-// folder of frames, are refused, naming both jobs. Sorted by path, so a
-// jobs file of 200,000 jobs is checked in a moment (pair by pair it took
-// minutes): equal paths lie side by side, and what lies inside a folder
-// comes right after it, paths comparing component by component.
-void requireDistinctOutputs(const nlohmann::json& jobs, const fs::path& file)
-{
-  std::vector<JobWrite> writes = writesOf(jobs, file);
-  // Sorted as strings whose separator sorts before every other character:
-  // the order of comparing component by component, at a string compare's
-  // cost (path's own operator< took 19 s for 200,000 jobs).
-  std::vector<std::pair<std::string, size_t>> keys(writes.size());
-  for (size_t w = 0; w < writes.size(); ++w) {
-    keys[w] = {writes[w].path.generic_string(), w};
-    std::replace(keys[w].first.begin(), keys[w].first.end(), '/', '\x01');
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<JobWrite> sorted;
-  sorted.reserve(writes.size());
-  for (const auto& [key, w] : keys) sorted.push_back(std::move(writes[w]));
-  writes = std::move(sorted);
-  for (size_t a = 0; a + 1 < writes.size(); ++a)
-    for (size_t b = a + 1; b < writes.size() && writes[b].path == writes[a].path; ++b)
-      if (writes[b].job != writes[a].job)
-        throw UsageError(file.string() + ": jobs " + std::to_string(std::min(writes[a].job, writes[b].job)) + " and " +
-                         std::to_string(std::max(writes[a].job, writes[b].job)) + " both write " + writes[b].text);
-  for (size_t a = 0; a < writes.size(); ++a) {
-    const JobWrite& folder = writes[a];
-    if (!folder.folder) continue;
-    for (size_t b = a + 1; b < writes.size() && (writes[b].path == folder.path || inside(writes[b].path, folder.path));
-         ++b)
-      if (writes[b].job != folder.job && writes[b].path != folder.path)
-        throw UsageError(file.string() + ": job " + std::to_string(writes[b].job) + " writes " + writes[b].text +
-                         " into job " + std::to_string(folder.job) + "'s folder of frames " + folder.text);
-  }
-}
 
 // Reads a jobs file's JSON as events, before it is parsed into values: a
 // key given twice in one object (JSON would keep the last silently), and
@@ -338,6 +266,8 @@ void runJobs(CommonOptions& common, const RunArguments& a)
   const fs::path base = file.parent_path();
   size_t jobsInPart = 0;
   for (size_t i = 0; i < jobs.size(); ++i) jobsInPart += shard.holds(i + 1);
+  warnOfReadsBeforeTheirWrites(
+      jobs, file, [&shard](size_t job) { return shard.holds(job); }, !a.shard.empty());
   const std::map<size_t, std::string> wrong = jobsWithUsageErrors(jobs, base, common, shard);
   if (a.checkOnly) return reportCheck(common, a, jobs, shard, wrong, jobsInPart);
   if (!wrong.empty()) {

@@ -91,6 +91,11 @@ class Denoise(unittest.TestCase):
         _, _, by_radius = lbmshape.denoise(v, f, res=40, radius=0.1, report=True)
         self.assertEqual(by_radius["steps_chosen"], "radius")
         self.assertEqual(by_radius["radius"], 0.1)
+        # A call's warnings are in its report, not only on stderr.
+        self.assertEqual(report["warnings"], [])
+        _, _, warned = lbmshape.denoise(v, f, res=40, gamma=1, steps=3, report=True)
+        self.assertEqual(len(warned["warnings"]), 1)
+        self.assertIn("smooths 61.8 % less than the diffusion equation", warned["warnings"][0])
 
     def test_the_distances_on_the_device_give_the_same_mesh(self):
         v, f = noisy_sphere()

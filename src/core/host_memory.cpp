@@ -57,13 +57,19 @@ uint64_t hostMemoryBytes()
 
 bool addressSpaceUnlimited() { return !addressSpaceLimit(); }
 
+int hostLongestSideThatFits(double neededBytes, const Extent3& extent, double power, double fixedBytes)
+{
+  const double allowed = double(hostMemoryBytes());
+  return allowed > fixedBytes ? longestSideThatFits(extent, neededBytes - fixedBytes, allowed - fixedBytes, power) : 0;
+}
+
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power,
-                     double fixedBytes)
+                     double fixedBytes, int cap)
 {
   const double allowed = double(hostMemoryBytes());
   if (neededBytes <= allowed) return;
   const std::string fits = allowed > fixedBytes
-                               ? gridThatWouldFit(extent, neededBytes - fixedBytes, allowed - fixedBytes, power)
+                               ? gridThatWouldFit(extent, neededBytes - fixedBytes, allowed - fixedBytes, power, cap)
                                : "no grid would fit beside the " + mebibytes(uint64_t(fixedBytes)) +
                                      " that any needs; raise the memory limit";
   throw DeviceError(what + " needs about " + mebibytes(uint64_t(neededBytes)) + " but this machine allows " +

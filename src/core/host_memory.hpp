@@ -5,6 +5,8 @@
 // device checks do for device memory.
 #pragma once
 
+#include <climits>
+
 #include <cstdint>
 #include <string>
 
@@ -18,9 +20,13 @@ uint64_t hostMemoryBytes();
 // needs about N MiB but this machine allows M MiB; a grid of about ...
 // would fit" (gridThatWouldFit, for a job on `extent` whose size grows as
 // its side to the power `power`, but for `fixedBytes` of it that any grid
-// needs).
+// needs). `cap` bounds the grid named (gridThatWouldFit).
 void checkHostMemory(double neededBytes, const std::string& what, const Extent3& extent, double power,
-                     double fixedBytes = 0.0);
+                     double fixedBytes = 0.0, int cap = INT32_MAX);
+
+// The longest side of the grid checkHostMemory would name for such a job
+// (0 when none fits), whether or not this one fits.
+int hostLongestSideThatFits(double neededBytes, const Extent3& extent, double power, double fixedBytes = 0.0);
 
 // Whether the process may map memory without limit (no `ulimit -v`).
 bool addressSpaceUnlimited();

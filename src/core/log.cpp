@@ -44,7 +44,18 @@ void verbose(const std::string& m)
 {
   if (currentLevel >= Level::Verbose) emit("lbmshape: ", m);
 }
-void warning(const std::string& m) { emit("lbmshape: warning: ", m); }
+namespace {
+thread_local WarningCollector* innermostCollector = nullptr;
+}
+
+WarningCollector::WarningCollector() : outer_(innermostCollector) { innermostCollector = this; }
+WarningCollector::~WarningCollector() { innermostCollector = outer_; }
+
+void warning(const std::string& m)
+{
+  emit("lbmshape: warning: ", m);
+  if (innermostCollector) innermostCollector->warnings_.push_back(m);
+}
 
 void progress(const std::string& m)
 {

@@ -16,10 +16,16 @@ std::string mebibytes(uint64_t bytes)
   return s.str();
 }
 
-std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power)
+int longestSideThatFits(const Extent3& extent, double needed, double allowed, double power)
 {
   const int longest = std::max({extent.nx, extent.ny, extent.nz});
-  const int fits = int(std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power)));
+  const double fits = std::floor(0.95 * longest * std::pow(allowed / needed, 1.0 / power));
+  return int(std::clamp(fits, 0.0, double(INT32_MAX)));
+}
+
+std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power, int cap)
+{
+  const int fits = std::min(cap, longestSideThatFits(extent, needed, allowed, power));
   return "a grid of about " + std::to_string(fits) + " cells along its longest side (" + nameOf(Parameter::Resolution) +
          " " + std::to_string(fits) + ") would fit";
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <unistd.h>
 
 #include "lbmshape/core/log.hpp"
@@ -22,6 +23,11 @@ ProgressTiming ProgressTiming::current()
       const double bounded = std::clamp(value, 0.0, 86400e3);
       return {bounded, std::max(bounded, 1.0)};
     }
+    static std::once_flag said;  // once a process, not once a stage
+    std::call_once(said, [ms] {
+      log::warning("LBMSHAPE_PROGRESS_MS=" + std::string(ms) +
+                   " is not a number of milliseconds; ignored (0 shows every stage's progress)");
+    });
   }
   // A terminal line is rewritten in place, so it can change often; a log
   // file keeps every line, so it gets fewer.

@@ -558,20 +558,27 @@ uint64_t BandVulkanSolver::maxCells(const gpu::DeviceDescription& device, bool p
   return most / brickCells * brickCells;
 }
 
+int BandVulkanSolver::longestSideThatFits(const BrickSet& bricks, const gpu::DeviceDescription& device,
+                                          bool perCellOmega, bool source)
+{
+  // The band's cells grow with the surface's area: as the square of the
+  // grid's longest side.
+  return lbmshape::longestSideThatFits(bricks.cells(), double(bricks.storedCells()),
+                                       double(maxCells(device, perCellOmega, source)), 2.0);
+}
+
 void BandVulkanSolver::checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega,
-                                 bool source)
+                                 bool source, int cap)
 {
   const uint64_t cells = bricks.storedCells();
   const uint64_t most = maxCells(device, perCellOmega, source);
   if (cells <= most) return;
-  // The band's cells grow with the surface's area: as the square of the
-  // grid's longest side.
   const Extent3 e = bricks.cells();
   const double perCell = deviceBytesPerCell(perCellOmega, source);
   throw DeviceError("the narrow band of this " + e.toString() + " grid needs " + std::to_string(cells) + " cells (" +
                     mebibytes(uint64_t(double(cells) * perCell)) + ") but " + device.name + " holds at most " +
                     std::to_string(most) + " (" + mebibytes(uint64_t(double(most) * perCell)) + "); " +
-                    gridThatWouldFit(e, double(cells), double(most), 2.0));
+                    gridThatWouldFit(e, double(cells), double(most), 2.0, cap));
 }
 
 std::string BandVulkanSolver::backendName() const { return "vulkan band (" + r_->context.description().name + ")"; }

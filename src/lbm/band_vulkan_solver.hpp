@@ -2,6 +2,8 @@
 // (shaders/band_step.comp), tested against BandReferenceSolver.
 #pragma once
 
+#include <climits>
+
 #include <cstdint>
 #include <memory>
 
@@ -66,7 +68,13 @@ public:
   static uint64_t maxCells(const gpu::DeviceDescription& device, bool perCellOmega, bool source);
   // Throws DeviceError when a band on `bricks` exceeds maxCells(), saying
   // what it needs and about what grid would fit.
-  static void checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega, bool source);
+  // The grid named is at most `cap` along its longest side (the host's, for
+  // a device that is the CPU: memory_sizes.hpp).
+  static void checkFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega, bool source,
+                        int cap = INT32_MAX);
+  // The longest side checkFits names for a band like `bricks`'s.
+  static int longestSideThatFits(const BrickSet& bricks, const gpu::DeviceDescription& device, bool perCellOmega,
+                                 bool source);
 
 private:
   void startFrom(BandField field);

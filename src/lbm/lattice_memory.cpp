@@ -80,13 +80,18 @@ int longestThatFits(const Extent3& extent, const gpu::DeviceDescription& device)
 
 }  // namespace
 
-void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device)
+int latticeLongestSideThatFits(const Extent3& extent, const gpu::DeviceDescription& device)
+{
+  // 3 % below the largest that fits in these proportions: a coarser --res
+  // keeps the margins' voxels, so its shorter sides shrink a little less.
+  return int(0.97 * longestThatFits(extent, device));
+}
+
+void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device, int cap)
 {
   const std::string why = whyItDoesNotFit(layout, device);
   if (why.empty()) return;
-  // 3 % below the largest that fits in these proportions: a coarser --res
-  // keeps the margins' voxels, so its shorter sides shrink a little less.
-  const int fits = int(0.97 * longestThatFits(layout.extent, device));
+  const int fits = std::min(cap, latticeLongestSideThatFits(layout.extent, device));
   throw DeviceError("a " + layout.extent.toString() + " lattice does not fit on " + device.name + ": " + why + "; " +
                     (fits > 0 ? "a grid of about " + std::to_string(fits) + " cells along its longest side (" +
                                     nameOf(Parameter::Resolution) + " " + std::to_string(fits) +

@@ -4,6 +4,8 @@
 // not a driver crash.
 #pragma once
 
+#include <climits>
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -79,7 +81,12 @@ void checkExtent(const Extent3& extent);
 
 LatticeLayout latticeLayout(const Extent3& extent);
 
-// Throws UsageError naming the limit when the lattice does not fit the device.
-void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device);
+// Throws DeviceError naming the limit when the lattice does not fit the
+// device, and the grid that would, its longest side at most `cap` (the
+// host's, for a device that is the CPU: memory_sizes.hpp).
+void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& device, int cap = INT32_MAX);
+
+// The longest side checkFitsDevice names for a grid of `extent`'s proportions.
+int latticeLongestSideThatFits(const Extent3& extent, const gpu::DeviceDescription& device);
 
 }  // namespace lbmshape

@@ -61,6 +61,14 @@ void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path
       throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");
   for (const auto& p : mesh.positions)
     if (!isFinite(p)) throw OutputError(prefix + " has a coordinate that is not a finite number");
+  // Even where the format keeps doubles (OBJ): lbmshape's readers take
+  // nothing beyond single precision (text_scan.hpp), so such a file (noise
+  // of --sigma 1e200) could not be read back.
+  const double largest = double(std::numeric_limits<float>::max());
+  for (const auto& p : mesh.positions)
+    if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(largest))))
+      throw OutputError(prefix + " has a coordinate beyond " + threeSignificantDigits(largest) +
+                        ", single precision's largest, which lbmshape could not read back");
   if (precision != CoordinatePrecision::Double) requireSinglePrecisionHolds(mesh, path, prefix, precision);
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +

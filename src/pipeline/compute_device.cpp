@@ -241,10 +241,14 @@ void ComputeDevice::checkFits(const Extent3& extent) const
 {
   LatticeLayout layout = latticeLayout(extent);
   if (!isReference()) {
-    checkFitsDevice(layout, description());
-    if (description().isCpu())
-      checkHostMemory(double(layout.totalBytes) + driverBytesBeside,
-                      "the " + extent.toString() + " lattice on " + description().name, extent, 3.0, driverBytesBeside);
+    // On a device that is the CPU, two limits: each check names a grid that fits both.
+    const bool cpu = description().isCpu();
+    const double hostBytes = double(layout.totalBytes) + driverBytesBeside;
+    checkFitsDevice(layout, description(),
+                    cpu ? hostLongestSideThatFits(hostBytes, extent, 3.0, driverBytesBeside) : INT32_MAX);
+    if (cpu)
+      checkHostMemory(hostBytes, "the " + extent.toString() + " lattice on " + description().name, extent, 3.0,
+                      driverBytesBeside, latticeLongestSideThatFits(extent, description()));
     return;
   }
   checkHostMemory(gridReferenceBytesPerCell * double(extent.cells()),
@@ -285,14 +289,19 @@ std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const 
 void ComputeDevice::checkBandFits(const BrickSet& bricks, bool perCellOmega, bool source) const
 {
   if (!isReference()) {
-    BandVulkanSolver::checkFits(bricks, description(), perCellOmega, source);
     // The staging buffer's size is the same on any grid.
     const double cellBytes = BandVulkanSolver::deviceBytesPerCell(perCellOmega, source) * double(bricks.storedCells());
     const double fixedBytes = driverBytesBeside + double(BandVulkanSolver::defaultStagingBytes);
-    if (description().isCpu())
+    // On a device that is the CPU, two limits: each check names a grid that fits both.
+    const bool cpu = description().isCpu();
+    BandVulkanSolver::checkFits(
+        bricks, description(), perCellOmega, source,
+        cpu ? hostLongestSideThatFits(cellBytes + fixedBytes, bricks.cells(), 2.0, fixedBytes) : INT32_MAX);
+    if (cpu)
       checkHostMemory(cellBytes + fixedBytes,
                       "the narrow band of " + std::to_string(bricks.storedCells()) + " cells on " + description().name,
-                      bricks.cells(), 2.0, fixedBytes);
+                      bricks.cells(), 2.0, fixedBytes,
+                      BandVulkanSolver::longestSideThatFits(bricks, description(), perCellOmega, source));
     return;
   }
   checkHostMemory(

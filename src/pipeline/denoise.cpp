@@ -558,9 +558,10 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology,
   // The volume the output keeps where the input's own is known: a closed
   // manifold facing out (one facing in has no inside, winding number -1,
   // and is refused once its distances are known).
-  const std::optional<double> meshVolume = o.keepVolume && topology.closedManifold && topology.signedVolume > 0.0
-                                               ? std::optional(topology.signedVolume)
-                                               : std::nullopt;
+  // (Set by an if: GCC 12 took the conditional expression's optional for
+  // maybe uninitialized.)
+  std::optional<double> meshVolume;
+  if (o.keepVolume && topology.closedManifold && topology.signedVolume > 0.0) meshVolume = topology.signedVolume;
   const SurfaceFinish relax = [&](TriangleMesh& triangles) {
     if (o.relaxRounds == 0) return;
     const RelaxationSummary relaxed = clock.time("relax", [&] { return relaxTriangles(triangles, o.relaxRounds); });
@@ -635,6 +636,7 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& o,
                           const ComputeDevice& device)
 {
+  const log::WarningCollector warnings;
   const interrupt::CallStop ownStop(o.stop);
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
@@ -650,12 +652,14 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
   describeTheMeshes(smoothed.report, checked, inputTopology, smoothed.mesh);
   smoothed.report["ms"] = clock.toJson();
   smoothed.report["device_ms"] = clock.deviceToJson();
+  smoothed.report["warnings"] = warnings.warnings();
   return smoothed;
 }
 
 DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesystem::path& output,
                           const DenoiseOptions& o, const ComputeDevice& device)
 {
+  const log::WarningCollector warnings;
   const interrupt::CallStop ownStop(o.stop);
   checkDenoiseOptions(o);
   warnIfFewGivenSteps(o);
@@ -699,6 +703,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   report["ms"] = clock.toJson();
   report["device_ms"] = clock.deviceToJson();
   report["preview"] = o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr);
+  report["warnings"] = warnings.warnings();
   return smoothed;
 }
 

@@ -10,19 +10,14 @@
 #include <system_error>
 #include <tuple>
 
-#include <unistd.h>  // access
-
 #include "lbmshape/analysis/mesh_topology.hpp"
 #include "lbmshape/analysis/surface_comparison.hpp"
-#include "lbmshape/core/atomic_file.hpp"
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/number_text.hpp"
 #include "lbmshape/core/parameter_names.hpp"
-#include "lbmshape/core/folder_lock.hpp"
 #include "lbmshape/core/parameter_bounds.hpp"
 #include "lbmshape/core/host_memory.hpp"
 #include "lbmshape/core/interrupt.hpp"
-#include "lbmshape/core/temporary_files.hpp"
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/stopwatch.hpp"
 #include "lbmshape/lbm/relaxation.hpp"
@@ -35,6 +30,7 @@
 #include "lbmshape/pipeline/input_orientation.hpp"
 #include "lbmshape/pipeline/interruptible_steps.hpp"
 #include "lbmshape/pipeline/morph_frame_report.hpp"
+#include "lbmshape/pipeline/morph_folder.hpp"
 #include "lbmshape/pipeline/morph_lattice.hpp"
 #include "lbmshape/pipeline/morph_schedule.hpp"
 #include "lbmshape/pipeline/parts_check.hpp"
@@ -120,34 +116,6 @@ void writeMorphPreview(const TriangleMesh& source, const TriangleMesh& target, c
   writePreview(shown, render::parseView("iso"), png, device);
 }
 
-// The output folder may be missing or empty; a non-empty one only with
-// --force. Checked before anything else, changes nothing.
-// Before any work: the folder is a folder, empty unless --force, no other
-// lbmshape writes into it (the lock is held from here on), and it, or the
-// folder it will be made in, is writable.
-std::optional<FolderLock> checkFolder(const fs::path& folder, bool force)
-{
-  std::error_code ec;
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-    throw OutputError("cannot write frames to " + folder.string() + ": it is a file, not a folder");
-  if (fs::is_directory(folder, ec)) {
-    std::optional<FolderLock> lock(std::in_place, folder);
-    if (!fs::is_empty(folder, ec) && !force)
-      throw OutputError(folder.string() + " is not empty; use " + nameOf(Parameter::Force) +
-                        " to write the frames into it anyway");
-    AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
-    return lock;
-  }
-  fs::path existing = fs::absolute(folder, ec).parent_path();
-  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
-    existing = existing.parent_path();
-  if (!fs::is_directory(existing, ec))
-    throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not a folder");
-  if (::access(existing.c_str(), W_OK | X_OK) != 0)
-    throw OutputError("cannot create the folder " + folder.string() + ": " + existing.string() + " is not writable");
-  return std::nullopt;
-}
-
 // A source or target that is one of the folder's frames (a morph continued
 // from the last frame of another into the same folder) would be removed or
 // replaced by the frames: refused before any work.
@@ -160,74 +128,6 @@ void refuseInputsTheFramesReplace(const fs::path& folder, const fs::path& source
                        " is one of the files a morph writes there (frame_*, morph.glb), which it would replace; "
                        "copy it elsewhere or write the frames to another folder");
 }
-
-// Creates the folder. With --force, the files an earlier morph wrote there
-// (frame_*, morph.glb) are replaced once this one is complete
-// (StagedFrames), so that no frame of an earlier, longer run stays behind.
-void prepareFolder(const fs::path& folder)
-{
-  std::error_code ec;
-  {
-    const temporary_files::Creation creation;  // the new folders are listed (FolderIfLeftEmpty)
-    fs::create_directories(folder, ec);
-  }
-  if (ec) throw OutputError("cannot create the folder " + folder.string() + ": " + ec.message());
-  AtomicFile probe(folder / "morph.glb");  // throws OutputError if the folder is not writable
-}
-
-// The output folder, if this morph created it, goes again when the morph
-// fails while it is still empty (before its first frame): a failed morph
-// leaves no empty folder behind. Frames already written stay, as after
-// Ctrl-C. Listed with the temporary files too, for a process that ends
-// without unwinding.
-class FolderIfLeftEmpty {
-public:
-  // `folder` and any of its parents that do not exist yet count as this
-  // morph's: the topmost of them is what goes.
-  explicit FolderIfLeftEmpty(const fs::path& folder) : folder_(folder)
-  {
-    std::error_code ec;
-    for (fs::path p = fs::absolute(folder, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
-         p = p.parent_path()) {
-      topmostNew_ = p;
-      if (p == p.parent_path()) break;
-    }
-  }
-  ~FolderIfLeftEmpty()
-  {
-    for (int ticket : tickets_) temporary_files::forget(ticket);
-    if (kept_ || topmostNew_.empty()) return;
-    // Only empty folders go, from the morph's own folder up to the topmost new one.
-    std::error_code ec;
-    for (fs::path p = fs::absolute(folder_, ec).lexically_normal();; p = p.parent_path()) {
-      if (!fs::is_empty(p, ec) || !fs::remove(p, ec) || p == topmostNew_ || p == p.parent_path()) break;
-    }
-  }
-  FolderIfLeftEmpty(const FolderIfLeftEmpty&) = delete;
-  FolderIfLeftEmpty& operator=(const FolderIfLeftEmpty&) = delete;
-
-  // Lists the new folders, the morph's own first, for a process that ends
-  // without unwinding (a second Ctrl-C, a library's abort), which removes
-  // each that exists and is empty, in turn. Called before they are made:
-  // listed only after, an abort in between left them
-  // (LastResort.AnAbortBeforeTheFirstFrameLeavesNoNewFolder, now and then).
-  void listForLastResort()
-  {
-    if (topmostNew_.empty()) return;
-    std::error_code ec;
-    for (fs::path p = fs::absolute(folder_, ec).lexically_normal();; p = p.parent_path()) {
-      tickets_.push_back(temporary_files::remember(p));
-      if (p == topmostNew_ || p == p.parent_path()) break;
-    }
-  }
-  void keep() { kept_ = true; }
-
-private:
-  fs::path folder_;
-  fs::path topmostNew_;  // empty when the folder existed
-  bool kept_ = false;
-  std::vector<int> tickets_;
-};
 
 // "5 to 9, 12": frame numbers in ascending order, runs shortened.
 std::string frameRanges(const std::vector<int>& frames)
@@ -297,11 +197,9 @@ void checkMorphOptions(const MorphOptions& o)
 namespace {
 
 // Where a morph's frames go: files in a folder, with the animation and the
-// preview (`folder`, and `lock` when checkFolder took the folder's lock),
-// or a program's FrameSink.
+// preview, or a program's FrameSink.
 struct FrameDestination {
-  const fs::path* folder = nullptr;
-  std::optional<FolderLock>* lock = nullptr;
+  MorphFolder* folder = nullptr;
   const FrameSink* sink = nullptr;
 };
 
@@ -363,15 +261,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const double colourScale = o.colourByCurvature ? render::curvatureScale(targetLevel) : 0.0;
   if (o.colourByCurvature) reportCurvatureColours(colourScale, "the target's");
   MorphFrameReport frameReport(std::move(targetLevel), frame, o.frames, o.frameFigures);
-  std::optional<FolderIfLeftEmpty> newFolder;
   std::optional<StagedFrames> staged;
-  if (to.folder) {
-    newFolder.emplace(*to.folder);
-    newFolder->listForLastResort();  // before they exist: an abort as they are made still removes them
-    prepareFolder(*to.folder);       // only now: a bad input leaves no folder behind
-    if (!*to.lock) to.lock->emplace(*to.folder);
-    staged.emplace(*to.folder);
-  }
+  if (to.folder) staged.emplace(to.folder->path());
   const std::optional<fs::path> framesFolder =
       staged ? std::optional<fs::path>(staged->destination()) : std::optional<fs::path>();
   lattice->start(device, o, schedule, clock);
@@ -422,8 +313,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     const std::string done = std::to_string(count) + " complete frames";
     if (!to.folder) return done;
     return done + (staged->replacesEarlierFiles()
-                       ? ", not kept: " + to.folder->string() + " keeps the earlier morph's files"
-                       : " in " + to.folder->string());
+                       ? ", not kept: " + to.folder->path().string() + " keeps the earlier morph's files"
+                       : " in " + to.folder->path().string());
   };
   const std::function<std::string()> whatWasDone = [&] {
     return framesDone(writer.stop()) + " (at step " + std::to_string(solver.stepsTaken()) + " of " +
@@ -544,7 +435,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     clock.time("preview",
                [&] { writeMorphPreview(source, target, meshes, sourcePath, targetPath, *o.preview, device); });
 
-  if (newFolder) newFolder->keep();
+  if (to.folder) to.folder->keep();
   const bool converged = lastError < o.tolerance;
   if (!converged && !stepsGiven(o))
     log::warning("the last frame is still up to " + std::to_string(lastError) + " voxels from the target's field (" +
@@ -571,7 +462,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       {"command", "morph"},
       {"source", sourcePath.string()},
       {"target", targetPath.string()},
-      {"folder", to.folder ? nlohmann::json(to.folder->string()) : nlohmann::json(nullptr)},
+      {"folder", to.folder ? nlohmann::json(to.folder->path().string()) : nlohmann::json(nullptr)},
       {"frames", o.frames},
       // The steps the frames were made at: the schedule's, but where the
       // lattice stopped early on arriving (given steps), the step it
@@ -621,7 +512,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         {"genus", last.genus ? nlohmann::json(*last.genus) : nlohmann::json(nullptr)},
         {"triangles", meshes.back().triangleCount()}}},
       {"animation",
-       to.folder && o.animation ? nlohmann::json((*to.folder / "morph.glb").string()) : nlohmann::json(nullptr)},
+       to.folder && o.animation ? nlohmann::json((to.folder->path() / "morph.glb").string()) : nlohmann::json(nullptr)},
       {"curvature_scale", o.colourByCurvature ? nlohmann::json(colourScale) : nlohmann::json(nullptr)},
       {"preview", to.folder && o.preview ? nlohmann::json(o.preview->string()) : nlohmann::json(nullptr)}};
 }
@@ -631,22 +522,26 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
 nlohmann::json morphFiles(const fs::path& sourcePath, const fs::path& targetPath, const fs::path& folder,
                           const MorphOptions& o, const ComputeDevice& device)
 {
+  const log::WarningCollector warnings;
   const interrupt::CallStop ownStop(o.stop);
   checkMorphOptions(o);
-  std::optional<FolderLock> lock = checkFolder(folder, o.force);
+  MorphFolder out(folder, o.force);  // made and locked now: a second lbmshape fails before any work
   refuseInputsTheFramesReplace(folder, sourcePath, targetPath);
   const ComputeDevice::Turn turn = device.takeTurn();
   if (o.preview) checkPreview(*o.preview, device, folder);
   StageClock clock([&device] { return device.deviceBusyMs(); });
   TriangleMesh source = clock.time("read", [&] { return readMesh(sourcePath); });
   TriangleMesh target = clock.time("read", [&] { return readMesh(targetPath); });
-  return runMorph(std::move(source), std::move(target), sourcePath, targetPath, o, device, clock,
-                  {.folder = &folder, .lock = &lock});
+  nlohmann::json report =
+      runMorph(std::move(source), std::move(target), sourcePath, targetPath, o, device, clock, {.folder = &out});
+  report["warnings"] = warnings.warnings();
+  return report;
 }
 
 nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& target, const MorphOptions& options,
                            const ComputeDevice& device, const FrameSink& sink)
 {
+  const log::WarningCollector warnings;
   const interrupt::CallStop ownStop(options.stop);
   MorphOptions o = options;
   o.animation = false;  // about files: the program has every frame
@@ -662,8 +557,10 @@ nlohmann::json morphMeshes(const TriangleMesh& source, const TriangleMesh& targe
     const ComputeDevice::FrameSinkOf callsFromTheSink(device);
     sink(frame, mesh);
   };
-  return runMorph(std::move(checkedSource), std::move(checkedTarget), "the source mesh", "the target mesh", o, device,
-                  clock, {.sink = &guarded});
+  nlohmann::json report = runMorph(std::move(checkedSource), std::move(checkedTarget), "the source mesh",
+                                   "the target mesh", o, device, clock, {.sink = &guarded});
+  report["warnings"] = warnings.warnings();
+  return report;
 }
 
 }  // namespace lbmshape

@@ -8,6 +8,7 @@ target_sources(lbmshape_lib PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/input_orientation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interruptible_steps.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/morph_folder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_frame_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_front.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_schedule.cpp

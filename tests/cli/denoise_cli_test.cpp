@@ -413,6 +413,28 @@ TEST(DenoiseCli, ABandTooLargeForTheDeviceIsRefusedBeforeItsDistances)
   }
 }
 
+// On a device that is the CPU a band meets two limits, the device's and the
+// host's (here an address-space limit): the grid a refusal names fits both.
+// It used to name the device's alone (--res 781 under ulimit -v 800000),
+// which the host's check then refused, naming another.
+TEST(DenoiseCli, TheGridARefusalNamesFitsEveryLimit)
+{
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
+  const auto info = nlohmann::json::parse(testing::runLbmshape({"info", "--json"}).out);
+  const auto& device = info["devices"][info["selected"].get<size_t>()];
+  if (device["type"] != "cpu") GTEST_SKIP() << device["name"] << " is no CPU: the host's memory is not its limit";
+  testing::ScratchFolder folder;
+  const std::string input = sphereObj(folder.path()), output = (folder / "out.glb").string();
+  const testing::CliResult refused = testing::runLbmshapeWithin(600, {"-q", "denoise", input, output, "--res", "1200"});
+  ASSERT_EQ(refused.exitCode, 5) << refused.err;
+  const size_t at = refused.err.find("(--res ");
+  ASSERT_NE(at, std::string::npos) << refused.err;
+  const std::string named = std::to_string(std::stoi(refused.err.substr(at + 7)));
+  const testing::CliResult fits =
+      testing::runLbmshapeWithin(600, {"-q", "denoise", input, output, "--res", named, "--steps", "0"});
+  EXPECT_EQ(fits.exitCode, 0) << "--res " << named << ", named by: " << refused.err << "\n" << fits.err;
+}
+
 // Writing over the input mesh, by its own path or through a link, is
 // refused before any work unless asked for with --force.
 TEST(DenoiseCli, WarnsOnlyWhenGammaAndStepsAreOutsideTheAccurateRange)
@@ -435,6 +457,27 @@ TEST(DenoiseCli, WarnsOnlyWhenGammaAndStepsAreOutsideTheAccurateRange)
             std::string::npos)
       << warnings[0];
   EXPECT_NE(warnings[0].find("more steps at a smaller --gamma"), std::string::npos) << warnings[0];
+
+  // --json's report lists the warnings too, for a script that drops stderr;
+  // in a jobs file, each job's report its own.
+  const testing::CliResult json = testing::runLbmshape(
+      {"denoise", input, output, "--res", "24", "--gamma", "1", "--steps", "3", "--force", "--json"});
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const auto report = nlohmann::json::parse(json.out);
+  ASSERT_EQ(report["warnings"].size(), 1u) << report["warnings"];
+  EXPECT_EQ("lbmshape: warning: " + report["warnings"][0].get<std::string>(), warnings[0]);
+  const testing::CliResult quiet = testing::runLbmshape({"denoise", input, output, "--res", "24", "--force", "--json"});
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ(nlohmann::json::parse(quiet.out)["warnings"], nlohmann::json::array());
+  const fs::path jobs = folder / "jobs.json";
+  std::ofstream(jobs) << nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", input}, {"output", output}, {"res", 24}, {"gamma", 1}, {"steps", 3}},
+       {{"command", "denoise"}, {"input", input}, {"output", output + ".obj"}, {"res", 24}}});
+  const testing::CliResult run = testing::runLbmshape({"run", jobs.string(), "--json"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto results = nlohmann::json::parse(run.out)["results"];
+  EXPECT_EQ(results[0]["report"]["warnings"].size(), 1u) << results[0]["report"]["warnings"];
+  EXPECT_EQ(results[1]["report"]["warnings"].size(), 0u) << results[1]["report"]["warnings"];
 }
 
 // A ring thinner than the grid resolves vanishes in the smoothing: the user

@@ -152,6 +152,40 @@ TEST_F(JobsFile, WrongOptionsAreFoundBeforeAnyJobRuns)
   EXPECT_FALSE(fs::exists(folder / "frames")) << "--check runs nothing";
 }
 
+// A job that reads what another job writes after it, or in another part of
+// --shard (the parts run side by side), is warned about, naming both jobs:
+// it would read an older file, or none. A frame in a morph's folder counts
+// as what the morph writes.
+TEST_F(JobsFile, AJobThatReadsAnotherJobsLaterOutputIsWarnedAbout)
+{
+  const nlohmann::json jobs = nlohmann::json::array({
+      {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"res", 16}},
+      {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "b.glb"}, {"res", 16}},
+      {{"command", "morph"}, {"source", "a.glb"}, {"target", "./b.glb"}, {"output", "m"}, {"res", 16}},
+      {{"command", "morph"}, {"source", "m/frame_0001.glb"}, {"target", "c.glb"}, {"output", "m2"}, {"res", 16}},
+      {{"command", "denoise"}, {"input", "torus.obj"}, {"output", "c.glb"}, {"res", 16}},
+  });
+  const fs::path file = write(jobs);
+  const testing::CliResult whole = testing::runLbmshape({"run", file.string(), "--check"});
+  EXPECT_EQ(whole.exitCode, 0) << whole.err;
+  auto warnings = [](const std::string& err) {
+    std::vector<std::string> found;
+    for (const std::string& line : testing::nonEmptyLines(err))
+      if (line.find("warning: job") != std::string::npos) found.push_back(line);
+    return found;
+  };
+  ASSERT_EQ(warnings(whole.err).size(), 1u) << "only job 4 reads a later job's output\n" << whole.err;
+  EXPECT_NE(warnings(whole.err)[0].find("job 4 reads c.glb, which job 5 writes after it"), std::string::npos)
+      << whole.err;
+
+  const testing::CliResult part = testing::runLbmshape({"run", file.string(), "--check", "--shard", "1/2"});
+  EXPECT_EQ(part.exitCode, 0) << part.err;
+  ASSERT_EQ(warnings(part.err).size(), 1u) << "job 3 of part 1 reads job 2's output, of part 2\n" << part.err;
+  EXPECT_NE(warnings(part.err)[0].find("job 3 reads ./b.glb, which job 2 writes in another part of --shard"),
+            std::string::npos)
+      << part.err;
+}
+
 // A key twice in one job, or two jobs writing one output (by different
 // spellings of the path too), would make one silently win: both are refused
 // before any job runs, naming the job and the key or the two jobs.

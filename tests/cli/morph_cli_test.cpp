@@ -3,12 +3,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
 #include <fstream>
 #include <map>
+
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -384,6 +387,34 @@ TEST_F(MorphCli, ASecondMorphIntoTheSameFolderIsRefused)
   EXPECT_GE(expectOnlyCompleteFrames(out), 2);
 }
 
+// Two morphs started together on a folder that does not exist yet: one
+// makes and locks it before any work, the other is refused (exit 4, before
+// any work), and the winner's frames are all there. Before, each took the
+// folder for its own new one, the loser removed it while it was empty, and
+// the winner could exit 0 with its frames gone.
+TEST_F(MorphCli, TwoMorphsIntoOneNewFolderLeaveTheWinnersFrames)
+{
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const fs::path out = folder / ("new" + std::to_string(attempt)) / "frames";
+    const fs::path log = folder / ("first" + std::to_string(attempt) + ".txt");
+    const pid_t first = spawnLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "32", "--frames", "6",
+                                       "--format", "obj", "--no-animation"},
+                                      log.string());
+    ASSERT_GT(first, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20 * attempt));
+    testing::CliResult second = testing::runLbmshape({"-q", "morph", sphere, torus, out.string(), "--res", "24",
+                                                      "--frames", "3", "--format", "obj", "--no-animation"});
+    const int status = waitForExit(first, std::chrono::seconds(120));
+    ASSERT_TRUE(WIFEXITED(status));
+    const int firstCode = WEXITSTATUS(status);
+    EXPECT_TRUE((firstCode == 0 && second.exitCode == 4) || (firstCode == 4 && second.exitCode == 0))
+        << "attempt " << attempt << ": exits " << firstCode << " and " << second.exitCode << "\n"
+        << second.err;
+    const int frames = expectOnlyCompleteFrames(out);
+    EXPECT_EQ(frames, firstCode == 0 ? 6 : 3) << "attempt " << attempt << ": the winner's frames, all of them";
+  }
+}
+
 // A morph continued from another's frame into the same folder, with
 // --force, would remove or replace its own source: refused before any work,
 // the frame left as it was.
@@ -433,12 +464,16 @@ TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
   const fs::path twoParts = folder / "two_parts.obj";
   writeMesh(testing::merged(testing::icosphere(3), testing::icosphere(3, 0.01, {1.6, 0.0, 0.0})), twoParts);
   testing::CliResult lost = testing::runLbmshape({"morph", sphere, twoParts.string(), (folder / "lost").string(),
-                                                  "--res", "24", "--frames", "3", "--align", "none"});
+                                                  "--res", "24", "--frames", "3", "--align", "none", "--json"});
   ASSERT_EQ(lost.exitCode, 0) << lost.err;
   EXPECT_EQ(lost.err.find("placed on the source"), std::string::npos) << "--align none moves nothing: " << lost.err;
-  EXPECT_NE(lost.err.find("the last frame has 1 part of genus 0 where the target has 2 parts of genus 0"),
-            std::string::npos)
-      << lost.err;
+  const std::string partsLost = "the last frame has 1 part of genus 0 where the target has 2 parts of genus 0";
+  EXPECT_NE(lost.err.find(partsLost), std::string::npos) << lost.err;
+  // The report lists it too, for a script that keeps --json and drops stderr.
+  const auto warnings = nlohmann::json::parse(lost.out)["warnings"];
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [&](const auto& w) {
+    return w.template get<std::string>().find(partsLost) == 0;
+  })) << warnings;
 }
 
 // A folder that cannot be made is an output error before any work.

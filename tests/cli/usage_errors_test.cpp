@@ -49,6 +49,10 @@ INSTANTIATE_TEST_SUITE_P(
     Bench, UsageErrors,
     ::testing::Values(
         UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
+        // A path in UTF-8 is named as it is (the error line made its bytes '?').
+        UsageCase{"utf8_path_named_as_given",
+                  {"denoise", "scans/\u00fc.obj", "smooth/\u00fc.xyz"},
+                  "cannot write smooth/\u00fc.xyz"},
         UsageCase{"negative_gamma", {"bench", "--gamma", "-0.1", "--size", "8,8,8"}, "--gamma"},
         UsageCase{"zero_size", {"bench", "--size", "0,8,8"}, "grid size"},
         UsageCase{"negative_size", {"bench", "--size", "8,-3,8"}, "grid size"},

@@ -158,6 +158,20 @@ TEST(RoundTrip, AMeshTooSmallForSinglePrecisionIsOnlyOfferedObj)
   EXPECT_EQ(readMesh(folder / "tiny.obj").triangleCount(), tiny.triangleCount());
 }
 
+// OBJ keeps doubles, but lbmshape reads no coordinate beyond single
+// precision's range: a mesh there (noise of --sigma 1e200) is refused
+// rather than written as a file lbmshape could not read back.
+TEST(RoundTrip, NoFormatIsWrittenWithCoordinatesBeyondSinglePrecision)
+{
+  const TriangleMesh huge = testing::icosphere(2, 1e39, {0.0, 0.0, 0.0});
+  testing::ScratchFolder folder;
+  EXPECT_THROW(writeMesh(huge, folder / "huge.obj"), OutputError);
+  EXPECT_FALSE(std::filesystem::exists(folder / "huge.obj"));
+  const TriangleMesh large = testing::icosphere(2, 1e37, {0.0, 0.0, 0.0});
+  writeMesh(large, folder / "large.obj");
+  EXPECT_EQ(readMesh(folder / "large.obj").triangleCount(), large.triangleCount());
+}
+
 TEST(RoundTrip, NonManifoldFacesSurviveEveryOpenMeshFormat)
 {
   // A box with a fin: a triangle on one of its edges, so that edge has three

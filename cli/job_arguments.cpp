@@ -48,9 +48,13 @@ std::string optionText(const std::string& key, const nlohmann::json& value, cons
       throw UsageError("option " + quoted + " must be a whole number, not " + value.dump());
     const bool unsignedOption = option.get_type_name().rfind("UINT", 0) == 0;
     const double lowest = unsignedOption ? 0.0 : -4294967295.0;
-    if (value.get<double>() < lowest || value.get<double>() > 4294967295.0)  // the widest option: a uint32 seed
-      throw UsageError("option " + quoted + " must be a whole number from " + (unsignedOption ? "0" : "-4294967295") +
-                       " to 4294967295, not " + value.dump());
+    // Beyond the widest option's values (a uint32 seed): an unsigned
+    // option's own range, or far out of a signed one's (whose own check
+    // would name it, but cannot be given a number this large).
+    if (value.get<double>() < lowest || value.get<double>() > 4294967295.0)
+      throw UsageError(unsignedOption
+                           ? "option " + quoted + " must be a whole number from 0 to 4294967295, not " + value.dump()
+                           : "option " + quoted + " is " + value.dump() + ", far beyond any value it takes");
     if (value.is_number_integer()) return value.dump();
     return std::to_string(static_cast<long long>(value.get<double>()));
   }

@@ -104,8 +104,9 @@ int main(int argc, char** argv)
   app.fallthrough();  // common options may follow the command name
 
   cli::CommonOptions common;
-  app.add_flag("-v,--verbose", common.verbose, "Print each stage's time and the chosen device");
-  app.add_flag("-q,--quiet", common.quiet, "Print only warnings and errors: no progress or information lines");
+  auto* verbose = app.add_flag("-v,--verbose", common.verbose, "Print each stage's time and the chosen device");
+  app.add_flag("-q,--quiet", common.quiet, "Print only warnings and errors: no progress or information lines")
+      ->excludes(verbose);  // together, one was silently dropped
   app.add_flag("--json", common.json, "Print the result as one JSON object on stdout");
   app.add_option("--device", common.device,
                  "Vulkan device: index or part of its name, or 'reference' for the CPU reference");

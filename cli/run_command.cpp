@@ -148,11 +148,12 @@ nlohmann::json readJobs(const fs::path& file)
   return jobs;
 }
 
-// The command and the first paths, to name a job in the log.
+// The command and its paths (a morph's output folder too), to name a job in the log.
 std::string describe(const std::vector<std::string>& args)
 {
+  const size_t paths = !args.empty() && args[0] == "morph" ? 3 : 2;
   std::string s;
-  for (size_t i = 0; i < args.size() && i < 3; ++i) s += (i ? " " : "") + args[i];
+  for (size_t i = 0; i < args.size() && i <= paths; ++i) s += (i ? " " : "") + args[i];
   return s;
 }
 
@@ -319,6 +320,7 @@ void runJobs(CommonOptions& common, const RunArguments& a)
       result["report"] = parseJob(jobs[i], base, common, false, what);
       result["ok"] = true;
     } catch (const Interrupted& e) {
+      ++failed;  // its outputs are not all there: a failure, like any other
       result["ok"] = false;
       result["exit_code"] = int(e.code());
       result["error"] = e.what();
@@ -346,8 +348,11 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     throw Error(ExitCode(firstFailureCode),
                 std::to_string(failed) + " of " + std::to_string(results.size()) + " jobs failed" +
                     (a.failFast ? " (stopped at the first, --fail-fast)" : "") + "; first: " + firstFailure);
-  log::info("all " + std::to_string(results.size()) + " jobs" + (a.shard.empty() ? "" : " of part " + a.shard) +
-            " succeeded");
+  if (results.empty())
+    log::info(jobs.empty() ? file.string() + " holds no jobs" : "part " + a.shard + " holds no jobs");
+  else
+    log::info("all " + std::to_string(results.size()) + " jobs" + (a.shard.empty() ? "" : " of part " + a.shard) +
+              " succeeded");
 }
 
 }  // namespace

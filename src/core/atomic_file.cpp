@@ -13,6 +13,18 @@
 #include "lbmshape/core/temporary_files.hpp"
 
 namespace lbmshape {
+
+std::string writeFailure()
+{
+  const int error = errno;
+  switch (error) {
+  case ENOSPC: return "writing the file failed: the disk is full";
+  case EFBIG: return "writing the file failed: it would pass the file-size limit (ulimit -f)";
+  case EDQUOT: return "writing the file failed: the disk quota is used up";
+  case EIO: return "writing the file failed: an input/output error";
+  default: return "writing the file failed (is the disk full?)";
+  }
+}
 namespace {
 
 std::string failure(const std::filesystem::path& target, const std::string& why)

@@ -8,9 +8,15 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <fstream>
 
 namespace lbmshape {
+
+// "writing the file failed (...)": why, from the errno a failed write left
+// (the disk full, the file-size limit of ulimit -f, a quota, an I/O error),
+// for the message that names the file. Called right after the failure.
+std::string writeFailure();
 
 class AtomicFile {
 public:

@@ -22,10 +22,7 @@ size_t GlbStream::headBytes() const
   return glbHead(std::string(), 1).size() + jsonRoom_;  // with the binary chunk's header
 }
 
-void GlbStream::failed() const
-{
-  throw OutputError("cannot write " + file_.target().string() + ": writing the file failed (is the disk full?)");
-}
+void GlbStream::failed() const { throw OutputError("cannot write " + file_.target().string() + ": " + writeFailure()); }
 
 void GlbStream::requireGood()
 {

@@ -407,8 +407,7 @@ void saveGltf(tinygltf::Model& model, MeshFormat format, const AtomicFile& file)
     ok = out && writer.WriteGltfSceneToStream(toWrite, out, /*prettyPrint=*/!binary, binary);
   }
   out.close();
-  if (!ok || !out)
-    throw OutputError("cannot write " + file.target().string() + ": writing the file failed (is the disk full?)");
+  if (!ok || !out) throw OutputError("cannot write " + file.target().string() + ": " + writeFailure());
 }
 
 }  // namespace lbmshape

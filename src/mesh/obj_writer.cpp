@@ -57,8 +57,7 @@ void writeObj(const TriangleMesh& mesh, const AtomicFile& file)
     out << '\n';
   }
   out.close();
-  if (!out)
-    throw OutputError("cannot write " + file.target().string() + ": writing the file failed (is the disk full?)");
+  if (!out) throw OutputError("cannot write " + file.target().string() + ": " + writeFailure());
 }
 
 }  // namespace lbmshape

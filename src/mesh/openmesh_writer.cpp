@@ -45,9 +45,8 @@ void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const Atomic
   }
   out.close();
   if (!ok || !out)
-    throw OutputError(
-        "cannot write " + file.target().string() + ": " +
-        (diagnostic.empty() ? std::string("writing the file failed (is the disk full?)") : "OpenMesh: " + diagnostic));
+    throw OutputError("cannot write " + file.target().string() + ": " +
+                      (diagnostic.empty() ? writeFailure() : "OpenMesh: " + diagnostic));
 }
 
 }  // namespace lbmshape

@@ -19,7 +19,7 @@ void writePng(const Image& image, AtomicFile& file)
   };
   if (!out || !stbi_write_png_to_func(append, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4) ||
       !out.flush())
-    throw OutputError("cannot write " + file.target().string() + " (is the disk full?)");
+    throw OutputError("cannot write " + file.target().string() + ": " + writeFailure());
   out.close();
   file.commit();
 }

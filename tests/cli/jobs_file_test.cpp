@@ -304,6 +304,7 @@ const JobCase jobCases[] = {
     {"nul_in_a_path", {{"output", std::string("out\0.glb", 8)}}, "\"output\" holds a NUL character"},
     {"negative_seed", {{"seed", -1}}, "option \"seed\" must be a whole number from 0"},
     {"seed_beyond_32_bits", {{"seed", 4294967296LL}}, "option \"seed\" must be a whole number from 0"},
+    {"res_of_a_trillion", {{"res", 1e12}}, "option \"res\" is 1000000000000.0, far beyond any value it takes"},
 };
 
 TEST_F(JobsFile, OptionsOfTheWrongKindFailOnlyTheirJob)

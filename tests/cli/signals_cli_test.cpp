@@ -200,6 +200,7 @@ TEST(StopSignal, AStoppedJobsFileReportsTheJobsDone)
   const nlohmann::json report = nlohmann::json::parse(in);
   EXPECT_EQ(report["interrupted"], true);
   EXPECT_EQ(report["run"], 2);
+  EXPECT_EQ(report["failed"], 1) << "the job stopped is counted as failed, as its \"ok\" says";
   ASSERT_EQ(report["results"].size(), 2u);
   EXPECT_EQ(report["results"][0]["ok"], true);
   EXPECT_EQ(report["results"][1]["ok"], false);

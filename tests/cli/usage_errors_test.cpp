@@ -49,6 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
     Bench, UsageErrors,
     ::testing::Values(
         UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
+        UsageCase{"quiet_and_verbose", {"-q", "-v", "info"}, "--quiet"},
         // A path in UTF-8 is named as it is (the error line made its bytes '?').
         UsageCase{"utf8_path_named_as_given",
                   {"denoise", "scans/\u00fc.obj", "smooth/\u00fc.xyz"},

@@ -220,8 +220,8 @@ TEST(BadInputMessages, SayWhatIsWrong)
   EXPECT_NE(messageOf([&] { readMesh(plyWithNaN(folder.path())); }).find("vertex 1"), std::string::npos);
   // A damaged vertex line (a NUL before it, a no-break space after "v"),
   // which passed over would put later faces on the wrong vertices.
-  for (const std::string damaged : {std::string("\0v 0 1 0\n", 9), std::string("v\xc2\xa0"
-                                                                               "0 1 0\n")}) {
+  for (const std::string& damaged : {std::string("\0v 0 1 0\n", 9), std::string("v\xc2\xa0"
+                                                                                "0 1 0\n")}) {
     const std::string text = "v 0 0 0\nv 1 0 0\n" + damaged + "v 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
     EXPECT_NE(messageOf([&] { readMesh(objFile(folder.path(), text)); }).find("line 3"), std::string::npos)
         << ::testing::PrintToString(damaged);

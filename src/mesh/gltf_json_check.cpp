@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -37,23 +38,31 @@ public:
   uint64_t containers = 0, scalars = 0;
   std::string syntaxError;
 
-  bool null() override { return scalar("null"); }
-  bool boolean(bool b) override { return scalar(b ? "true" : "false"); }
-  bool number_integer(number_integer_t n) override { return scalar(std::to_string(n), true); }
-  bool number_unsigned(number_unsigned_t n) override { return scalar(std::to_string(n), true, n); }
+  bool null() override { return scalar("null", JsonKind::Null); }
+  bool boolean(bool b) override { return scalar(b ? "true" : "false", JsonKind::Boolean); }
+  bool number_integer(number_integer_t n) override { return scalar(std::to_string(n), JsonKind::Number); }
+  bool number_unsigned(number_unsigned_t n) override { return scalar(std::to_string(n), JsonKind::Number, n); }
   // nlohmann refuses a number beyond a double's range: every one read is finite.
   bool number_float(number_float_t, const string_t& written) override
   {
-    return scalar(text::printable(shown(written)), true);
+    return scalar(text::printable(shown(written)), JsonKind::Number);
   }
   bool string(string_t& s) override
   {
     if (GltfJsonElement* e = directElement(); e && current_.back().collection == "buffers") e->strings[key_] = s;
-    return scalar(text::quoted(shown(s)));
+    return scalar(text::quoted(shown(s)), JsonKind::String);
   }
-  bool binary(binary_t&) override { return scalar("binary data"); }
+  bool binary(binary_t&) override { return scalar("binary data", JsonKind::String); }
+  // JSON leaves a key given twice in one object to the reader; tinygltf
+  // (nlohmann) keeps the last, which this pass would not have checked.
   bool key(string_t& k) override
   {
+    if (!stack_.empty() && !stack_.back().keys.insert(k).second) {
+      const std::string where = !current_.empty() && current_.back().depth == stack_.size()
+                                    ? " of " + gltfElementName(current_.back().collection, current_.back().index)
+                                    : "";
+      source_.refuse("its JSON gives the key " + text::quoted(shown(k)) + " twice in one object" + where);
+    }
     key_ = k;
     return true;
   }
@@ -70,8 +79,9 @@ public:
 private:
   struct Container {
     bool array;
-    std::string key;     // the key under which it was opened, in its parent object
-    uint64_t items = 0;  // values in it so far
+    std::string key;                         // the key under which it was opened, in its parent object
+    uint64_t items = 0;                      // values in it so far
+    std::unordered_set<std::string> keys{};  // an object's keys so far
   };
   // An element of a checked collection being read, and the container depth of its object.
   struct OpenElement {
@@ -93,41 +103,48 @@ private:
     return &current_.back().element.arrays[stack_.back().key];
   }
   // Notes a value (a scalar, or a container about to open) in what holds it.
-  void note(const std::string& written, bool isNumber, std::optional<uint64_t> whole)
+  void note(const std::string& written, JsonKind kind, std::optional<uint64_t> whole)
   {
     if (!stack_.empty()) ++stack_.back().items;
     if (GltfJsonElement* e = directElement()) {
+      e->kinds[key_] = kind;
       e->written[key_] = written;
       if (whole) e->wholeNumbers[key_] = *whole;
     } else if (GltfJsonElement::Array* a = elementArray()) {
       ++a->count;
-      a->allNumbers = a->allNumbers && isNumber;
+      a->allNumbers = a->allNumbers && kind == JsonKind::Number;
       a->allWholeNumbers = a->allWholeNumbers && whole.has_value();
+      a->allStrings = a->allStrings && kind == JsonKind::String;
+      a->allObjects = a->allObjects && kind == JsonKind::Object;
     }
   }
-  bool scalar(const std::string& written, bool isNumber = false, std::optional<uint64_t> whole = std::nullopt)
+  bool scalar(const std::string& written, JsonKind kind, std::optional<uint64_t> whole = std::nullopt)
   {
     ++scalars;
-    note(written, isNumber, whole);
+    note(written, kind, whole);
     key_.clear();
     return true;
   }
-  // The dotted path of the collection whose element the object just opened
-  // is ("nodes", "meshes.primitives"), and its place in each array of the
-  // path; empty where the object is no element of a checked collection.
+  // The dotted path of keys of the checked element whose object was just
+  // opened ("nodes", "meshes.primitives", "accessors.sparse.indices"), and
+  // its place in each array on the way; empty where it is none.
   std::pair<std::string, std::vector<uint64_t>> collectionOfNewObject() const
   {
-    if (stack_.size() != 3 && stack_.size() != 5) return {};
+    constexpr size_t deepestChecked = 6;  // root, meshes, a mesh, primitives, a primitive, its targets' one
+    if (stack_.size() < 2 || stack_[0].array || stack_.size() > deepestChecked + 1) return {};
     std::string path;
     std::vector<uint64_t> index;
-    for (size_t k = 0; k < stack_.size(); ++k) {
-      if (stack_[k].array != (k % 2 == 1)) return {};
-      if (k % 2 == 1) {
+    for (size_t k = 1; k < stack_.size(); ++k) {
+      if (stack_[k - 1].array) {
+        if (stack_[k].array) return {};  // an array in an array: nothing glTF has
+        index.push_back(stack_[k - 1].items - 1);
+      } else {
         path += (path.empty() ? "" : ".") + stack_[k].key;
-        index.push_back(stack_[k].items - 1);
       }
     }
-    return isCheckedGltfCollection(path) ? std::pair(path, index) : std::pair<std::string, std::vector<uint64_t>>{};
+    const bool inAnArray = stack_[stack_.size() - 2].array;
+    return isCheckedGltfCollection(path, inAnArray) ? std::pair(path, index)
+                                                    : std::pair<std::string, std::vector<uint64_t>>{};
   }
   bool open(bool array)
   {
@@ -136,8 +153,7 @@ private:
       tooDeep = true;
       return false;
     }
-    note(array ? "an array" : "an object", false, std::nullopt);
-    if (GltfJsonElement::Array* a = elementArray()) a->allNumbers = a->allWholeNumbers = false;
+    note(array ? "an array" : "an object", array ? JsonKind::Array : JsonKind::Object, std::nullopt);
     const bool inObject = !stack_.empty() && !stack_.back().array;
     stack_.push_back({array, inObject ? key_ : std::string()});
     if (stack_.size() == 1 && !array) {
@@ -157,10 +173,10 @@ private:
   {
     if (!current_.empty() && current_.back().depth == stack_.size()) {
       OpenElement& done = current_.back();
+      checkGltfElement(done.collection, done.index, done.element, source_);
       if (done.collection.empty()) {
         top = std::move(done.element);
       } else {
-        checkGltfElement(done.collection, done.index, done.element, source_);
         if (done.collection == "scenes") ++scenes;
         if (kept.count(done.collection)) kept[done.collection].push_back(std::move(done.element));
       }

@@ -68,6 +68,9 @@ std::string_view jsonOf(const MeshSource& source, MeshFormat format)
     source.refuse("it is a GLB file of version " + std::to_string(glbWord(bytes, 4)) +
                   "; lbmshape reads version 2 (glTF 2.0)");
   if (glbWord(bytes, 8) > bytes.size()) source.refuse("its GLB header claims more bytes than the file has");
+  if (glbWord(bytes, 8) < bytes.size())
+    source.refuse("its GLB header says the file has " + std::to_string(glbWord(bytes, 8)) + " bytes, but it has " +
+                  std::to_string(bytes.size()) + " (bytes appended, or a damaged header)");
   if (bytes.size() < 20) source.refuse("it ends after its GLB header, before any JSON chunk");
   const uint64_t jsonLength = glbWord(bytes, 12);
   if (bytes.substr(16, 4) != "JSON" || jsonLength > bytes.size() - 20)
@@ -147,7 +150,15 @@ public:
           const uint64_t v = accessors_.count(position->second, TINYGLTF_TYPE_VEC3, name + " POSITION");
           const uint64_t corners =
               primitive.indices >= 0 ? accessors_.count(primitive.indices, TINYGLTF_TYPE_SCALAR, name + " indices") : v;
-          t.vertices += v;  // each term is at most the input's size: no overflow
+          // Each morph target with positions is read too, where its weight
+          // is not 0 (applyMorphTargets): counted as if every one were.
+          uint64_t targets = 0;
+          for (const auto& target : primitive.targets) targets += target.count("POSITION");
+          // Saturated far beyond any budget, so that no sum below wraps.
+          constexpr uint64_t beyondAnyBudget = uint64_t(1) << 56;
+          const auto reads = checkedMultiply(v, 1 + targets);
+          t.vertices =
+              std::min(beyondAnyBudget, t.vertices + std::min(beyondAnyBudget, reads.value_or(beyondAnyBudget)));
           t.triangles += mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 2 ? corners - 2 : 0;
         }
         t.counted = true;
@@ -169,7 +180,7 @@ public:
   {
     const auto& primitives = model_.meshes[size_t(instance.mesh)].primitives;
     for (size_t p = 0; p < primitives.size(); ++p)
-      addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world);
+      addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world, *instance.weights);
   }
 
   TriangleMesh take() { return std::move(mesh_); }
@@ -205,7 +216,26 @@ private:
     mesh_.colours.insert(mesh_.colours.end(), colours.begin(), colours.end());
   }
 
-  void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world)
+  // The morph targets' POSITION displacements, each times its weight: the
+  // shape the file shows (a viewer draws the weighted targets; the base
+  // shape alone was another shape).
+  void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& name,
+                         const std::vector<double>& weights, std::vector<glm::dvec3>& positions) const
+  {
+    for (size_t t = 0; t < primitive.targets.size() && t < weights.size(); ++t) {
+      auto displacement = primitive.targets[t].find("POSITION");
+      if (weights[t] == 0.0 || displacement == primitive.targets[t].end()) continue;
+      const std::string what = name + " morph target " + std::to_string(t) + " POSITION";
+      const std::vector<glm::dvec3> moves = accessors_.vectors(displacement->second, what);
+      if (moves.size() != positions.size())
+        source_.refuse(what + " has " + std::to_string(moves.size()) + " values for " +
+                       std::to_string(positions.size()) + " positions");
+      for (size_t i = 0; i < positions.size(); ++i) positions[i] += weights[t] * moves[i];
+    }
+  }
+
+  void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world,
+                    const std::vector<double>& weights)
   {
     const int mode = primitive.mode;  // one of glTF's (gltf_json_element.hpp); triangles when absent
     if (!isTriangles(mode)) {
@@ -217,7 +247,8 @@ private:
       log::warning("reading " + source_.name + ": skipped " + name + ": it has no POSITION attribute");
       return;
     }
-    const std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");
+    std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");
+    applyMorphTargets(primitive, name, weights, positions);
     std::vector<uint32_t> order;
     if (primitive.indices >= 0) {
       order = accessors_.indices(primitive.indices, positions.size(), name + " indices");

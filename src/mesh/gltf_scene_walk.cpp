@@ -117,7 +117,8 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
       if (size_t(node.mesh) >= model.meshes.size())
         source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) +
                       ", which does not exist");
-      instances.push_back({node.mesh, world});
+      const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
+      instances.push_back({node.mesh, world, node.weights.empty() ? &mesh.weights : &node.weights});
     }
     for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
       pending.emplace_back(*child, world);

@@ -16,6 +16,9 @@ namespace lbmshape {
 struct GltfInstance {
   int mesh;          // an index into model.meshes, checked
   glm::dmat4 world;  // the node's world transform
+  // The weights of the mesh's morph targets: the node's, else the mesh's
+  // (glTF 2.0, 3.7.2.2); empty: none.
+  const std::vector<double>* weights;
 };
 
 // The meshes of the scene to show (the default scene, else scene 0, else

@@ -132,13 +132,31 @@ private:
     const auto index = uint32_t(firstVertex_ + verticesRead_++);
     positions_[index] = p;
     // Three more numbers are a colour; one more is the homogeneous w, unused.
-    glm::vec3 colour;
-    for (int k = 0; k < 3; ++k) {
-      const auto value = text::coordinate(text::nextToken(arguments));
-      if (!value) return;
-      colour[k] = float(std::clamp(*value, 0.0, 1.0));
+    // Anything else is a damaged line: a lost line end ("v 1 0 0\rv 9 9 9"
+    // with a lone carriage return) put one vertex's numbers on another's
+    // line, and every later face on the wrong vertices.
+    double extra[3];
+    int extras = 0;
+    for (std::string_view token = text::nextToken(arguments); !token.empty(); token = text::nextToken(arguments)) {
+      const auto value = text::coordinate(token);
+      if (!value || extras == 3) return fail(result, text::quoted(line) + notOnlyAVertex(line));
+      extra[extras++] = *value;
     }
-    result.colours.emplace_back(index, colour);
+    if (extras == 2) return fail(result, text::quoted(line) + notOnlyAVertex(line));
+    if (extras == 3)
+      result.colours.emplace_back(
+          index, glm::vec3(float(std::clamp(extra[0], 0.0, 1.0)), float(std::clamp(extra[1], 0.0, 1.0)),
+                           float(std::clamp(extra[2], 0.0, 1.0))));
+  }
+
+  static std::string notOnlyAVertex(std::string_view line)
+  {
+    return std::string(
+               " is not a vertex: after its three coordinates come a w, or a colour's three numbers, and "
+               "nothing else") +
+           (line.find('\r') != std::string_view::npos
+                ? " (a carriage return inside the line: are lines ended by CR alone?)"
+                : "");
   }
 
   // What follows a corner's vertex number: "/vt", "/vt/vn" or "//vn", each

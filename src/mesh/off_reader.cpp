@@ -136,6 +136,11 @@ size_t readAsciiBody(const MeshSource& source, OffLines& lines, const Counts& co
     if (corners.size() < 3) ++shortFaces;
     appendFan(corners, mesh.triangles);
   }
+  // More after the faces the header counts: a count too low, which left
+  // the last faces out.
+  if (const std::string_view more = lines.next(); !more.empty())
+    lines.fail(text::quoted(more) + " follows the last of the " + std::to_string(counts.faces) +
+               " faces the header counts (is its face count too low?)");
   return shortFaces;
 }
 
@@ -224,7 +229,8 @@ TriangleMesh readOff(const MeshSource& source)
     shortFaces = readAsciiBody(source, lines, counts, mesh);
   }
   if (shortFaces)
-    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + " faces with fewer than 3 corners");
+    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + (shortFaces == 1 ? " face" : " faces") +
+                 " with fewer than 3 corners");
   return mesh;
 }
 

@@ -143,6 +143,11 @@ PlyHeader parsePlyHeader(const MeshSource& source)
       property.name = std::string(text::nextToken(words));
       if (property.name.empty() || !text::nextToken(words).empty())
         fail(text::quoted(line) + " is not 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+      // Read by name, a property named twice would be read as one of the two.
+      for (const PlyProperty& earlier : header.elements.back().properties)
+        if (earlier.name == property.name)
+          fail(text::quoted(line) + ": element " + text::quoted(header.elements.back().name) +
+               " already has a property " + text::quoted(property.name));
       header.elements.back().properties.push_back(std::move(property));
     } else {
       fail("unknown header line " + text::quoted(line));

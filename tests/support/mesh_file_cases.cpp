@@ -231,6 +231,14 @@ struct Gltf {
   }
 };
 
+// `glb` with `more` appended, its header's length made the new one (a GLB
+// whose length differs from its file's is refused).
+std::string glbWithMore(std::string glb, const std::string& more)
+{
+  glb += more;
+  return glb.replace(8, 4, little(uint32_t(glb.size())));
+}
+
 Gltf tetraWith(const std::function<void(Gltf&)>& change)
 {
   Gltf g = Gltf::tetra();
@@ -321,8 +329,32 @@ std::vector<MeshFileCase> wellFormedMeshFiles()
          g.json["nodes"] = {{{"translation", {5, 0, 0}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {0, 2, 0}}}};
        }).glb(),
        "", false},
-      {"glb_with_a_chunk_of_an_unknown_type", ".glb", Gltf::tetra().glb() + little(uint32_t(4)) + "XTRA" + "data", "",
-       false},
+      {"glb_with_a_chunk_of_an_unknown_type", ".glb",
+       glbWithMore(Gltf::tetra().glb(), little(uint32_t(4)) + "XTRA" + "data"), "", false},
+      // A base shape with vertex 1 at x = 0.5 and a morph target that moves
+      // it by 1, weighted 0.5 by the mesh: the unit tetrahedron, as a
+      // viewer shows it (the base shape alone is half its volume).
+      {"gltf_weighted_morph_target", ".gltf",
+       [] {
+         Gltf g = Gltf::tetra();
+         std::string base, move;
+         for (size_t c = 0; c < corners.size(); ++c)
+           for (int k = 0; k < 3; ++k) {
+             base += little(c == 1 && k == 0 ? 0.5f : corners[c][size_t(k)]);
+             move += little(c == 1 && k == 0 ? 1.0f : 0.0f);
+           }
+         g.json["accessors"][0]["bufferView"] = g.view(base);
+         const int target = g.accessor({{"bufferView", g.view(move)},
+                                        {"componentType", 5126},
+                                        {"count", 4},
+                                        {"type", "VEC3"},
+                                        {"min", {0, 0, 0}},
+                                        {"max", {1, 0, 0}}});
+         g.json["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", target}}};
+         g.json["meshes"][0]["weights"] = {0.5};
+         return g.gltf();
+       }(),
+       "", false},
       {"gltf_rotation_a_little_off_unit_length", ".gltf", tetraWith([](Gltf& g) {
                                                             g.json["nodes"][0]["rotation"] = {0, 0, 0, 1.001};
                                                           }).gltf(),
@@ -346,6 +378,10 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"obj_corner_of_three_slashes", ".obj", tetraObj + "f 1///1 2 3\n", "is not of the form v, v/vt, v/vt/vn or v//vn"},
       {"obj_corner_with_a_word_for_its_normal", ".obj", tetraObj + "f 1 2 3//n\n", "'3//n' is not of the form"},
       {"obj_bare_v_before_the_vertices", ".obj", "v\n" + tetraObj, "line 1: 'v' is not a vertex"},
+      {"obj_two_vertices_on_one_line", ".obj", "v 0 0 0\nv 1 0 0\rv 9 9 9\nv 0 1 0\nv 0 0 1\n" + tetraObj,
+       "a carriage return inside the line"},
+      {"obj_vertex_with_a_word_after_it", ".obj", "v 0 0 1 foo\n" + tetraObj, "and nothing else"},
+      {"obj_vertex_of_five_numbers", ".obj", "v 0 0 1 1 1\n" + tetraObj, "and nothing else"},
       {"obj_index_zero", ".obj", tetraObj + "f 0 1 2\n", "start at 1"},
       {"obj_index_beyond_the_vertices", ".obj", tetraObj + "f 1 2 99\n", "vertex number 99"},
       {"obj_index_beyond_64_bits", ".obj", tetraObj + "f 1 2 99999999999999999999999\n", "has no vertex number"},
@@ -401,6 +437,12 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "element face 3\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" +
            tetraPlyFaces,
        "values follow line 16, the last entry the header counts"},
+      {"ply_property_named_twice", ".ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "property float x\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+       "0 0 0 0\n1 0 0 3\n0 1 0 0\n0 0 1 0\n" +
+           tetraPlyFaces,
+       "element 'vertex' already has a property 'x'"},
       {"ply_list_of_minus_one", ".ply", plyAsciiTetra("3 0 2 1\n-1 0 1 3\n3 0 3 2\n3 1 2 3\n"), "a list of -1 items"},
       {"ply_list_of_two_billion", ".ply", plyAsciiTetra("3 0 2 1\n2000000000 0 1 3\n3 0 3 2\n3 1 2 3\n"),
        "longer than the rest of the file"},
@@ -456,6 +498,9 @@ std::vector<MeshFileCase> hostileMeshFiles()
       {"off_index_beyond_the_vertices", ".off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 4\n",
        "refers to vertex '4'"},
       {"off_four_dimensional", ".off", "4OFF\n4 4 6\n0 0 0 0\n", "only three-dimensional"},
+      {"off_face_beyond_the_count", ".off",
+       "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 1 2\n",
+       "follows the last of the 4 faces the header counts"},
       // STL
       {"stl_vertex_nan", ".stl", stlAscii("   vertex nan 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
       {"stl_vertex_word", ".stl", stlAscii("   vertex abc 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"), finite},
@@ -500,7 +545,7 @@ std::vector<MeshFileCase> hostileMeshFiles()
              {"indices", {{"bufferView", 1}, {"byteOffset", -8}, {"componentType", 5125}}},
              {"values", {{"bufferView", 0}}}};
        }).gltf(),
-       "negative sparse byteOffset"},
+       "accessor 0's sparse indices: \"byteOffset\" must be a whole number of 0 or more; it is -8"},
       {"gltf_sparse_index_out_of_range", ".gltf", tetraWith([](Gltf& g) {
                                                     const int view = g.view(little(uint32_t(4000)));
                                                     g.json["accessors"][0]["sparse"] = {
@@ -674,6 +719,45 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "mesh 0 primitive 0's \"mode\" must be a whole number"},
       {"gltf_mode_nine", ".gltf", tetraWith([](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = 9; }).gltf(),
        "mode 9 is not a glTF primitive mode"},
+      {"gltf_a_key_twice_in_a_node", ".gltf",
+       [] {
+         std::string text = Gltf::tetra().gltf();
+         const size_t node = text.find("{\"mesh\":0}");
+         return text.replace(node, 10, "{\"mesh\":0,\"translation\":[5,0,0],\"translation\":\"x\"}");
+       }(),
+       "gives the key 'translation' twice in one object of node 0"},
+      {"gltf_attribute_that_is_no_index", ".gltf",
+       tetraWith([](Gltf& g) { g.json["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 0.5; }).gltf(),
+       "mesh 0 primitive 0's attributes: \"NORMAL\" must be an accessor's index; it is 0.5"},
+      {"gltf_scenes_as_an_object", ".gltf",
+       tetraWith([](Gltf& g) {
+         g.json.erase("scene");
+         g.json["scenes"] = {{"s", {{"nodes", {0}}}}};
+       }).gltf(),
+       "its \"scenes\" must be an array of objects; it is an object"},
+      {"gltf_normalized_as_a_string", ".gltf",
+       tetraWith([](Gltf& g) { g.json["accessors"][0]["normalized"] = "true"; }).gltf(),
+       "accessor 0's \"normalized\" must be true or false; it is 'true'"},
+      {"gltf_sparse_offset_as_a_string", ".gltf",
+       tetraWith([](Gltf& g) {
+         g.json["accessors"][0]["sparse"] = {{"count", 1},
+                                             {"indices", {{"bufferView", 1}, {"byteOffset", "2"}, {"componentType", 5125}}},
+                                             {"values", {{"bufferView", 0}}}};
+       }).gltf(),
+       "accessor 0's sparse indices: \"byteOffset\" must be a whole number"},
+      {"gltf_required_extensions_as_a_string", ".gltf",
+       tetraWith([](Gltf& g) { g.json["extensionsRequired"] = "EXT_mesh_gpu_instancing"; }).gltf(),
+       "its \"extensionsRequired\" must be an array of strings"},
+      {"gltf_morph_target_of_other_length", ".gltf",
+       tetraWith([](Gltf& g) {
+         const int three = g.accessor({{"bufferView", g.view(repeat(little(0.0f), 9))},
+                                       {"componentType", 5126},
+                                       {"count", 3},
+                                       {"type", "VEC3"}});
+         g.json["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", three}}};
+         g.json["meshes"][0]["weights"] = {1.0};
+       }).gltf(),
+       "morph target 0 POSITION"},
       {"glb_of_version_1", ".glb",
        [] {
          std::string bytes = Gltf::tetra().glb();
@@ -682,7 +766,9 @@ std::vector<MeshFileCase> hostileMeshFiles()
        "GLB file of version 1"},
       {"glb_header_alone", ".glb", "glTF" + little(uint32_t(2)) + little(uint32_t(12)), "before any JSON chunk"},
       {"glb_third_chunk_longer_than_the_file", ".glb",
-       Gltf::tetra().glb() + little(uint32_t(1) << 31) + "XTRA", "chunk 3 claims 2147483648 bytes, but 0 follow"},
+       glbWithMore(Gltf::tetra().glb(), little(uint32_t(1) << 31) + "XTRA"),
+       "chunk 3 claims 2147483648 bytes, but 0 follow"},
+      {"glb_with_bytes_beyond_its_length", ".glb", Gltf::tetra().glb() + "junk", "(bytes appended, or a damaged header)"},
       {"glb_count_whose_size_wraps", ".glb",
        tetraWith([](Gltf& g) { g.json["accessors"][0]["count"] = uint64_t(6148914691236517206ull); }).glb(),
        "reads past the end of buffer view"},

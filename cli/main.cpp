@@ -17,6 +17,7 @@
 #include "info_command.hpp"
 #include "mesh_commands.hpp"
 #include "run_command.hpp"
+#include "usage_messages.hpp"
 #include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/core/last_resort.hpp"
 #include "lbmshape/core/parameter_names.hpp"
@@ -48,7 +49,8 @@ std::string usageMessage(const CLI::App& app, const CLI::ParseError& e)
         return "unknown command '" + word + "'; the commands are " + commands + " (see lbmshape --help)";
       }
   const auto given = app.get_subcommands();
-  return std::string(e.what()) + " (see lbmshape " + (given.empty() ? "" : given.front()->get_name() + " ") + "--help)";
+  return lbmshape::cli::plainParseError(given.empty() ? &app : given.front(), e) + " (see lbmshape " +
+         (given.empty() ? "" : given.front()->get_name() + " ") + "--help)";
 }
 
 // An empty value ("--res ''", "$UNSET" in a script) is refused, naming the

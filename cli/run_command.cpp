@@ -18,6 +18,7 @@
 #include "job_arguments.hpp"
 #include "job_files.hpp"
 #include "mesh_commands.hpp"
+#include "usage_messages.hpp"
 
 namespace lbmshape::cli {
 namespace {
@@ -180,7 +181,12 @@ nlohmann::json parseJob(const nlohmann::json& job, const fs::path& base, const C
   what += " (" + describe(args) + ")";
   if (!checkOnly) log::info(what + "...");
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-  app.parse(reversed);
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    const auto given = app.get_subcommands();
+    throw UsageError(plainParseError(given.empty() ? &app : given.front(), e));
+  }
   return report;
 }
 

@@ -50,6 +50,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         UsageCase{"zero_gamma", {"bench", "--gamma", "0", "--size", "8,8,8"}, "--gamma"},
         UsageCase{"quiet_and_verbose", {"-q", "-v", "info"}, "--quiet"},
+        // CLI11's own messages, in lbmshape's words.
+        UsageCase{"res_not_whole", {"denoise", "a.obj", "b.glb", "--res", "1e2"}, "--res: '1e2' is not a whole number"},
+        UsageCase{"gamma_a_word", {"denoise", "a.obj", "b.glb", "--gamma", "abc"}, "--gamma: 'abc' is not a number"},
+        UsageCase{"an_argument_too_many", {"denoise", "a.obj", "b.glb", "extra"}, "unexpected argument 'extra'"},
+        UsageCase{
+            "unknown_option_in_words", {"denoise", "a.obj", "b.glb", "--frobnicate"}, "unknown option '--frobnicate'"},
+        UsageCase{"an_argument_missing", {"compare", "a.obj"}, "missing argument 'b'"},
+        UsageCase{"a_value_missing", {"denoise", "a.obj", "b.glb", "--res"}, "--res: its value is missing"},
         // A path in UTF-8 is named as it is (the error line made its bytes '?').
         UsageCase{"utf8_path_named_as_given",
                   {"denoise", "scans/\u00fc.obj", "smooth/\u00fc.xyz"},

@@ -205,14 +205,26 @@ Value chosen(const std::string& parameter, const std::string& name,
   throw UsageError(parameter + " must be " + listed + ", not '" + name + "'");
 }
 
-py::object denoise(const Vertices& vertices, const py::array& triangles, int res, std::optional<int> steps,
-                   std::optional<double> radius, double gamma, const std::string& smoothing, bool keepVolume,
-                   std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device, bool report,
-                   int relax, const std::optional<std::stop_source>& stop)
+// The grid: cells along the longest side, or a voxel size; not both.
+GridOptions gridOf(std::optional<int> res, std::optional<double> voxel, double margin)
+{
+  if (res && voxel) throw UsageError("give res or voxel, not both");
+  GridOptions grid;
+  grid.resolution = res.value_or(grid.resolution);
+  grid.voxel = voxel;
+  grid.marginVoxels = margin;
+  return grid;
+}
+
+py::object denoise(const Vertices& vertices, const py::array& triangles, std::optional<int> res,
+                   std::optional<int> steps, std::optional<double> radius, double gamma, const std::string& smoothing,
+                   bool keepVolume, std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device,
+                   bool report, int relax, const std::optional<std::stop_source>& stop, std::optional<double> voxel,
+                   double margin)
 {
   DenoiseOptions options;
   if (stop) options.stop = stop->get_token();
-  options.grid.resolution = res;
+  options.grid = gridOf(res, voxel, margin);
   options.steps = steps;
   options.radius = radius;
   options.gamma = gamma;
@@ -245,15 +257,21 @@ RunsOn runsOnNamed(const std::string& parameter, const std::string& name)
 // or gathered into a list. An exception the callback raises stops the morph
 // and is raised again as it was, its type and traceback kept.
 py::object morph(const Vertices& sourceVertices, const py::array& sourceTriangles, const Vertices& targetVertices,
-                 const py::array& targetTriangles, int frames, int res, std::optional<int> steps, double cs,
-                 double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
-                 py::object onFrame, bool report, const std::optional<std::stop_source>& stop)
+                 const py::array& targetTriangles, int frames, std::optional<int> res, std::optional<int> steps,
+                 double cs, double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
+                 py::object onFrame, bool report, const std::optional<std::stop_source>& stop,
+                 std::optional<double> voxel, double margin, double tolerance, std::optional<int> stepsPerFrame,
+                 double noise, uint32_t seed)
 {
   MorphOptions options;
   if (stop) options.stop = stop->get_token();
   options.frames = frames;
-  options.grid.resolution = res;
+  options.grid = gridOf(res, voxel, margin);
   options.steps = steps;
+  options.stepsPerFrame = stepsPerFrame;
+  options.tolerance = tolerance;
+  options.noise.amplitude = noise;
+  options.noise.seed = seed;  // noise > 0 runs on the grid: the paper adds it to every cell
   options.cs = cs;
   options.gamma = gamma;
   options.align = chosen<Alignment>(
@@ -357,24 +375,30 @@ PYBIND11_MODULE(lbmshape, m)
       .def_property_readonly(
           "requested", [](const std::stop_source& s) { return s.stop_requested(); }, "Whether request() was called.");
 
-  m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = 128,
+  m.def("denoise", &denoise, py::arg("vertices"), py::arg("triangles"), py::arg("res") = py::none(),
         py::arg("steps") = py::none(), py::arg("radius") = py::none(), py::arg("gamma") = 0.2,
         py::arg("smoothing") = "preserve-features", py::arg("keep_volume") = true, py::arg("twicing") = py::none(),
         py::arg("dense") = false, py::arg("device") = nullptr, py::arg("report") = false,
         // Last: a call that passes the ones before it by position keeps its meaning.
-        py::arg("relax") = defaultRelaxationRounds, py::arg("stop") = py::none(),
+        py::arg("relax") = defaultRelaxationRounds, py::arg("stop") = py::none(), py::arg("voxel") = py::none(),
+        py::arg("margin") = GridOptions().marginVoxels,
         "Smooth a closed triangle mesh: (vertices, triangles) in, (vertices, triangles) out, as `lbmshape denoise` "
         "with the same defaults; with report=True also the figures `denoise --json` prints, as a dict. stop: an "
-        "lbmshape.Stop whose request() stops this call alone (lbmshape.Interrupted).");
+        "lbmshape.Stop whose request() stops this call alone (lbmshape.Interrupted). res (cells along the longest "
+        "side, 128) or voxel (a cell's size in the mesh's units), and margin (empty cells around the mesh).");
   m.def("morph", &morph, py::arg("source_vertices"), py::arg("source_triangles"), py::arg("target_vertices"),
-        py::arg("target_triangles"), py::arg("frames") = 48, py::arg("res") = 128, py::arg("steps") = py::none(),
+        py::arg("target_triangles"), py::arg("frames") = 48, py::arg("res") = py::none(), py::arg("steps") = py::none(),
         py::arg("cs") = 0.1, py::arg("gamma") = 0.05, py::arg("align") = "fit", py::arg("band") = true,
         py::arg("device") = nullptr, py::arg("on_frame") = py::none(), py::arg("report") = false,
-        py::arg("stop") = py::none(),
+        py::arg("stop") = py::none(), py::arg("voxel") = py::none(), py::arg("margin") = GridOptions().marginVoxels,
+        py::arg("tolerance") = MorphOptions().tolerance, py::arg("steps_per_frame") = py::none(),
+        py::arg("noise") = 0.0, py::arg("seed") = FieldNoise().seed,
         "Morph one closed mesh into another, as `lbmshape morph` with the same defaults: a list of `frames` "
         "(vertices, triangles) pairs, or each passed to on_frame(index, vertices, triangles) as it is made (then "
         "None); with report=True also the figures `morph --json` prints, as a dict. stop: an lbmshape.Stop whose "
-        "request() stops this call alone (lbmshape.Interrupted).");
+        "request() stops this call alone (lbmshape.Interrupted). res (128) or voxel, margin, tolerance (voxels: "
+        "where the morph has arrived), steps or steps_per_frame (the paper's scheme, ending where the steps end), "
+        "noise and seed (the paper's noise on the source's field, on the grid).");
   // iter_morph: morph's frames as a generator, in Python on top of morph's
   // on_frame: the morph runs on a thread of its own, two frames ahead at
   // most; leaving the loop early stops it.

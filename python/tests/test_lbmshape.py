@@ -247,6 +247,27 @@ class Morph(unittest.TestCase):
         last_x = np.abs(frames[-1][0][:, 0]).max()
         self.assertGreater(last_x, first_x + 0.2, "the last frame is stretched as the target is")
 
+    def test_the_command_lines_grid_and_schedule_options_are_keywords(self):
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        frames, report = lbmshape.morph(v, f, vt, ft, frames=3, voxel=0.1, margin=3, align="none", report=True)
+        self.assertAlmostEqual(report["grid"]["voxel"], 0.1)
+        frames, paper = lbmshape.morph(v, f, vt, ft, frames=3, res=24, steps_per_frame=2, align="none", report=True)
+        self.assertEqual(paper["steps"], 4)  # the paper's scheme: the steps given, 2 a frame
+        _, loose = lbmshape.morph(v, f, vt, ft, frames=2, res=24, tolerance=1.0, align="none", report=True)
+        _, tight = lbmshape.morph(v, f, vt, ft, frames=2, res=24, tolerance=0.1, align="none", report=True)
+        self.assertLess(loose["steps"], tight["steps"], "a looser tolerance arrives sooner")
+        _, noisy = lbmshape.morph(v, f, vt, ft, frames=2, res=24, noise=0.05, seed=3, align="none", report=True)
+        self.assertEqual(noisy["lattice"]["kind"], "grid")  # the paper's noise is added on the grid
+        with self.assertRaisesRegex(lbmshape.UsageError, "res or voxel, not both"):
+            lbmshape.morph(v, f, vt, ft, res=24, voxel=0.1)
+        with self.assertRaisesRegex(lbmshape.UsageError, "margin"):
+            lbmshape.morph(v, f, vt, ft, res=24, margin=0)
+        with self.assertRaisesRegex(lbmshape.UsageError, "tolerance"):
+            lbmshape.morph(v, f, vt, ft, res=24, tolerance=5)
+        _, _, smoothed = lbmshape.denoise(v, f, voxel=0.1, steps=1, report=True)
+        self.assertAlmostEqual(smoothed["grid"]["voxel"], 0.1)
+
     def test_the_frames_extracted_on_the_device_are_the_cpus(self):
         v, f = icosphere(3)
         vt, ft = ellipsoid()

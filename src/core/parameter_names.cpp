@@ -17,18 +17,18 @@ Names namesOf(Parameter parameter)
 {
   switch (parameter) {
   case Parameter::Resolution: return {"grid.resolution", "--res", "res"};
-  case Parameter::Voxel: return {"grid.voxel", "--voxel", nullptr};
-  case Parameter::Margin: return {"grid.marginVoxels", "--margin", nullptr};
-  case Parameter::Noise: return {"noise.amplitude", "--noise", nullptr};
+  case Parameter::Voxel: return {"grid.voxel", "--voxel", "voxel"};
+  case Parameter::Margin: return {"grid.marginVoxels", "--margin", "margin"};
+  case Parameter::Noise: return {"noise.amplitude", "--noise", "noise"};
   case Parameter::Gamma: return {"gamma", "--gamma", "gamma"};
   case Parameter::Steps: return {"steps", "--steps", "steps"};
   case Parameter::Radius: return {"radius", "--radius", "radius"};
   case Parameter::Relax: return {"relaxRounds", "--relax", "relax"};
-  case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", nullptr};
+  case Parameter::StepsPerFrame: return {"stepsPerFrame", "--steps-per-frame", "steps_per_frame"};
   case Parameter::Frames: return {"frames", "--frames", "frames"};
   case Parameter::Cs: return {"cs", "--cs", "cs"};
   case Parameter::Fps: return {"fps", "--fps", nullptr};
-  case Parameter::Tolerance: return {"tolerance", "--tolerance", nullptr};
+  case Parameter::Tolerance: return {"tolerance", "--tolerance", "tolerance"};
   case Parameter::Format: return {"format", "--format", nullptr};
   case Parameter::Align: return {"align", "--align", "align"};
   case Parameter::Compression: return {"compression", "--compress", nullptr};

@@ -89,6 +89,29 @@ void reportPlacement(const Placement& p, Alignment align, const fs::path& target
 // Frames made at the same step as the frame before are the same shape: a
 // morph of few steps (a coarse grid, source and target close) for many
 // frames plays in jerks.
+// A shape less than a voxel across on the grid the two share (its size set
+// by the larger) would enclose no cell: refused before the distances, naming
+// the sizes and the way out. The message that came later, "it encloses no
+// volume ... an open sheet has no inside", sent the user looking for holes.
+void refuseShapesSmallerThanAVoxel(const TriangleMesh& source, const TriangleMesh& target, const fs::path& sourcePath,
+                                   const fs::path& targetPath, double voxel, Alignment align)
+{
+  const auto across = [](const TriangleMesh& mesh) {
+    const glm::dvec3 size = bounds(mesh).size();
+    return std::max({size.x, size.y, size.z});
+  };
+  const double sourceSize = across(source), targetSize = across(target);
+  for (const auto& [path, size, other, otherSize] : {std::tuple{&sourcePath, sourceSize, &targetPath, targetSize},
+                                                     std::tuple{&targetPath, targetSize, &sourcePath, sourceSize}}) {
+    if (size >= voxel) continue;
+    throw InputError(
+        "cannot use " + path->string() + ": it is " + threeSignificantDigits(size) + " across, less than a voxel (" +
+        threeSignificantDigits(voxel) + ") of the grid the two shapes share, whose size " + other->string() + " (" +
+        threeSignificantDigits(otherSize) + " across) sets, so it would enclose no cell" +
+        (align != Alignment::Fit ? "; " + nameOf(Parameter::Align) + " fit scales the target onto the source" : ""));
+  }
+}
+
 void warnOfRepeatedFrames(const std::vector<int>& frameSteps, int totalSteps)
 {
   size_t repeats = 0;
@@ -215,6 +238,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
   for (auto& p : target.positions) p = placement.apply(p);
   const GridFrame frame = placeGrid(unite(bounds(source), bounds(target)), o.grid);
+  refuseShapesSmallerThanAVoxel(source, target, sourcePath, targetPath, frame.voxel, o.align);
   if (!o.band || o.noise.amplitude > 0.0) device.checkFits(frame.extent);
   log::verbose("grid " + frame.extent.toString() + ", voxel " + std::to_string(frame.voxel));
 

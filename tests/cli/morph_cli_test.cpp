@@ -256,6 +256,10 @@ TEST_P(MorphBadInput, ExitCodeAndOneLine)
                                }),
                 a);
     }
+    if (a == "TINY") {  // a thousandth of the sphere: less than a voxel of the grid the two share
+      a = (folder / "tiny.obj").string();
+      writeMesh(testing::icosphere(2, 0.001), a);
+    }
     if (a == "SLAB") {  // 0.4 thick: at --res 16 its cells inside lie under a voxel deep, at 40 two
       a = (folder / "slab.obj").string();
       writeMesh(testing::box({-0.8, -0.8, -0.2}, {0.8, 0.8, 0.2}), a);
@@ -277,6 +281,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadMorph{"missing_source", 3, {"MISSING", "TORUS", "OUT", "--res", "16"}},
         BadMorph{"target_encloses_nothing", 3, {"SPHERE", "SHEET", "OUT", "--res", "16"}},
         BadMorph{"source_encloses_nothing", 3, {"SHEET", "SPHERE", "OUT", "--res", "16"}},
+        BadMorph{"target_smaller_than_a_voxel", 3, {"SPHERE", "TINY", "OUT", "--res", "16", "--align", "none"}},
+        BadMorph{"source_smaller_than_a_voxel", 3, {"TINY", "SPHERE", "OUT", "--res", "16", "--align", "center"}},
+        BadMorph{"a_tiny_target_fitted_is_fine", 0, {"SPHERE", "TINY", "OUT", "--res", "16", "--frames", "2", "-q"}},
         // Inside, but shallower than the tolerance: a last frame within it could hold no inside.
         BadMorph{"target_shallower_than_the_tolerance",
                  3,
@@ -474,6 +481,23 @@ TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
   EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [&](const auto& w) {
     return w.template get<std::string>().find(partsLost) == 0;
   })) << warnings;
+}
+
+// A shape less than a voxel across on the grid the two share is named with
+// its size and the other's, and --align fit offered, before any distance:
+// "it encloses no volume ... an open sheet has no inside" sent the user
+// looking for holes in a closed mesh.
+TEST_F(MorphCli, AShapeSmallerThanAVoxelIsNamedWithItsSize)
+{
+  const fs::path tiny = folder / "tiny.obj";
+  writeMesh(testing::icosphere(2, 0.001), tiny);
+  const testing::CliResult r = testing::runLbmshape(
+      {"morph", sphere, tiny.string(), (folder / "out").string(), "--res", "16", "--align", "none"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("cannot use " + tiny.string() + ": it is 0.002 across, less than a voxel"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--align fit scales the target onto the source"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("sdf"), std::string::npos) << "before the distances: " << r.err;
 }
 
 // A folder that cannot be made is an output error before any work.

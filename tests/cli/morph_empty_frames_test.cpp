@@ -115,7 +115,9 @@ TEST_F(MorphThroughNothing, ATargetWithNoInsideOnTheGridIsAnInputError)
       {"morph", left, speck, out.string(), "--align", "none", "--res", "24", "--frames", "5", "--steps", "40"});
   EXPECT_EQ(r.exitCode, 3) << r.err;
   ASSERT_EQ(testing::messageLines(r.err).size(), 1u) << r.err;
-  EXPECT_NE(r.err.find("speck.obj: it encloses no volume"), std::string::npos) << r.err;
+  // Less than a voxel across: named with its size before the distances
+  // (the enclosed-volume check, which came later, said "it encloses no volume").
+  EXPECT_NE(r.err.find("speck.obj: it is 0.002 across, less than a voxel"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -41,8 +41,9 @@ TEST(ParameterNames, EachAudienceHasItsOwnName)
   EXPECT_EQ(nameOf(Parameter::Resolution, ParameterNaming::CommandLine), "--res");
   EXPECT_EQ(nameOf(Parameter::Resolution, ParameterNaming::Python), "res");
   EXPECT_EQ(nameOf(Parameter::StepsPerFrame, ParameterNaming::CommandLine), "--steps-per-frame");
-  // The Python module has no keyword for the margin: its struct name stands.
-  EXPECT_EQ(nameOf(Parameter::Margin, ParameterNaming::Python), "grid.marginVoxels");
+  EXPECT_EQ(nameOf(Parameter::Margin, ParameterNaming::Python), "margin");
+  // The Python module has no keyword for the colours: its struct name stands.
+  EXPECT_EQ(nameOf(Parameter::ColourByCurvature, ParameterNaming::Python), "colourByCurvature");
   // --force is two fields: a denoise's replaceInput, a morph's force.
   EXPECT_EQ(nameOf(Parameter::ReplaceInput, ParameterNaming::Library), "replaceInput");
   EXPECT_EQ(nameOf(Parameter::ReplaceInput, ParameterNaming::CommandLine), "--force");
@@ -50,10 +51,11 @@ TEST(ParameterNames, EachAudienceHasItsOwnName)
 
 TEST(ParameterNames, HintsNameOnlyWhatTheAudienceCanSet)
 {
-  EXPECT_TRUE(audienceCanSet(Parameter::Voxel)) << "a C++ caller sets every field";
+  EXPECT_TRUE(audienceCanSet(Parameter::Fps)) << "a C++ caller sets every field";
   NamingFor python(ParameterNaming::Python);
-  EXPECT_FALSE(audienceCanSet(Parameter::Voxel)) << "lbmshape.denoise has no voxel keyword";
+  EXPECT_FALSE(audienceCanSet(Parameter::Fps)) << "lbmshape.morph makes no animation, so has no fps keyword";
   EXPECT_TRUE(audienceCanSet(Parameter::Resolution));
+  EXPECT_TRUE(audienceCanSet(Parameter::Voxel));
 }
 
 TEST(ParameterNames, ALibraryCallerIsToldTheOptionNotTheFlag)

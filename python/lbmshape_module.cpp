@@ -19,12 +19,15 @@
 // RuntimeError), lbmshape.NumericalError (a RuntimeError: a result that is
 // not a number), lbmshape.Interrupted, all from lbmshape.Error.
 #include <stop_token>
+#include <unistd.h>
 #include <atomic>
 #include <cmath>
 #include <exception>
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <thread>
+#include <chrono>
 #include <string>
 #include <utility>
 
@@ -55,11 +58,18 @@ using Triangles = py::array_t<int64_t, py::array::c_style | py::array::forcecast
 // Triangles as given (an array or nested lists), as int64: integers only,
 // for forcecast would truncate 2.9 to vertex 2 without a word. An empty
 // list, which numpy makes of floats, is let through for toMesh to refuse.
-Triangles integerTriangles(const py::array& given, const std::string& name)
+// (pybind11 takes a py::array argument only as an array: nested lists were
+// refused with a TypeError, so the argument is any object, made an array here.)
+Triangles integerTriangles(const py::object& object, const std::string& name)
 {
+  const py::array given = py::module_::import("numpy").attr("asarray")(object);
   const char kind = given.dtype().kind();
   if (given.size() != 0 && kind != 'i' && kind != 'u')
     throw UsageError(name + " must hold integers (vertex indices), not " + py::str(given.dtype()).cast<std::string>());
+  // As int64, an index of 2^63 or more would wrap to a negative one and be named so.
+  if (given.size() != 0 && kind == 'u' && given.attr("max")().cast<uint64_t>() > uint64_t(INT64_MAX))
+    throw InputError(name + " has index " + std::to_string(given.attr("max")().cast<uint64_t>()) +
+                     ", beyond any mesh's vertices");
   return Triangles::ensure(given);
 }
 
@@ -67,7 +77,7 @@ Triangles integerTriangles(const py::array& given, const std::string& name)
 // range here (the rest, a surface that is not flat, denoiseMesh checks).
 // `prefix` names the pair in messages: "" (vertices, triangles) or
 // "source_", "target_".
-TriangleMesh toMesh(const Vertices& vertices, const py::array& givenTriangles, const std::string& prefix = "")
+TriangleMesh toMesh(const Vertices& vertices, const py::object& givenTriangles, const std::string& prefix = "")
 {
   const std::string vertexName = prefix + "vertices", triangleName = prefix + "triangles";
   const Triangles triangles = integerTriangles(givenTriangles, triangleName);
@@ -116,6 +126,7 @@ class CallUnderWay {
 public:
   CallUnderWay()
   {
+    refuseAForkedProcess();
     if (underWay++ == 0) interrupt::clearStopRequest();
   }
   ~CallUnderWay()
@@ -124,8 +135,24 @@ public:
   }
   CallUnderWay(const CallUnderWay&) = delete;
   CallUnderWay& operator=(const CallUnderWay&) = delete;
+  static int count() { return underWay; }
 
 private:
+  // A process forked from one that made a call (multiprocessing's default
+  // start method on Linux) hung at its first call: OpenMP's threads, and
+  // the device's, do not survive fork(). Refused instead.
+  static void refuseAForkedProcess()
+  {
+    static std::atomic<pid_t> usedIn{0};
+    pid_t expected = 0;
+    const pid_t now = ::getpid();
+    if (!usedIn.compare_exchange_strong(expected, now) && expected != now)
+      throw UsageError(
+          "lbmshape cannot run in a process forked from one that already used it (OpenMP's and the "
+          "device's threads do not survive fork()): start the processes with multiprocessing's "
+          "'spawn' or 'forkserver' method, or fork before the first lbmshape call");
+  }
+
   static inline std::atomic<int> underWay{0};
 };
 
@@ -177,6 +204,22 @@ auto stoppable(Work&& work) -> decltype(work())
   return std::move(*result);
 }
 
+// At exit Python ends its daemon threads where they next take the GIL
+// (pthread_exit, on Python 3.11), an unwinding no C++ frame of a call under
+// way survives: a morph left running on a daemon thread (an iter_morph loop
+// not finished, a thread of the program's) aborted the process half the
+// time. Registered with atexit, which runs while those threads may still
+// take the GIL: stops the calls under way, as Ctrl-C does, and waits for
+// them to end (at most a few seconds), without the GIL.
+void stopCallsAtExit()
+{
+  if (CallUnderWay::count() == 0) return;
+  interrupt::requestStop();
+  py::gil_scoped_release released;
+  for (int waited = 0; waited < 500 && CallUnderWay::count() > 0; ++waited)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+}
+
 // The device the functions use unless given one: the calling thread's
 // own, opened at its first use. Calls that share a device take turns
 // (ComputeDevice::takeTurn), so one shared by every thread would make a
@@ -216,7 +259,7 @@ GridOptions gridOf(std::optional<int> res, std::optional<double> voxel, double m
   return grid;
 }
 
-py::object denoise(const Vertices& vertices, const py::array& triangles, std::optional<int> res,
+py::object denoise(const Vertices& vertices, const py::object& triangles, std::optional<int> res,
                    std::optional<int> steps, std::optional<double> radius, double gamma, const std::string& smoothing,
                    bool keepVolume, std::optional<bool> twicing, bool dense, std::shared_ptr<ComputeDevice> device,
                    bool report, int relax, const std::optional<std::stop_source>& stop, std::optional<double> voxel,
@@ -256,8 +299,8 @@ RunsOn runsOnNamed(const std::string& parameter, const std::string& name)
 // as the frame writer's thread makes it (with the GIL taken for the call),
 // or gathered into a list. An exception the callback raises stops the morph
 // and is raised again as it was, its type and traceback kept.
-py::object morph(const Vertices& sourceVertices, const py::array& sourceTriangles, const Vertices& targetVertices,
-                 const py::array& targetTriangles, int frames, std::optional<int> res, std::optional<int> steps,
+py::object morph(const Vertices& sourceVertices, const py::object& sourceTriangles, const Vertices& targetVertices,
+                 const py::object& targetTriangles, int frames, std::optional<int> res, std::optional<int> steps,
                  double cs, double gamma, const std::string& align, bool band, std::shared_ptr<ComputeDevice> device,
                  py::object onFrame, bool report, const std::optional<std::stop_source>& stop,
                  std::optional<double> voxel, double margin, double tolerance, std::optional<int> stepsPerFrame,
@@ -402,7 +445,21 @@ PYBIND11_MODULE(lbmshape, m)
   // iter_morph: morph's frames as a generator, in Python on top of morph's
   // on_frame: the morph runs on a thread of its own, two frames ahead at
   // most; leaving the loop early stops it.
+  m.def("_stop_calls_at_exit", &stopCallsAtExit);
   py::exec(R"(
+# The stop events of the iter_morph loops under way: set at exit, before the
+# calls under way are stopped (a morph waiting for its loop to take a frame
+# waits in Python, where no library check sees the stop).
+_loops_under_way = set()
+
+def _stop_at_exit():
+    for stop in list(_loops_under_way):
+        stop.set()
+    _stop_calls_at_exit()
+
+import atexit as _atexit
+_atexit.register(_stop_at_exit)
+
 def iter_morph(*args, **kwargs):
     """Yield (index, vertices, triangles) for each frame of lbmshape.morph(*args, **kwargs)
     as it is made. The morph runs on a thread of its own, at most two frames ahead;
@@ -413,6 +470,7 @@ def iter_morph(*args, **kwargs):
     if kwargs.get("report"):
         raise TypeError("iter_morph() yields frames, not a report: use lbmshape.morph(..., report=True) instead")
     frames, stop, done, failure = queue.Queue(maxsize=2), threading.Event(), object(), []
+    _loops_under_way.add(stop)
     # Leaving the loop stops the morph at its next check, not at its next
     # frame; a Stop the caller gave stops it too.
     own_stop, callers_stop = Stop(), kwargs.pop("stop", None)
@@ -451,6 +509,7 @@ def iter_morph(*args, **kwargs):
                 break
             yield item
     finally:
+        _loops_under_way.discard(stop)
         stop.set()
         own_stop.request()
         while worker.is_alive():
@@ -483,7 +542,7 @@ def iter_morph(*args, **kwargs):
       py::arg("path"), "Read an OBJ, PLY, OFF, STL, glTF or GLB file: (vertices, triangles)");
   m.def(
       "write_mesh",
-      [](const std::filesystem::path& path, const Vertices& vertices, const py::array& triangles) {
+      [](const std::filesystem::path& path, const Vertices& vertices, const py::object& triangles) {
         const TriangleMesh mesh = toMesh(vertices, triangles);
         stoppable([&] {
           writeMesh(mesh, path);

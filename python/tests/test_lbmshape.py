@@ -446,6 +446,61 @@ class IterMorph(unittest.TestCase):
             next(lbmshape.iter_morph(v, f, v, f, report=True))
 
 
+class Processes(unittest.TestCase):
+    def test_triangles_may_be_nested_lists(self):
+        v, f = icosphere(2)
+        v2, f2 = lbmshape.denoise(v, f.tolist(), res=24, steps=1)
+        self.assertTrue(closed(f2))
+        with self.assertRaisesRegex(lbmshape.InputError, "beyond any mesh's vertices"):
+            lbmshape.denoise(v, np.full((4, 3), 2**63, dtype=np.uint64), res=24)
+
+    def test_a_forked_process_is_refused_rather_than_hanging(self):
+        # The suite has made calls: a child forked now is refused at once
+        # (it hung on OpenMP's threads, which fork() does not copy).
+        v, f = icosphere(2)
+        lbmshape.denoise(v, f, res=24, steps=1)
+        read, write = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            os.close(read)
+            try:
+                lbmshape.denoise(v, f, res=24, steps=1)
+                os.write(write, b"ran")
+            except lbmshape.UsageError as e:
+                os.write(write, ("refused: " + str(e)).encode())
+            finally:
+                os._exit(0)
+        os.close(write)
+        _, status = os.waitpid(pid, 0)
+        said = os.read(read, 4096).decode()
+        os.close(read)
+        self.assertTrue(said.startswith("refused: lbmshape cannot run in a process forked"), said)
+
+    def test_the_program_may_end_with_a_morph_under_way(self):
+        # A loop not finished, and a daemon thread's morph: the calls are
+        # stopped at exit; the process aborted half the time before.
+        import subprocess, sys
+        script = (
+            "import sys, threading, time\n"
+            "sys.path.insert(0, %r)\n"
+            "import lbmshape, numpy as np\n"
+            "from test_lbmshape import icosphere\n"
+            "v, f = icosphere(3)\n"
+            "long = dict(frames=400, res=32, steps=8000, cs=0.0005, align='none')\n"
+            "if sys.argv[1] == 'loop':\n"
+            "    g = lbmshape.iter_morph(v, f, v * [1.3, 1, 0.8], f, **long)\n"
+            "    next(g)\n"
+            "else:\n"
+            "    threading.Thread(target=lambda: lbmshape.morph(v, f, v * [1.3, 1, 0.8], f, on_frame=lambda *a: None,"
+            " **long), daemon=True).start()\n"
+            "    time.sleep(1)\n"
+        ) % os.path.dirname(lbmshape.__file__)
+        for mode in ("loop", "thread", "loop", "thread"):
+            r = subprocess.run([sys.executable, "-c", script, mode], cwd=os.path.dirname(__file__),
+                               capture_output=True, text=True, timeout=120)
+            self.assertEqual(r.returncode, 0, mode + ": " + r.stderr[-400:])
+
+
 class Files(unittest.TestCase):
     def test_a_mesh_written_reads_back(self):
         v, f = icosphere(2)

@@ -1,5 +1,7 @@
 #include "lbmshape/pipeline/frame_writer.hpp"
 
+#include <cxxabi.h>
+
 #include <cstdio>
 #include <system_error>
 #include <type_traits>
@@ -224,6 +226,11 @@ void FrameWriter::run()
         ++written_;  // committed here, or handed to the sink
       }
       busy_ = false;
+    } catch (abi::__forced_unwind&) {
+      // The thread is being ended (pthread_exit, as Python does to a thread
+      // that takes the GIL at exit, in a FrameSink): unwinding must go on,
+      // or the runtime aborts the process.
+      throw;
     } catch (...) {
       std::unique_lock lock(mutex_);
       // The frames made before this one are whole: their commits end first,

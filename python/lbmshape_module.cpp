@@ -404,7 +404,11 @@ PYBIND11_MODULE(lbmshape, m)
            "narrow band's distances are computed, 'auto' (the device on a GPU, the CPU on lavapipe), 'cpu' or "
            "'device' (lbmshape --sdf); extract: where a morph's frames' marching cubes run, the same choices "
            "(lbmshape --extract)")
-      .def_property_readonly("name", &ComputeDevice::name);
+      .def_property_readonly("name", &ComputeDevice::name)
+      // iter_morph's: the loop's thread, or none (ComputeDevice::setFramesLoopThread).
+      .def("_set_frames_loop_here", [](const ComputeDevice& device, bool here) {
+        device.setFramesLoopThread(here ? std::this_thread::get_id() : std::thread::id());
+      });
 
   // One call's own stop (C++: the options' std::stop_token), where
   // request_stop() stops every call under way.
@@ -471,6 +475,11 @@ def iter_morph(*args, **kwargs):
         raise TypeError("iter_morph() yields frames, not a report: use lbmshape.morph(..., report=True) instead")
     frames, stop, done, failure = queue.Queue(maxsize=2), threading.Event(), object(), []
     _loops_under_way.add(stop)
+    # A call in the loop on the morph's own device would wait for the morph,
+    # which waits for the loop: refused (UsageError), not a hang.
+    device = kwargs.get("device")
+    if device is not None:
+        device._set_frames_loop_here(True)
     # Leaving the loop stops the morph at its next check, not at its next
     # frame; a Stop the caller gave stops it too.
     own_stop, callers_stop = Stop(), kwargs.pop("stop", None)
@@ -509,6 +518,8 @@ def iter_morph(*args, **kwargs):
                 break
             yield item
     finally:
+        if device is not None:
+            device._set_frames_loop_here(False)
         _loops_under_way.discard(stop)
         stop.set()
         own_stop.request()

@@ -401,6 +401,22 @@ class IterMorph(unittest.TestCase):
         indices = [k for k, vk, fk in lbmshape.iter_morph(v, f, vt, ft, frames=5, res=24, steps=20, align="none")]
         self.assertEqual(indices, [0, 1, 2, 3, 4])
 
+    def test_a_call_in_the_loop_on_the_morphs_own_device_is_refused(self):
+        # It waited for the morph, which waited for the loop: a hang.
+        v, f = icosphere(3)
+        vt, ft = ellipsoid()
+        device = lbmshape.Device()
+        frames = lbmshape.iter_morph(v, f, vt, ft, frames=4, res=24, steps=40, align="none", device=device)
+        try:
+            for k, vk, fk in frames:
+                with self.assertRaisesRegex(lbmshape.UsageError, "loop over a morph's frames cannot use"):
+                    lbmshape.denoise(vk, fk, res=24, device=device)
+                lbmshape.denoise(vk, fk, res=24, steps=1)  # the thread's own device
+                break
+        finally:
+            frames.close()
+        lbmshape.denoise(v, f, res=24, steps=1, device=device)  # the loop has ended: the device is free
+
     def test_leaving_early_stops_the_morph_and_the_device_is_free_again(self):
         v, f = icosphere(3)
         vt, ft = ellipsoid()

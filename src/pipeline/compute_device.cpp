@@ -35,6 +35,7 @@ ComputeDevice::ComputeDevice(ComputeDevice&& other) noexcept
   surfaces_ = other.surfaces_;
   turn_ = other.turn_;
   distancesTurn_ = other.distancesTurn_;
+  framesLoop_ = other.framesLoop_;
   instance_ = std::move(other.instance_);
   chosen_ = other.chosen_;
   gpu_ = std::move(other.gpu_);
@@ -51,6 +52,10 @@ ComputeDevice::Turn ComputeDevice::takeTurn() const
     throw UsageError(
         "a call from a morph's frame callback cannot use the morph's own device, which the morph holds until its last "
         "frame: give the call a device of its own");
+  if (*framesLoop_ == std::this_thread::get_id())
+    throw UsageError(
+        "a call in a loop over a morph's frames cannot use the morph's own device, which the morph holds until its "
+        "last frame, waiting for the loop to take the next: give the call a device of its own");
   Turn turn(*turn_, std::defer_lock);
   // Waited for in short spells, so that a stop request ends the wait.
   while (!turn.try_lock_for(std::chrono::milliseconds(50)))

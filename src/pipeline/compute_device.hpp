@@ -8,6 +8,8 @@
 
 #include <future>
 #include <memory>
+#include <thread>
+#include <atomic>
 #include <mutex>
 #include <string>
 
@@ -128,6 +130,13 @@ public:
   // before it takes the turn, so a bad one fails at once, busy device or not.
   using Turn = std::unique_lock<std::recursive_timed_mutex>;
   [[nodiscard]] Turn takeTurn() const;
+  // The thread of a loop that takes a morph's frames as they come (Python's
+  // iter_morph): a call from it on this device would wait for the morph,
+  // which waits for the loop to take its next frame, and hung; it is a
+  // UsageError instead. The loop sets it, and clears it (the default id)
+  // when it ends.
+  void setFramesLoopThread(std::thread::id thread) const { *framesLoop_ = thread; }
+
   // While one lives, on a morph's frame writer's thread around its frame
   // sink: a call there on the morph's own device would wait for the morph,
   // which waits for the sink, so it is a UsageError instead.
@@ -164,6 +173,7 @@ private:
   RunsOn surfaces_ = RunsOn::Auto;
   std::shared_ptr<std::recursive_timed_mutex> turn_ = std::make_shared<std::recursive_timed_mutex>();  // takeTurn()
   mutable std::shared_ptr<std::mutex> distancesTurn_ = std::make_shared<std::mutex>();  // bandDistances' callers
+  std::shared_ptr<std::atomic<std::thread::id>> framesLoop_ = std::make_shared<std::atomic<std::thread::id>>();
   mutable std::mutex instanceMutex_;  // instance_ and chosen_, which the warm-up's thread sets too
   mutable std::shared_ptr<gpu::VulkanInstance> instance_;
   mutable size_t chosen_ = 0;

@@ -74,16 +74,13 @@ bool inside(const fs::path& inner, const fs::path& outer)
   return o == outer.end() && i != inner.end();
 }
 
-}  // namespace
-
-// Sorted by path, so a
-// jobs file of 200,000 jobs is checked in a moment (pair by pair it took
-// minutes): equal paths lie side by side, and what lies inside a folder
-// comes right after it, paths comparing component by component.
-void requireDistinctOutputs(const nlohmann::json& jobs, const fs::path& file)
+// Two jobs writing the same file, or one writing into another's folder of
+// frames: refused, naming both. Sorted by path, so a jobs file of 200,000
+// jobs is checked in a moment (pair by pair it took minutes): equal paths
+// lie side by side, and what lies inside a folder comes right after it,
+// paths comparing component by component.
+void requireDistinctOutputs(std::vector<JobWrite> writes, const fs::path& file)
 {
-  PathSpeller oneSpelling(file);
-  std::vector<JobWrite> writes = writesOf(jobs, oneSpelling);
   // Sorted as strings whose separator sorts before every other character:
   // the order of comparing component by component, at a string compare's
   // cost (path's own operator< took 19 s for 200,000 jobs).
@@ -113,12 +110,11 @@ void requireDistinctOutputs(const nlohmann::json& jobs, const fs::path& file)
   }
 }
 
-void warnOfReadsBeforeTheirWrites(const nlohmann::json& jobs, const fs::path& file,
+void warnOfReadsBeforeTheirWrites(const nlohmann::json& jobs, std::vector<JobWrite> writes, PathSpeller& oneSpelling,
                                   const std::function<bool(size_t)>& inThisPart, bool sharded)
 {
-  PathSpeller oneSpelling(file);
   std::unordered_map<std::string, JobWrite> written;
-  for (JobWrite& w : writesOf(jobs, oneSpelling)) written.emplace(w.path.string(), std::move(w));
+  for (JobWrite& w : writes) written.emplace(w.path.string(), std::move(w));
   if (written.empty()) return;
   // The job that writes `path`: the file itself, or the folder of frames it lies in.
   const auto writerOf = [&](const fs::path& path) -> const JobWrite* {
@@ -155,6 +151,18 @@ void warnOfReadsBeforeTheirWrites(const nlohmann::json& jobs, const fs::path& fi
   }
   if (warned > mostLines)
     log::warning("and " + std::to_string(warned - mostLines) + " more jobs that read a file before it is written");
+}
+
+}  // namespace
+
+void checkJobFiles(const nlohmann::json& jobs, const fs::path& file, const std::function<bool(size_t)>& inThisPart,
+                   bool sharded)
+{
+  // Spelled once for both checks: resolving the paths is most of their time.
+  PathSpeller oneSpelling(file);
+  std::vector<JobWrite> writes = writesOf(jobs, oneSpelling);
+  requireDistinctOutputs(writes, file);
+  warnOfReadsBeforeTheirWrites(jobs, std::move(writes), oneSpelling, inThisPart, sharded);
 }
 
 }  // namespace lbmshape::cli

@@ -49,7 +49,7 @@ std::string usageMessage(const CLI::App& app, const CLI::ParseError& e)
         return "unknown command '" + word + "'; the commands are " + commands + " (see lbmshape --help)";
       }
   const auto given = app.get_subcommands();
-  return lbmshape::cli::plainParseError(given.empty() ? &app : given.front(), e) + " (see lbmshape " +
+  return lbmshape::cli::plainParseError(app, e) + " (see lbmshape " +
          (given.empty() ? "" : given.front()->get_name() + " ") + "--help)";
 }
 

@@ -124,8 +124,8 @@ private:
   std::vector<std::set<std::string>> keys_;
 };
 
-// The jobs of `file`. A key given twice in one job and jobs whose outputs
-// clash (requireDistinctOutputs) are refused, naming the jobs and the key.
+// The jobs of `file`. A key given twice in one job is refused, naming the
+// job and the key (the jobs' files are compared by checkJobFiles).
 nlohmann::json readJobs(const fs::path& file)
 {
   const MappedFile text(file);  // a regular file, or an InputError that says what it is
@@ -145,7 +145,6 @@ nlohmann::json readJobs(const fs::path& file)
     throw UsageError(file.string() + ": job " + std::to_string(d.job) + " gives \"" + d.key + "\" twice");
   }
   if (!jobs.is_array()) throw InputError("cannot read " + file.string() + ": expected a JSON array of jobs");
-  requireDistinctOutputs(jobs, file);
   return jobs;
 }
 
@@ -184,8 +183,7 @@ nlohmann::json parseJob(const nlohmann::json& job, const fs::path& base, const C
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    const auto given = app.get_subcommands();
-    throw UsageError(plainParseError(given.empty() ? &app : given.front(), e));
+    throw UsageError(plainParseError(app, e));
   }
   return report;
 }
@@ -223,13 +221,34 @@ std::map<size_t, std::string> jobsWithUsageErrors(const nlohmann::json& jobs, co
   return wrong;
 }
 
-// A failed job's entry in the results, from its message.
-nlohmann::json failureOf(const nlohmann::json& jobs, size_t index, const std::string& message)
+// A job's entry in the results: its number, and its command where it names one.
+nlohmann::json resultOf(const nlohmann::json& jobs, size_t index)
 {
-  nlohmann::json result = {{"job", index + 1}, {"ok", false}, {"exit_code", int(ExitCode::Usage)}, {"error", message}};
+  nlohmann::json result = {{"job", index + 1}};
   if (jobs[index].is_object() && jobs[index].contains("command") && jobs[index]["command"].is_string())
     result["command"] = jobs[index]["command"];
   return result;
+}
+
+// The entry of a job whose options are wrong, from its message.
+nlohmann::json failureOf(const nlohmann::json& jobs, size_t index, const std::string& message)
+{
+  nlohmann::json result = resultOf(jobs, index);
+  result.update({{"ok", false}, {"exit_code", int(ExitCode::Usage)}, {"error", message}});
+  return result;
+}
+
+// The report of `run --json`, whichever way the run ends.
+nlohmann::json runReport(const RunArguments& a, const nlohmann::json& jobs, size_t run, size_t failed, bool interrupted,
+                         const nlohmann::json& results)
+{
+  return {{"command", "run"},
+          {"jobs", jobs.size()},
+          {"run", run},
+          {"failed", failed},
+          {"interrupted", interrupted},
+          {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
+          {"results", results}};
 }
 
 // `run --check`: every job of the run checked, none run. Its report lists
@@ -245,19 +264,14 @@ void reportCheck(const CommonOptions& common, const RunArguments& a, const nlohm
       results.push_back(failureOf(jobs, i, found->second));
       log::warning(found->second);
     } else {
-      nlohmann::json result = {{"job", i + 1}, {"ok", true}};
-      if (jobs[i].contains("command")) result["command"] = jobs[i]["command"];
+      nlohmann::json result = resultOf(jobs, i);
+      result["ok"] = true;
       results.push_back(result);
     }
   }
-  common.report({{"command", "run"},
-                 {"check", true},
-                 {"jobs", jobs.size()},
-                 {"run", 0},
-                 {"failed", wrong.size()},
-                 {"interrupted", false},
-                 {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
-                 {"results", results}});
+  nlohmann::json report = runReport(a, jobs, 0, wrong.size(), false, results);
+  report["check"] = true;
+  common.report(report);
   if (!wrong.empty())
     throw UsageError(std::to_string(wrong.size()) + " of " + std::to_string(jobsInPart) +
                      " jobs have wrong options; first: " + wrong.begin()->second);
@@ -273,7 +287,7 @@ void runJobs(CommonOptions& common, const RunArguments& a)
   const fs::path base = file.parent_path();
   size_t jobsInPart = 0;
   for (size_t i = 0; i < jobs.size(); ++i) jobsInPart += shard.holds(i + 1);
-  warnOfReadsBeforeTheirWrites(
+  checkJobFiles(
       jobs, file, [&shard](size_t job) { return shard.holds(job); }, !a.shard.empty());
   const std::map<size_t, std::string> wrong = jobsWithUsageErrors(jobs, base, common, shard);
   if (a.checkOnly) return reportCheck(common, a, jobs, shard, wrong, jobsInPart);
@@ -281,13 +295,7 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     const std::string count = std::to_string(wrong.size()) + " of " + std::to_string(jobsInPart) + " jobs";
     if (a.failFast) {
       const auto& [index, message] = *wrong.begin();
-      common.report({{"command", "run"},
-                     {"jobs", jobs.size()},
-                     {"run", 1},
-                     {"failed", 1},
-                     {"interrupted", false},
-                     {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
-                     {"results", {failureOf(jobs, index, message)}}});
+      common.report(runReport(a, jobs, 1, 1, false, nlohmann::json::array({failureOf(jobs, index, message)})));
       throw UsageError(count + " have wrong options, found before any job ran (--fail-fast); first: " + message);
     }
     log::warning(count + " have wrong options and will fail when their turn comes; first: " + wrong.begin()->second);
@@ -299,20 +307,14 @@ void runJobs(CommonOptions& common, const RunArguments& a)
   // The report, also of a run stopped by a signal: the jobs done, and the
   // one that was stopped, so that a script can run the rest.
   const auto report = [&](bool interrupted) {
-    common.report({{"command", "run"},
-                   {"jobs", jobs.size()},
-                   {"run", results.size()},
-                   {"failed", failed},
-                   {"interrupted", interrupted},
-                   {"shard", a.shard.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.shard)},
-                   {"results", results}});
+    common.report(runReport(a, jobs, results.size(), size_t(failed), interrupted, results));
   };
   const auto jobsDone = [&] {
     return std::to_string(results.size()) + " of " + std::to_string(jobsInPart) + " jobs done";
   };
   for (size_t i = 0; i < jobs.size(); ++i) {
     if (!shard.holds(i + 1)) continue;
-    nlohmann::json result = {{"job", i + 1}};
+    nlohmann::json result = resultOf(jobs, i);
     std::string what = "job " + std::to_string(i + 1);
     try {
       interrupt::check(jobsDone());
@@ -321,8 +323,6 @@ void runJobs(CommonOptions& common, const RunArguments& a)
       throw;
     }
     try {
-      if (jobs[i].is_object() && jobs[i].contains("command") && jobs[i]["command"].is_string())
-        result["command"] = jobs[i]["command"];
       result["report"] = parseJob(jobs[i], base, common, false, what);
       result["ok"] = true;
     } catch (const Interrupted& e) {

@@ -39,9 +39,9 @@ std::string quotedList(const std::vector<std::string>& items)
 
 // "a whole number" for an option CLI11 converts to an integer, "a number"
 // for a floating one.
-std::string kindOfValue(const CLI::App* command, const std::string& name)
+std::string kindOfValue(const CLI::App& command, const std::string& name)
 {
-  const CLI::Option* option = command ? command->get_option_no_throw(name) : nullptr;
+  const CLI::Option* option = command.get_option_no_throw(name);
   const std::string type = option ? option->get_type_name() : std::string();
   if (type.starts_with("INT") || type.starts_with("UINT")) return "a whole number";
   if (type.starts_with("FLOAT")) return "a number";
@@ -50,8 +50,10 @@ std::string kindOfValue(const CLI::App* command, const std::string& name)
 
 }  // namespace
 
-std::string plainParseError(const CLI::App* command, const CLI::ParseError& e)
+std::string plainParseError(const CLI::App& app, const CLI::ParseError& e)
 {
+  const auto given = app.get_subcommands();
+  const CLI::App& command = given.empty() ? app : *given.front();
   const std::string message = e.what();
   if (auto rest = after(message, "Could not convert: ")) {  // "--res = 1e2"
     const size_t equals = rest->find(" = ");

@@ -10,8 +10,8 @@
 
 namespace lbmshape::cli {
 
-// `command`: the (sub)command being parsed, whose options give the types
-// of the values; may be null. Messages of other kinds are kept.
-std::string plainParseError(const CLI::App* command, const CLI::ParseError& e);
+// `app`: the application parsed; its subcommand given, if any, has the
+// options whose types the message names. Messages of other kinds are kept.
+std::string plainParseError(const CLI::App& app, const CLI::ParseError& e);
 
 }  // namespace lbmshape::cli

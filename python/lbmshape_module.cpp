@@ -67,9 +67,9 @@ Triangles integerTriangles(const py::object& object, const std::string& name)
   if (given.size() != 0 && kind != 'i' && kind != 'u')
     throw UsageError(name + " must hold integers (vertex indices), not " + py::str(given.dtype()).cast<std::string>());
   // As int64, an index of 2^63 or more would wrap to a negative one and be named so.
-  if (given.size() != 0 && kind == 'u' && given.attr("max")().cast<uint64_t>() > uint64_t(INT64_MAX))
-    throw InputError(name + " has index " + std::to_string(given.attr("max")().cast<uint64_t>()) +
-                     ", beyond any mesh's vertices");
+  if (given.size() != 0 && kind == 'u')
+    if (const auto largest = given.attr("max")().cast<uint64_t>(); largest > uint64_t(INT64_MAX))
+      throw InputError(name + " has index " + std::to_string(largest) + ", beyond any mesh's vertices");
   return Triangles::ensure(given);
 }
 

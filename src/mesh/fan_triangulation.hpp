@@ -2,9 +2,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "lbmshape/core/log.hpp"
 
 namespace lbmshape {
 
@@ -19,6 +22,15 @@ inline void appendFan(const std::vector<uint32_t>& corners, std::vector<glm::uve
     const uint32_t a = corners[0], b = corners[k], c = corners[k + 1];
     if (a != b && b != c && a != c) triangles.emplace_back(a, b, c);
   }
+}
+
+// The one warning of the face-list readers (OBJ, OFF, PLY) for the faces of
+// fewer than three corners they passed over.
+inline void warnOfShortFaces(const std::string& name, size_t shortFaces)
+{
+  if (shortFaces == 0) return;
+  log::warning(name + ": skipped " + std::to_string(shortFaces) + (shortFaces == 1 ? " face" : " faces") +
+               " with fewer than 3 corners");
 }
 
 }  // namespace lbmshape

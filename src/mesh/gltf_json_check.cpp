@@ -219,14 +219,12 @@ void checkBuffers(const std::vector<GltfJsonElement>& buffers, bool glb, const M
 }
 
 // tinygltf reads a "scene" that is no scene's index as absent, and lbmshape
-// showed scene 0 in its place.
+// showed scene 0 in its place. (Its type is checked with the top level's
+// other properties, gltf_json_element.cpp.)
 void checkDefaultScene(const GltfJsonScan& scan, const MeshSource& source)
 {
-  auto written = scan.top.written.find("scene");
-  if (written == scan.top.written.end()) return;
   const auto scene = number(scan.top, "scene");
-  if (!scene) source.refuse("its \"scene\" is " + written->second + ", not a whole number of 0 or more");
-  if (*scene >= scan.scenes)
+  if (scene && *scene >= scan.scenes)
     source.refuse("its default scene is scene " + std::to_string(*scene) + ", but it has " +
                   std::to_string(scan.scenes) + (scan.scenes == 1 ? " scene" : " scenes"));
 }

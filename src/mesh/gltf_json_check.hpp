@@ -31,8 +31,8 @@ struct GltfBufferEntry {
 // memory proportionate to the file, declares a buffer of 0 bytes or two
 // buffers on one file, gives a GLB more than one buffer of its own (or not
 // as buffer 0), has an image whose buffer view reaches past its buffer, a
-// default scene it does not have, a number beyond a double's range, or an
-// element property of the wrong type (gltf_json_element.hpp).
+// key twice in one object, a default scene it does not have, or an element
+// property of the wrong type (gltf_json_element.hpp).
 // Returns the buffers; tinygltf checks the rest.
 std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, const MeshSource& source);
 

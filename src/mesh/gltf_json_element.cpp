@@ -20,7 +20,8 @@ const std::map<std::string, ElementRules>& rulesByCollection()
 {
   static const std::map<std::string, ElementRules> rules = {
       {"",
-       {.objectArrays = {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
+       {.wholeNumbers = {"scene"},
+        .objectArrays = {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
                          "meshes", "nodes", "samplers", "scenes", "skins", "textures"},
         .stringArrays = {"extensionsUsed", "extensionsRequired"}}},
       {"nodes",
@@ -115,6 +116,17 @@ void checkGltfElement(const std::string& collection, const std::vector<uint64_t>
     return found == element.arrays.end() ? nullptr : &found->second;
   };
 
+  // Each given key of `keys` of this kind, or an array all of whose values pass `all`.
+  const auto requireKind = [&](const std::vector<std::string>& keys, JsonKind kind, const std::string& should) {
+    for (const std::string& key : keys)
+      if (element.kinds.count(key) && kindOf(key) != kind) refuse(key, should);
+  };
+  const auto requireArrayOf = [&](const std::vector<std::string>& keys, bool GltfJsonElement::Array::*all,
+                                  const std::string& should) {
+    for (const std::string& key : keys)
+      if (const auto* a = array(key); element.kinds.count(key) && (!a || !(a->*all))) refuse(key, should);
+  };
+
   for (const std::string& key : rules.wholeNumbers)
     if (element.kinds.count(key) && !element.wholeNumbers.count(key)) refuse(key, "a whole number of 0 or more");
   for (const auto& [key, length] : rules.numberArrays) {
@@ -123,27 +135,13 @@ void checkGltfElement(const std::string& collection, const std::vector<uint64_t>
     if (!a || !a->allNumbers || (length != 0 && a->count != length))
       refuse(key, "an array of " + (length == 0 ? std::string("numbers") : std::to_string(length) + " numbers"));
   }
-  for (const std::string& key : rules.wholeNumberArrays) {
-    if (!element.kinds.count(key)) continue;
-    const auto* a = array(key);
-    if (!a || !a->allWholeNumbers) refuse(key, "an array of whole numbers of 0 or more");
-  }
-  for (const std::string& key : rules.booleans)
-    if (element.kinds.count(key) && kindOf(key) != JsonKind::Boolean) refuse(key, "true or false");
-  for (const std::string& key : rules.strings)
-    if (element.kinds.count(key) && kindOf(key) != JsonKind::String) refuse(key, "a string");
-  for (const std::string& key : rules.objects)
-    if (element.kinds.count(key) && kindOf(key) != JsonKind::Object) refuse(key, "an object");
-  for (const std::string& key : rules.objectArrays) {
-    if (!element.kinds.count(key)) continue;
-    const auto* a = array(key);
-    if (!a || !a->allObjects) refuse(key, "an array of objects");
-  }
-  for (const std::string& key : rules.stringArrays) {
-    if (!element.kinds.count(key)) continue;
-    const auto* a = array(key);
-    if (!a || !a->allStrings) refuse(key, "an array of strings");
-  }
+  requireArrayOf(rules.wholeNumberArrays, &GltfJsonElement::Array::allWholeNumbers,
+                 "an array of whole numbers of 0 or more");
+  requireArrayOf(rules.objectArrays, &GltfJsonElement::Array::allObjects, "an array of objects");
+  requireArrayOf(rules.stringArrays, &GltfJsonElement::Array::allStrings, "an array of strings");
+  requireKind(rules.booleans, JsonKind::Boolean, "true or false");
+  requireKind(rules.strings, JsonKind::String, "a string");
+  requireKind(rules.objects, JsonKind::Object, "an object");
   if (rules.everyValueWhole)
     for (const auto& [key, kind] : element.kinds)
       if (!element.wholeNumbers.count(key))

@@ -295,9 +295,7 @@ TriangleMesh readObj(const MeshSource& source)
       if (mesh.colours.empty()) mesh.colours.assign(vertices, glm::vec3(1.0f));  // white where a vertex has none
       mesh.colours[vertex] = colour;
     }
-  if (shortFaces)
-    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + (shortFaces == 1 ? " face" : " faces") +
-                 " with fewer than 3 corners");
+  warnOfShortFaces(source.name, shortFaces);
   return mesh;
 }
 

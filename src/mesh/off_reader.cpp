@@ -228,9 +228,7 @@ TriangleMesh readOff(const MeshSource& source)
     if (counts.vertices > uint64_t(UINT32_MAX)) source.refuse("more vertices than lbmshape can index (2^32 - 1)");
     shortFaces = readAsciiBody(source, lines, counts, mesh);
   }
-  if (shortFaces)
-    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + (shortFaces == 1 ? " face" : " faces") +
-                 " with fewer than 3 corners");
+  warnOfShortFaces(source.name, shortFaces);
   return mesh;
 }
 

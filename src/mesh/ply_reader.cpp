@@ -394,8 +394,7 @@ TriangleMesh readPly(const MeshSource& source)
     shortFaces = readBody(source, header, layout, BinaryValues(body, true), mesh);
     break;
   }
-  if (shortFaces)
-    log::warning(source.name + ": skipped " + std::to_string(shortFaces) + " faces with fewer than 3 corners");
+  warnOfShortFaces(source.name, shortFaces);
   return mesh;
 }
 

@@ -7,6 +7,7 @@
 #include "lbmshape/core/number_text.hpp"
 #include "lbmshape/mesh/mesh_geometry.hpp"
 #include "lbmshape/mesh/single_precision.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 namespace {
@@ -59,16 +60,15 @@ void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path
   for (const auto& t : mesh.triangles)
     if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size())
       throw OutputError(prefix + " has a triangle that refers to a vertex it does not have");
-  for (const auto& p : mesh.positions)
+  for (const auto& p : mesh.positions) {
     if (!isFinite(p)) throw OutputError(prefix + " has a coordinate that is not a finite number");
-  // Even where the format keeps doubles (OBJ): lbmshape's readers take
-  // nothing beyond single precision (text_scan.hpp), so such a file (noise
-  // of --sigma 1e200) could not be read back.
-  const double largest = double(std::numeric_limits<float>::max());
-  for (const auto& p : mesh.positions)
-    if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(largest))))
-      throw OutputError(prefix + " has a coordinate beyond " + threeSignificantDigits(largest) +
+    // Even where the format keeps doubles (OBJ): lbmshape's readers take
+    // nothing beyond their largest coordinate, so such a file (noise of
+    // --sigma 1e200) could not be read back.
+    if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(text::largestCoordinate))))
+      throw OutputError(prefix + " has a coordinate beyond " + threeSignificantDigits(text::largestCoordinate) +
                         ", single precision's largest, which lbmshape could not read back");
+  }
   if (precision != CoordinatePrecision::Double) requireSinglePrecisionHolds(mesh, path, prefix, precision);
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +

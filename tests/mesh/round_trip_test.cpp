@@ -83,6 +83,19 @@ TEST(RoundTrip, ObjKeepsEveryBitOfADoubleFarFromTheOrigin)
   for (size_t i = 0; i < far.positions.size(); ++i) EXPECT_EQ(read.positions[i], far.positions[i]) << "vertex " << i;
 }
 
+// Writing `mesh` to `path` is an OutputError whose message holds `phrase`,
+// and leaves no file.
+void expectRefusedSaying(const TriangleMesh& mesh, const std::filesystem::path& path, const std::string& phrase)
+{
+  try {
+    writeMesh(mesh, path);
+    ADD_FAILURE() << path << " was written";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path)) << path;
+}
+
 // A georeferenced scan: a mesh 1e6 of its sizes from the origin, where a
 // float is 0.0625 wide. glTF keeps it (positions about its centre, the
 // centre in its node's translation, in double), compressed or not and in
@@ -121,16 +134,8 @@ TEST(RoundTrip, GltfKeepsAMeshFarFromTheOriginAndTheOthersRefuseIt)
         0.5)
         << node;
   }
-  for (const char* extension : {".ply", ".stl", ".off"}) {
-    const auto path = folder / (std::string("far") + extension);
-    try {
-      writeMesh(far, path);
-      ADD_FAILURE() << extension << " was written";
-    } catch (const OutputError& e) {
-      EXPECT_NE(std::string(e.what()).find("write .obj or .glb"), std::string::npos) << e.what();
-    }
-    EXPECT_FALSE(std::filesystem::exists(path)) << extension;
-  }
+  for (const char* extension : {".ply", ".stl", ".off"})
+    expectRefusedSaying(far, folder / (std::string("far") + extension), "write .obj or .glb");
   // Near the origin for its size: the positions as they are, no translation.
   writeMesh(testing::icosphere(2, 1.7, {3.25, -0.5, 12.0}), folder / "near.glb");
   const nlohmann::json near = testing::glbJson(folder / "near.glb");  // held: the loop's range is a part of it
@@ -144,16 +149,8 @@ TEST(RoundTrip, AMeshTooSmallForSinglePrecisionIsOnlyOfferedObj)
 {
   const TriangleMesh tiny = testing::icosphere(2, 1e-44, {0.0, 0.0, 0.0});
   testing::ScratchFolder folder;
-  for (const char* extension : {".glb", ".ply"}) {
-    const auto path = folder / (std::string("tiny") + extension);
-    try {
-      writeMesh(tiny, path);
-      ADD_FAILURE() << extension << " was written";
-    } catch (const OutputError& e) {
-      EXPECT_NE(std::string(e.what()).find("write .obj, which keeps doubles"), std::string::npos) << e.what();
-    }
-    EXPECT_FALSE(std::filesystem::exists(path)) << extension;
-  }
+  for (const char* extension : {".glb", ".ply"})
+    expectRefusedSaying(tiny, folder / (std::string("tiny") + extension), "write .obj, which keeps doubles");
   writeMesh(tiny, folder / "tiny.obj");
   EXPECT_EQ(readMesh(folder / "tiny.obj").triangleCount(), tiny.triangleCount());
 }

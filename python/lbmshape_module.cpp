@@ -28,6 +28,8 @@
 #include <optional>
 #include <thread>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
 #include <utility>
 
@@ -204,6 +206,46 @@ auto stoppable(Work&& work) -> decltype(work())
   return std::move(*result);
 }
 
+// A thread's default device, closed when the thread ends, unless the
+// process is ending. A thread that ends as the process does (a daemon
+// thread whose morph was just stopped at exit, or one Python ends at
+// finalization) closed its device while exit() ran the Vulkan layers'
+// static destructors: the instance's dlclose unmapped the validation layer
+// under them (a segfault, one exit in three under load). From
+// keepFromNowOn() on, a thread's device is left to the process's end, and
+// it waits for the closings already begun.
+struct ThreadsDevice {
+  std::shared_ptr<ComputeDevice> held;
+
+  ~ThreadsDevice()
+  {
+    std::unique_lock lock(mutex);
+    if (processEnding) {
+      new std::shared_ptr<ComputeDevice>(std::move(held));  // never closed: the process ends
+      return;
+    }
+    ++closing;
+    lock.unlock();
+    held.reset();
+    lock.lock();
+    --closing;
+    closed.notify_all();
+  }
+
+  static void keepFromNowOn()
+  {
+    std::unique_lock lock(mutex);
+    processEnding = true;
+    closed.wait(lock, [] { return closing == 0; });
+  }
+
+private:
+  static inline std::mutex mutex;
+  static inline std::condition_variable closed;
+  static inline bool processEnding = false;
+  static inline int closing = 0;
+};
+
 // At exit Python ends its daemon threads where they next take the GIL
 // (pthread_exit, on Python 3.11), an unwinding no C++ frame of a call under
 // way survives: a morph left running on a daemon thread (an iter_morph loop
@@ -213,11 +255,14 @@ auto stoppable(Work&& work) -> decltype(work())
 // them to end (at most a few seconds), without the GIL.
 void stopCallsAtExit()
 {
-  if (CallUnderWay::count() == 0) return;
-  interrupt::requestStop();
+  if (CallUnderWay::count() > 0) {
+    interrupt::requestStop();
+    py::gil_scoped_release released;
+    for (int waited = 0; waited < 500 && CallUnderWay::count() > 0; ++waited)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
   py::gil_scoped_release released;
-  for (int waited = 0; waited < 500 && CallUnderWay::count() > 0; ++waited)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ThreadsDevice::keepFromNowOn();
 }
 
 // The device the functions use unless given one: the calling thread's
@@ -227,9 +272,9 @@ void stopCallsAtExit()
 // wait for the morph that waits for the loop.
 std::shared_ptr<ComputeDevice>& defaultDevice()
 {
-  thread_local std::shared_ptr<ComputeDevice> device;
-  if (!device) device = std::make_shared<ComputeDevice>("", false);
-  return device;
+  thread_local ThreadsDevice device;
+  if (!device.held) device.held = std::make_shared<ComputeDevice>("", false);
+  return device.held;
 }
 
 // The value a keyword's `name` chooses among `choices`; anything else is

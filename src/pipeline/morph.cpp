@@ -112,15 +112,19 @@ void refuseShapesSmallerThanAVoxel(const TriangleMesh& source, const TriangleMes
   }
 }
 
-void warnOfRepeatedFrames(const std::vector<int>& frameSteps, int totalSteps)
+// A morph that arrives takes a step a frame at least (MorphSchedule): its
+// frames repeat only where it takes none. Where it had to take shorter
+// steps for that, -v says so.
+void sayHowTheFramesFallOnTheSteps(const MorphSchedule& schedule, int frames, double initialError, double tolerance)
 {
-  size_t repeats = 0;
-  for (size_t k = 1; k < frameSteps.size(); ++k) repeats += frameSteps[k] == frameSteps[k - 1];
-  if (repeats == 0) return;
-  log::warning(std::to_string(repeats) + " of the " + std::to_string(frameSteps.size()) +
-               " frames repeat the frame before: the morph arrives in " + std::to_string(totalSteps) +
-               " lattice steps, fewer than the frames; fewer " + nameOf(Parameter::Frames) + ", or a finer " +
-               nameOf(Parameter::Resolution) + " (more steps), gives each frame a shape of its own");
+  if (schedule.totalSteps() == 0 && frames > 1)
+    log::warning("the source already lies within " + nameOf(Parameter::Tolerance) + " " + numberText(tolerance) +
+                 " voxels of the target (" + threeSignificantDigits(initialError) +
+                 "): the morph takes no step, and all " + std::to_string(frames) + " frames are the same shape");
+  if (schedule.scale() < 1.0)
+    log::verbose("more frames than the morph's steps: gamma and Cs scaled by " +
+                 threeSignificantDigits(schedule.scale()) + " so that it takes " +
+                 std::to_string(schedule.totalSteps()) + " steps on the same way, one a frame at least");
 }
 
 Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
@@ -274,10 +278,11 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   const double initialError = lattice->sourceErrorNearTarget();
   const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
   const std::vector<int>& frameSteps = schedule.frameSteps();
-  if (!stepsGiven(o)) warnOfRepeatedFrames(frameSteps, schedule.totalSteps());
-  if (!stepsGiven(o))
+  if (!stepsGiven(o)) {
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
+    sayHowTheFramesFallOnTheSteps(schedule, o.frames, initialError, o.tolerance);
+  }
   TriangleMesh targetLevel = clock.time("extract", [&] { return lattice->targetLevel(); });
   // One colour scale for every frame, so that colours compare across them.
   // (A plain double, not an optional: GCC 12 sees an optional<double> here as
@@ -499,6 +504,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         {"closing_from_step", schedule.annealed() ? nlohmann::json(schedule.annealFrom()) : nlohmann::json(nullptr)},
         {"final_gamma", ofTheLastStep(schedule.gammaAt(schedule.totalSteps() - 1))},
         {"final_cs", ofTheLastStep(schedule.csAt(schedule.totalSteps() - 1))},
+        {"scale", schedule.scale()},
         {"initial_error_voxels", initialError}}},
       {"converged", converged},
       {"converged_at_step", convergedAt ? nlohmann::json(*convergedAt) : nlohmann::json(nullptr)},

@@ -9,9 +9,9 @@
 namespace lbmshape {
 
 MorphSchedule::MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom,
-                             int frames)
+                             int frames, double scale)
     : gamma_(gamma), cs_(cs), gammaEnd_(gammaEnd), csEnd_(csEnd), totalSteps_(totalSteps), annealFrom_(annealFrom),
-      frameSteps_(size_t(frames))
+      scale_(scale), frameSteps_(size_t(frames))
 {
   const int intervals = frames - 1;
   for (int k = 0; k < frames; ++k) frameSteps_[size_t(k)] = int(std::lround(double(totalSteps) * k / intervals));
@@ -35,8 +35,22 @@ int MorphSchedule::stepsToArrive(double initialError, double cs, double toleranc
 MorphSchedule MorphSchedule::arriving(const MorphOptions& o, double initialError)
 {
   const int total = stepsToArrive(initialError, o.cs, o.tolerance);
-  return MorphSchedule(o.gamma, o.cs, std::min(o.gamma, arrivalGamma), std::max(o.cs, arrivalCs), total, total / 2,
-                       o.frames);
+  const double scale = finerStepsScale(initialError, o, total);
+  const int steps = scale < 1.0 ? stepsToArrive(initialError, o.cs * scale, o.tolerance) : total;
+  return MorphSchedule(o.gamma * scale, o.cs * scale, std::min(o.gamma, arrivalGamma) * scale,
+                       std::max(o.cs, arrivalCs) * scale, steps, steps / 2, o.frames, scale);
+}
+
+double MorphSchedule::finerStepsScale(double initialError, const MorphOptions& o, int steps)
+{
+  const int needed = o.frames - 1;
+  if (steps == 0 || steps >= needed) return 1.0;
+  // ln(1/rho(c)) = 2 artanh(c/2): the Cs whose steps to arrive are `needed`
+  // (a hair faster, so that rounding does not make them one more).
+  const double shrinkPerStep = std::log(initialError / o.tolerance) / needed * (1.0 + 1e-9);
+  double cs = 2.0 * std::tanh(shrinkPerStep / 2.0);
+  while (stepsToArrive(initialError, cs, o.tolerance) < needed) cs *= 0.999;
+  return cs / o.cs;
 }
 
 double MorphSchedule::gammaAt(int step) const

@@ -19,7 +19,12 @@
 //     steps = ceil(ln(E0 / tolerance) / ln(1/rho))
 // from the largest distance E0 between the two fields near the target. The
 // frames are spread evenly in time over those steps, so --frames says how
-// many pictures, never where the morph ends.
+// many pictures, never where the morph ends. Where that is fewer steps than
+// the frames' intervals (a coarse grid, shapes close together, a long clip),
+// gamma and Cs of every step are scaled down by one factor: the same
+// dX/dt = gamma Laplacian(X) + Cs (X_target - X), solved in steps that
+// much shorter, so each frame has a shape of its own instead of repeating
+// the one before (the animation played in jerks).
 //
 // Given steps (--steps or --steps-per-frame) keep the paper's scheme:
 // constant gamma, ending where the steps end.
@@ -53,6 +58,9 @@ public:
   // The first step of the closing (totalSteps() when there is none).
   int annealFrom() const { return annealFrom_; }
   int totalSteps() const { return totalSteps_; }
+  // gamma and Cs of every step as a fraction of the options': below 1
+  // where the morph would have arrived in fewer steps than the frames.
+  double scale() const { return scale_; }
   // Frame k shows the field after frameSteps()[k] steps; the last is totalSteps().
   const std::vector<int>& frameSteps() const { return frameSteps_; }
   // gamma and Cs of the step that starts after `step` steps.
@@ -66,13 +74,19 @@ public:
   double totalDiffusion() const;
 
 private:
-  MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom, int frames);
+  // Where the morph would arrive in fewer steps than the frames' intervals:
+  // the factor on gamma and Cs (below 1) that makes it take one step a
+  // frame at least, else 1.
+  static double finerStepsScale(double initialError, const MorphOptions& options, int steps);
+  MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom, int frames,
+                double scale = 1.0);
   double closingLeft(int step) const;
 
   double gamma_, cs_;
   double gammaEnd_, csEnd_;  // at the last step
   int totalSteps_;
   int annealFrom_;  // the closing's first step
+  double scale_;
   std::vector<int> frameSteps_;
 };
 

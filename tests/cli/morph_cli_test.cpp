@@ -451,9 +451,10 @@ TEST_F(MorphCli, AnInputThatIsOneOfTheFoldersFramesIsRefused)
 }
 
 // What the frames will not show by themselves is said on stderr: where
-// --align put the target, frames that repeat the one before (more frames
-// than the morph has steps), and a last frame whose parts differ from the
-// target's (a part too small for the grid).
+// --align put the target, frames that repeat the one before (a shape into
+// itself: more frames than steps no longer repeat, morph_arrival_test.cpp),
+// and a last frame whose parts differ from the target's (a part too small
+// for the grid).
 TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
 {
   const fs::path bigger = folder / "bigger.obj";
@@ -463,8 +464,13 @@ TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
   ASSERT_EQ(fit.exitCode, 0) << fit.err;
   EXPECT_NE(fit.err.find("bigger.obj placed on the source (--align fit): scaled by 0.28"), std::string::npos)
       << fit.err;
-  EXPECT_NE(fit.err.find(" of the 60 frames repeat the frame before"), std::string::npos) << fit.err;
+  EXPECT_EQ(fit.err.find("repeat"), std::string::npos) << "more frames than steps take shorter steps: " << fit.err;
   EXPECT_EQ(fit.err.find("where the target has"), std::string::npos) << fit.err;
+  testing::CliResult itself =
+      testing::runLbmshape({"morph", sphere, sphere, (folder / "itself").string(), "--res", "20", "--frames", "4"});
+  ASSERT_EQ(itself.exitCode, 0) << itself.err;
+  EXPECT_NE(itself.err.find("the morph takes no step, and all 4 frames are the same shape"), std::string::npos)
+      << itself.err;
 
   // A target of two parts, one far smaller than a voxel: the last frame
   // has only the other.

@@ -1,7 +1,9 @@
 // A morph that arrives (no steps given): it ends on the target's own zero
 // level on the grid, thin parts included; where it ends does not depend on
 // --frames; its report describes every frame. And its schedule, on its own.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -40,15 +42,47 @@ TEST(MorphSchedule, FramesSampleTheWholeMorphWhateverTheirNumber)
 {
   MorphOptions few, many;
   few.frames = 5;
-  many.frames = 200;
-  const MorphSchedule a = MorphSchedule::arriving(few, 30.0), b = MorphSchedule::arriving(many, 30.0);
+  const MorphSchedule a = MorphSchedule::arriving(few, 30.0);
+  many.frames = a.totalSteps() + 1;  // the most that take no shorter steps
+  const MorphSchedule b = MorphSchedule::arriving(many, 30.0);
   ASSERT_EQ(a.totalSteps(), b.totalSteps());
+  EXPECT_EQ(b.scale(), 1.0);
   EXPECT_EQ(a.frameSteps().front(), 0);
   EXPECT_EQ(a.frameSteps().back(), a.totalSteps());
   EXPECT_EQ(b.frameSteps().back(), b.totalSteps());
   for (int s = 0; s < a.totalSteps(); ++s) EXPECT_EQ(a.gammaAt(s), b.gammaAt(s)) << "step " << s;
   // Evenly in time: frame k of 5 at a quarter of the way, and so on.
   for (int k = 0; k < 5; ++k) EXPECT_NEAR(a.frameSteps()[size_t(k)], a.totalSteps() * k / 4.0, 0.5) << k;
+}
+
+// More frames than the morph needs steps: gamma and Cs of every step
+// scaled by one factor, so that it takes a step a frame at least along the
+// same way (the same ratio of gamma to Cs at the same point of it, the same
+// diffusion in all) and still arrives.
+TEST(MorphSchedule, MoreFramesThanStepsTakeShorterStepsOnTheSameWay)
+{
+  MorphOptions few, many;
+  few.frames = 5;
+  many.frames = 200;
+  const MorphSchedule coarse = MorphSchedule::arriving(few, 30.0), fine = MorphSchedule::arriving(many, 30.0);
+  ASSERT_LT(coarse.totalSteps(), many.frames - 1) << "the case needs more frames than steps";
+  EXPECT_EQ(coarse.scale(), 1.0);
+  EXPECT_LT(fine.scale(), 1.0);
+  EXPECT_GE(fine.totalSteps(), many.frames - 1);
+  EXPECT_EQ(fine.totalSteps(), many.frames - 1) << "no more steps than the frames need";
+  for (size_t k = 1; k < fine.frameSteps().size(); ++k)
+    EXPECT_GT(fine.frameSteps()[k], fine.frameSteps()[k - 1]) << "frame " << k << " repeats the one before";
+  EXPECT_EQ(fine.frameSteps().back(), fine.totalSteps());
+  for (const double along : {0.0, 0.25, 1.0}) {  // the travel, and the closing's end
+    const int c = std::min(int(along * coarse.totalSteps()), coarse.totalSteps() - 1);
+    const int f = std::min(int(along * fine.totalSteps()), fine.totalSteps() - 1);
+    EXPECT_NEAR(fine.gammaAt(f) / fine.csAt(f), coarse.gammaAt(c) / coarse.csAt(c), 0.02 * few.gamma / few.cs) << along;
+    EXPECT_NEAR(fine.gammaAt(f) / coarse.gammaAt(c), fine.scale(), 0.1 * fine.scale()) << along;
+  }
+  EXPECT_NEAR(fine.totalDiffusion(), coarse.totalDiffusion(), few.gamma) << "within one step's diffusion";
+  double left = 30.0;  // the source term's own closing of the distance
+  for (int n = 0; n < fine.totalSteps(); ++n) left *= (1.0 - fine.csAt(n) / 2.0) / (1.0 + fine.csAt(n) / 2.0);
+  EXPECT_LT(left, many.tolerance);
 }
 
 TEST(MorphSchedule, GammaAndCsHoldThenCloseOnTheArrivalsValues)
@@ -175,6 +209,45 @@ TEST_F(MorphArrival, FramesChangeHowManyPicturesNeverWhereItEnds)
     EXPECT_EQ(few["frame_steps"][k], many["frame_steps"][4 * k]) << k;
     EXPECT_EQ(bytes(folder / "few" / a), bytes(folder / "many" / b)) << k;
   }
+}
+
+// A morph that arrives in fewer steps than a clip has frames takes shorter
+// ones: every frame a shape of its own (they repeated: the clip played in
+// jerks), on the way the frames of a short clip show, to the same end.
+TEST_F(MorphArrival, MoreFramesThanStepsGiveEachFrameItsOwnShapeOnTheSameWay)
+{
+  writeMesh(testing::icosphere(3, 1.0), folder / "sphere.obj");
+  writeMesh(testing::torusMesh(1.0, 0.35, 64, 32), folder / "torus.obj");
+  const nlohmann::json coarse = morph("torus.obj", "coarse", 5);
+  const int between = coarse["steps"].get<int>() / 4 + 1;  // fine frames per coarse one
+  const int frames = 4 * between + 1;
+  const nlohmann::json fine = morph("torus.obj", "fine", frames);
+  ASSERT_GT(frames - 1, coarse["steps"].get<int>()) << "the case needs more frames than steps";
+  EXPECT_LT(fine["schedule"]["scale"].get<double>(), 1.0);
+  ASSERT_EQ(fine["steps"], frames - 1) << "a step a frame: frame k is step k";
+  const auto frameFile = [&](const char* run, int k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.obj", k);
+    return folder / run / name;
+  };
+  for (int k = 1; k < frames; ++k) {
+    EXPECT_GT(fine["frame_steps"][size_t(k)].get<int>(), fine["frame_steps"][size_t(k - 1)].get<int>()) << k;
+    EXPECT_NE(bytes(frameFile("fine", k)), bytes(frameFile("fine", k - 1))) << "frame " << k << " repeats";
+  }
+  EXPECT_TRUE(fine["converged"]);
+  EXPECT_LT(fine["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.05);
+  EXPECT_LT(fine["final"]["hausdorff_to_target_level_voxels"].get<double>(), 1.0);
+  // Halfway, the two runs' frames at the same time (a fine step lasts
+  // `scale` of a coarse one) lie on one another; a quarter of the way
+  // further on, the shape is elsewhere.
+  const double voxel = coarse["grid"]["voxel"];
+  const int halfway = coarse["frame_steps"][2];
+  const int sameTime = int(std::lround(halfway / fine["schedule"]["scale"].get<double>()));
+  const TriangleMesh half = readMesh(frameFile("coarse", 2));
+  const double same = compareSurfaces(half, readMesh(frameFile("fine", sameTime))).mean / voxel;
+  const double later = compareSurfaces(half, readMesh(frameFile("fine", sameTime + between))).mean / voxel;
+  EXPECT_LT(same, 0.1);
+  EXPECT_GT(later, 4 * same);
 }
 
 // Given steps that arrive before the last frame: the lattice stops there,

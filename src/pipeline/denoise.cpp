@@ -618,8 +618,9 @@ void warnIfFewGivenSteps(const DenoiseOptions& o)
 // prints them (a file's path is added by its caller), and a warning where
 // the result's parts differ from the input's.
 void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const MeshTopology& inputTopology,
-                       const TriangleMesh& result)
+                       const std::string& name, const TriangleMesh& result)
 {
+  sayWhereTheInputIsOpen(inputTopology, name, "the result closes it");
   const MeshTopology outputTopology = analyzeTopology(result);
   warnIfThePartsChanged(inputTopology, "the input", outputTopology, "the result",
                         report["grid"]["voxel"].get<double>());
@@ -649,7 +650,7 @@ DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, con
   const MeshTopology inputTopology = orientTheInput(checked, name);
   DenoiseResult smoothed = smoothMesh(checked, inputTopology, name, o, device, clock);
   device.requireCleanValidation();
-  describeTheMeshes(smoothed.report, checked, inputTopology, smoothed.mesh);
+  describeTheMeshes(smoothed.report, checked, inputTopology, name, smoothed.mesh);
   smoothed.report["ms"] = clock.toJson();
   smoothed.report["device_ms"] = clock.deviceToJson();
   smoothed.report["warnings"] = warnings.warnings();
@@ -697,7 +698,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   clock.record("write", committing.ms());
 
   nlohmann::json& report = smoothed.report;
-  describeTheMeshes(report, mesh, inputTopology, result);
+  describeTheMeshes(report, mesh, inputTopology, input.string(), result);
   report["input"]["path"] = input.string();
   report["output"]["path"] = output.string();
   report["ms"] = clock.toJson();

@@ -69,4 +69,12 @@ MeshTopology orientTheInput(TriangleMesh& mesh, const std::string& name)
   return turned.changed() ? analyzeTopology(mesh) : topology;
 }
 
+void sayWhereTheInputIsOpen(const MeshTopology& topology, const std::string& name, const std::string& closing)
+{
+  if (topology.boundaryEdges == 0) return;
+  log::info(name + " is open (" + std::to_string(topology.boundaryEdges) + " edge" +
+            (topology.boundaryEdges == 1 ? "" : "s") + " in one triangle only: holes, or a sheet's rim); " + closing +
+            ", its inside being where the winding number exceeds 1/2");
+}
+
 }  // namespace lbmshape

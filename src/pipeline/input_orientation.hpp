@@ -17,4 +17,12 @@ namespace lbmshape {
 // what was turned), and returns its topology as it then is.
 MeshTopology orientTheInput(TriangleMesh& mesh, const std::string& name);
 
+// Says, where the input named `name` is open (edges in one triangle only,
+// after the joining), that the output is closed over its holes or rim
+// (`closing`: "the result closes it", "the frames close it"): the
+// winding number's sign gives it an inside all the same, and the output's
+// "closed" would otherwise hide that the shape was completed. Called once
+// the input is known to enclose something (a refusal stays one line).
+void sayWhereTheInputIsOpen(const MeshTopology& topology, const std::string& name, const std::string& closing);
+
 }  // namespace lbmshape

@@ -236,7 +236,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                         const fs::path& targetPath, const MorphOptions& o, const ComputeDevice& device,
                         StageClock& clock, const FrameDestination& to)
 {
-  orientTheInput(source, sourcePath.string());
+  const MeshTopology sourceTopology = orientTheInput(source, sourcePath.string());
   // Moving and scaling the target below keeps its parts and genus.
   const MeshTopology targetTopology = orientTheInput(target, targetPath.string());
   const Placement placement = placeTarget(bounds(source), bounds(target), o.align);
@@ -275,6 +275,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
                      nameOf(Parameter::Resolution) +
                      (audienceCanSet(Parameter::Voxel) ? " or " + nameOf(Parameter::Voxel) : std::string()));
   reportPlacement(placement, o.align, targetPath);  // once both are known to be shapes
+  sayWhereTheInputIsOpen(sourceTopology, sourcePath.string(), "the frames close it");
+  sayWhereTheInputIsOpen(targetTopology, targetPath.string(), "the frames close it");
   const double initialError = lattice->sourceErrorNearTarget();
   const MorphSchedule schedule = stepsGiven(o) ? longest : MorphSchedule::arriving(o, initialError);
   const std::vector<int>& frameSteps = schedule.frameSteps();

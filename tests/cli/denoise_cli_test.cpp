@@ -508,6 +508,46 @@ TEST(DenoiseCli, WarnsWhenThinPartsVanishOnACoarseGrid)
   EXPECT_NE(r.err.find(percent), std::string::npos) << percent << " in " << r.err;
 }
 
+// An open input (a sphere with its cap cut off) is closed by the result:
+// said, with the number of open edges --json gives, where a closed one says
+// nothing; an unwelded closed mesh (every triangle its own corners) is not
+// open once joined.
+TEST(DenoiseCli, SaysWhenTheResultClosesAnOpenInput)
+{
+  testing::ScratchFolder folder;
+  const TriangleMesh sphere = testing::icosphere(3);
+  TriangleMesh cut = sphere, soup;
+  cut.triangles.clear();
+  for (const auto& t : sphere.triangles)
+    if (sphere.positions[t[0]].z + sphere.positions[t[1]].z + sphere.positions[t[2]].z < 1.8)
+      cut.triangles.push_back(t);
+  for (const auto& t : sphere.triangles) {
+    const uint32_t first = uint32_t(soup.positions.size());
+    for (int k = 0; k < 3; ++k) soup.positions.push_back(sphere.positions[t[k]]);
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  writeMesh(sphere, folder / "closed.obj");
+  writeMesh(cut, folder / "cut.obj");
+  writeMesh(soup, folder / "soup.obj");
+  const auto run = [&](const char* mesh) {
+    return testing::runLbmshape(
+        {"denoise", (folder / mesh).string(), (folder / "out.glb").string(), "--res", "32", "--json"});
+  };
+  const testing::CliResult open = run("cut.obj");
+  ASSERT_EQ(open.exitCode, 0) << open.err;
+  const size_t openEdges = nlohmann::json::parse(open.out)["input"]["boundary_edges"];
+  ASSERT_GT(openEdges, 0u);
+  EXPECT_NE(open.err.find("cut.obj is open (" + std::to_string(openEdges) + " edges in one triangle only"),
+            std::string::npos)
+      << open.err;
+  EXPECT_NE(open.err.find("the result closes it"), std::string::npos) << open.err;
+  for (const char* closed : {"closed.obj", "soup.obj"}) {
+    const testing::CliResult r = run(closed);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("is open"), std::string::npos) << closed << ": " << r.err;
+  }
+}
+
 TEST(DenoiseCli, TheOutputIsNotTheInputUnlessForced)
 {
   testing::ScratchFolder folder;

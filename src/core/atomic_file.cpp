@@ -45,6 +45,20 @@ int syncToDisk(const std::filesystem::path& path, int flags)
   return error;
 }
 
+// The file `path` names once its symbolic links are followed (a link that
+// points nowhere names the file it would point to; a relative link is read
+// from its own folder). A loop of links is left to the writing to report.
+std::filesystem::path followedLinks(std::filesystem::path path)
+{
+  std::error_code ec;
+  for (int hop = 0; hop < 40 && std::filesystem::is_symlink(path, ec); ++hop) {
+    const std::filesystem::path next = std::filesystem::read_symlink(path, ec);
+    if (ec) break;
+    path = next.is_absolute() ? next : path.parent_path() / next;
+  }
+  return path;
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target))
@@ -53,7 +67,9 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
     throw OutputError(failure(target_, "the path names a folder, not a file"));
   std::error_code ec;
   if (std::filesystem::is_directory(target_, ec)) throw OutputError(failure(target_, "it is a folder"));
-  const std::filesystem::path folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
+  destination_ = followedLinks(target_);
+  const std::filesystem::path folder =
+      destination_.has_parent_path() ? destination_.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder, ec))
     throw OutputError(failure(target_, std::filesystem::exists(folder, ec)
                                            ? folder.string() + " is not a folder"
@@ -63,7 +79,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   // may work at once: the process id and a counter keep their names apart,
   // and O_EXCL makes sure no one else's file is ever taken over.
   static std::atomic<unsigned> counter{0};
-  const std::string stem = target_.stem().string(), extension = target_.extension().string();
+  const std::string stem = destination_.stem().string(), extension = destination_.extension().string();
   for (int attempt = 0; attempt < 100; ++attempt) {
     std::filesystem::path candidate =
         folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
@@ -106,14 +122,15 @@ void AtomicFile::commit()
   if (committed_) return;
   if (int error = syncToDisk(temporary_, O_RDONLY)) throw OutputError(failure(target_, std::strerror(error)));
   std::error_code ec;
-  std::filesystem::rename(temporary_, target_, ec);
+  std::filesystem::rename(temporary_, destination_, ec);
   if (ec) throw OutputError(failure(target_, ec.message()));
   committed_ = true;
   temporary_files::forget(ticket_);
   // The rename itself reaches the disk with the folder's own metadata; if
   // that cannot be forced the file is still complete, only perhaps not yet
   // durable, so this is not an error.
-  syncToDisk(target_.has_parent_path() ? target_.parent_path() : std::filesystem::path("."), O_RDONLY | O_DIRECTORY);
+  syncToDisk(destination_.has_parent_path() ? destination_.parent_path() : std::filesystem::path("."),
+             O_RDONLY | O_DIRECTORY);
 }
 
 }  // namespace lbmshape

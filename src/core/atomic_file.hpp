@@ -4,7 +4,11 @@
 // write never leaves a truncated file under the target's name, and readers of
 // the target see either the old content or the new. A second Ctrl-C, which
 // ends the process without unwinding, removes the temporary file too
-// (temporary_files.hpp).
+// (temporary_files.hpp). A target that is a symbolic link is written
+// through: the file it points to gets the content (the temporary file
+// beside that one) and the link stays, as a shell's `>` does; replacing the
+// link with a file cut the tie a render farm's or asset store's link had
+// made.
 #pragma once
 
 #include <filesystem>
@@ -30,7 +34,8 @@ public:
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   const std::filesystem::path& target() const { return target_; }
-  // Hidden, in the target's folder, and ending with the target's extension,
+  // Hidden, in the folder of the file the target names (its links
+  // followed), and ending with that file's extension,
   // so that writers which choose the format by file name write the right one.
   const std::filesystem::path& temporaryPath() const { return temporary_; }
   // The temporary file opened for writing from its start, never made again:
@@ -44,7 +49,8 @@ public:
   void commit();
 
 private:
-  std::filesystem::path target_;
+  std::filesystem::path target_;       // as given, for messages
+  std::filesystem::path destination_;  // what the rename replaces: the target, its links followed
   std::filesystem::path temporary_;
   bool committed_ = false;
   int ticket_ = -1;  // in temporary_files, until committed or removed

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <memory>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -52,6 +53,28 @@ TEST(AtomicFile, CommitMovesTheContentIntoPlace)
   }
   EXPECT_EQ(contents(folder / "out.txt"), "new");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
+// A target that is a symbolic link (a render farm's, an asset store's) is
+// written through: the file it points to changes and the link stays a
+// link; one that points nowhere yet makes the file it points to.
+TEST(AtomicFile, ALinkIsWrittenThroughAndStaysALink)
+{
+  testing::ScratchFolder folder;
+  std::filesystem::create_directory(folder / "store");
+  meshio::writeText(folder / "store" / "real.glb", "old");
+  std::filesystem::create_symlink("store/real.glb", folder / "link.glb");  // relative, read from its folder
+  std::filesystem::create_symlink("store/later.glb", folder / "dangling.glb");
+  for (const auto& [link, file] : {std::pair{"link.glb", "real.glb"}, std::pair{"dangling.glb", "later.glb"}}) {
+    AtomicFile written(folder / link);
+    EXPECT_EQ(written.target(), folder / link) << "messages name the path as given";
+    EXPECT_EQ(written.temporaryPath().parent_path(), folder / "store") << "beside the file, for an atomic rename";
+    meshio::writeText(written.temporaryPath(), std::string("new ") + file);
+    written.commit();
+    EXPECT_TRUE(std::filesystem::is_symlink(folder / link)) << link;
+    EXPECT_EQ(contents(folder / "store" / file), std::string("new ") + file) << link;
+    EXPECT_EQ(contents(folder / link), std::string("new ") + file) << link;
+  }
 }
 
 TEST(AtomicFile, WithoutCommitNothingChanges)

@@ -441,8 +441,15 @@ PYBIND11_MODULE(lbmshape, m)
   py::class_<ComputeDevice, std::shared_ptr<ComputeDevice>>(
       m, "Device", "A Vulkan device, or the CPU reference solver ('reference')")
       .def(py::init([](const std::string& name, bool validation, const std::string& sdf, const std::string& extract) {
-             return std::make_shared<ComputeDevice>(name, validation, runsOnNamed("sdf", sdf),
-                                                    runsOnNamed("extract", extract));
+             auto device = std::make_shared<ComputeDevice>(name, validation, runsOnNamed("sdf", sdf),
+                                                           runsOnNamed("extract", extract));
+             // A name that matches no device, or no driver, is refused here,
+             // where the program names the device, not at its first call
+             // (the CLI opens its device lazily so that usage errors cost
+             // nothing; here the Device is the choice).
+             py::gil_scoped_release released;
+             device->name();
+             return device;
            }),
            py::arg("name") = "", py::arg("validation") = false, py::arg("sdf") = "auto", py::arg("extract") = "auto",
            "name: empty for the best device, an index, part of a device's name, or 'reference'; sdf: where the "

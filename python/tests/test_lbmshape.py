@@ -114,6 +114,12 @@ class Denoise(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "^sdf must be 'auto', 'cpu' or 'device'"):
             lbmshape.Device(sdf="gpu")
 
+    def test_a_device_name_that_matches_none_is_refused_where_it_is_given(self):
+        with self.assertRaisesRegex(lbmshape.UsageError, "nosuchgpu matches no Vulkan device \\(have: 0: "):
+            lbmshape.Device("nosuchgpu")
+        self.assertEqual(lbmshape.Device("reference").name, "reference (CPU)")
+        self.assertEqual(lbmshape.Device("0").name, lbmshape.Device().name)
+
     def test_every_error_is_an_lbmshape_error_and_a_builtin_one(self):
         for name, builtin in [("UsageError", ValueError), ("InputError", ValueError),
                               ("OutputError", OSError), ("DeviceError", RuntimeError)]:

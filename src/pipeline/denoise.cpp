@@ -72,7 +72,7 @@ nlohmann::json meshSummary(const TriangleMesh& mesh, const MeshTopology& t)
 // What an interrupted denoise has done: the lattice steps, and nothing written.
 std::function<std::string()> stepsDone(const SteppingSolver& solver)
 {
-  return [&solver] { return "stopped after " + std::to_string(solver.stepsTaken()) + " steps; nothing written"; };
+  return [&solver] { return "after " + std::to_string(solver.stepsTaken()) + " steps; nothing was written"; };
 }
 
 // Runs `count` more steps as a part of the stage's progress, in batches
@@ -622,7 +622,7 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 {
   sayWhereTheInputIsOpen(inputTopology, name, "the result closes it");
   const MeshTopology outputTopology = analyzeTopology(result);
-  warnIfThePartsChanged(inputTopology, "the input", outputTopology, "the result",
+  warnIfThePartsChanged(input, inputTopology, "the input", outputTopology, "the result",
                         report["grid"]["voxel"].get<double>());
   report["command"] = "denoise";
   report["input"] = meshSummary(input, inputTopology);

@@ -484,7 +484,7 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
         compareSurfaces(meshes.back(), lastTree, target, *targetTree, ComparisonOptions{20000, 0.0, false}),
         frameReport.compareWithTargetLevel(meshes.back(), lastTree), analyzeTopology(meshes.back())};
   });
-  warnIfThePartsChanged(targetTopology, "the target", last, "the last frame", frame.voxel);
+  warnIfThePartsChanged(target, targetTopology, "the target", last, "the last frame", frame.voxel);
   // A morph that starts at its target takes no step, and has no last one.
   const auto ofTheLastStep = [&](double value) {
     return schedule.totalSteps() > 0 ? nlohmann::json(value) : nlohmann::json(nullptr);

@@ -499,6 +499,14 @@ TEST(DenoiseCli, WarnsWhenThinPartsVanishOnACoarseGrid)
   EXPECT_TRUE(warned("ring.obj", "24")) << "a ring 1.6 voxels thick";
   EXPECT_FALSE(warned("ring.obj", "96"));
   EXPECT_FALSE(warned("overlapping.obj", "48"));
+  // Two overlapping spheres become their union, one part: not a part lost
+  // (the bundled bolt, a head and a shaft that overlap, said so).
+  const testing::CliResult united = testing::runLbmshape(
+      {"denoise", (folder / "overlapping.obj").string(), (folder / "out.glb").string(), "--res", "48", "-v"});
+  ASSERT_EQ(united.exitCode, 0) << united.err;
+  EXPECT_EQ(united.err.find("where the input has"), std::string::npos) << united.err;
+  EXPECT_NE(united.err.find("the input's 2 parts overlap: the result is their union, 1 part"), std::string::npos)
+      << united.err;
   // The warning's figure is --json's volume_change.
   const testing::CliResult r = testing::runLbmshape(
       {"denoise", (folder / "ring.obj").string(), (folder / "out.glb").string(), "--res", "24", "-q", "--json"});

@@ -11,6 +11,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/morph_arrival_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph_front_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/parts_check_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recycled_fields_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/shared_device_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_radius_test.cpp

@@ -50,15 +50,13 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/lbmshapeConfigVersion.cma
 install(FILES ${PROJECT_BINARY_DIR}/lbmshapeConfig.cmake ${PROJECT_BINARY_DIR}/lbmshapeConfigVersion.cmake
         DESTINATION ${package_dir})
 
-# pkg-config lbmshape. The prefix is the one configured (CMAKE_INSTALL_PREFIX);
-# an install elsewhere with --prefix gets its own, written straight to the
-# prefix (nothing in the build tree changes, so two installs from one build
-# cannot trade prefixes).
-configure_file(${PROJECT_SOURCE_DIR}/cmake/lbmshape.pc.in ${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured @ONLY)
-install(CODE "
-  file(READ \"${PROJECT_BINARY_DIR}/lbmshape.pc.in.configured\" pc)
-  string(REPLACE \"prefix=${CMAKE_INSTALL_PREFIX}\" \"prefix=\${CMAKE_INSTALL_PREFIX}\" pc \"\${pc}\")
-  set(pc_file \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig/lbmshape.pc\")
-  message(STATUS \"Installing: \${pc_file}\")
-  file(WRITE \"\${pc_file}\" \"\${pc}\")
-  list(APPEND CMAKE_INSTALL_MANIFEST_FILES \"\${pc_file}\")")
+# pkg-config lbmshape. The prefix is found from the .pc file's own place
+# (pkg-config's ${pcfiledir}), so an install with --prefix, a DESTDIR
+# staging or a copied prefix all point at themselves.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  message(FATAL_ERROR "CMAKE_INSTALL_LIBDIR must be relative to the prefix, not ${CMAKE_INSTALL_LIBDIR}")
+endif()
+file(RELATIVE_PATH LBMSHAPE_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" LBMSHAPE_PC_TO_PREFIX "${LBMSHAPE_PC_TO_PREFIX}")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/lbmshape.pc.in ${PROJECT_BINARY_DIR}/lbmshape.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/lbmshape.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -9,7 +9,9 @@
 //   lbmshape::DenoiseResult r = lbmshape::denoiseMesh(mesh, "my scan", options, device);
 //   // r.mesh: the smoothed surface; r.report: the figures `denoise --json` prints
 //   lbmshape::morphMeshes(source, target, lbmshape::MorphOptions{}, device,
-//                         [](int k, const lbmshape::TriangleMesh& frame) { /* each frame, in order */ });
+//                         [](int k, const lbmshape::TriangleMesh& frame) {  // each frame, in order
+//                           std::printf("frame %d: %zu triangles\n", k, frame.triangleCount());
+//                         });
 //
 // Errors are exceptions derived from lbmshape::Error (core/error.hpp):
 // UsageError (a parameter out of range), InputError (a mesh that cannot be

@@ -32,7 +32,10 @@ int64_t monotonicNs()
   return int64_t(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
 }
 
-extern "C" void onSignal(int signal)
+// The handlers have C linkage (sigaction's) and internal linkage (static):
+// exported, a host's function of the same name replaced them.
+extern "C" {
+static void onSignal(int signal)
 {
   int none = 0;
   if (received.compare_exchange_strong(none, signal)) {  // the first: a request, checked between batches of work
@@ -49,12 +52,13 @@ extern "C" void onSignal(int signal)
 
 // A host's SIGINT (SigintStopsCalls): a request every time, never the end
 // of the host.
-extern "C" void onHostedSigint(int signal)
+static void onHostedSigint(int signal)
 {
   ++sigintsWhileHosted;
   int none = 0;
   received.compare_exchange_strong(none, signal);
 }
+}  // extern "C"
 
 std::string stoppedBy(int signal)
 {

@@ -93,6 +93,9 @@ BandSurfacePass::BandSurfacePass(gpu::GpuContext& context, gpu::StagedCopies& co
 
 BandSurfacePass::~BandSurfacePass() = default;
 
+// Here, where Buffers is complete (the header only declares it).
+void BandSurfacePass::forgetTheStart() { buffers_.reset(); }
+
 // The pass ready for lists of at least these lengths (which fit one
 // storage-buffer binding: list()'s room), its set reading `reads` as they
 // are now. What it replaces takes effect once all of it is made, so a

@@ -50,7 +50,7 @@ public:
 
   // A new start: its far sides are the next pass's to upload. The buffers
   // are let go until then (a denoise never asks for the pass).
-  void forgetTheStart() { buffers_.reset(); }
+  void forgetTheStart();
   // A buffer that Reads names was replaced: the pass's descriptors are
   // written again before it next runs.
   void readsReplaced() { setStale_ = true; }

@@ -18,6 +18,7 @@
 // every surface it draws and from the target's, where no frame reads it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

@@ -4,12 +4,20 @@
 #include <cmath>
 #include <map>
 #include <utility>
+#include <string>
 #include <vector>
+
+#include "lbmshape/core/error.hpp"
 
 namespace lbmshape {
 
 TriangleMesh icosphere(int subdivisions, double radius, glm::dvec3 centre)
 {
+  if (subdivisions < 0 || subdivisions > maxIcosphereSubdivisions)
+    throw UsageError("icosphere: subdivisions " + std::to_string(subdivisions) + " is outside 0 to " +
+                     std::to_string(maxIcosphereSubdivisions));
+  if (!(std::isfinite(radius) && radius > 0.0) || !std::isfinite(centre.x + centre.y + centre.z))
+    throw UsageError("icosphere: the radius must be a finite number above 0 and the centre finite");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   TriangleMesh m;
   m.positions = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},

@@ -4,7 +4,10 @@
 #include <numbers>
 #include <random>
 
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/number_text.hpp"
 #include "lbmshape/mesh/mesh_geometry.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
 
 namespace lbmshape {
 namespace {
@@ -42,6 +45,10 @@ private:
 
 TriangleMesh addNormalNoise(const TriangleMesh& mesh, double sigmaInMeanEdgeLengths, uint32_t seed)
 {
+  if (!(std::isfinite(sigmaInMeanEdgeLengths) && sigmaInMeanEdgeLengths >= 0.0))
+    throw UsageError("addNormalNoise: sigma " + numberText(sigmaInMeanEdgeLengths) +
+                     " is not a finite number of 0 or more");
+  requireWellFormed(mesh, "the mesh");
   TriangleMesh noisy;
   noisy.positions = mesh.positions;
   noisy.triangles = mesh.triangles;

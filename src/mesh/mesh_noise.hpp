@@ -12,7 +12,9 @@ namespace lbmshape {
 // seed gives the same mesh on every machine and compiler (the generator and
 // the Gaussian are spelled out here, not left to the standard library). A
 // vertex without a normal (no triangle with area uses it) stays put. The
-// result has no normals: the old ones no longer fit.
+// result has no normals: the old ones no longer fit. Throws UsageError for
+// a sigma that is not a finite number of 0 or more, InputError for a mesh
+// with an index out of range or a coordinate that is not finite.
 TriangleMesh addNormalNoise(const TriangleMesh& mesh, double sigmaInMeanEdgeLengths, uint32_t seed);
 
 }  // namespace lbmshape

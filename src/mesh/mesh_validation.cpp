@@ -139,10 +139,9 @@ size_t dropRepeatedTriangles(TriangleMesh& mesh)
 
 }  // namespace
 
-void validateInputMesh(TriangleMesh& mesh, const std::string& name)
+void requireWellFormed(const TriangleMesh& mesh, const std::string& name)
 {
   const std::string prefix = "cannot read " + name + ": ";
-  if (mesh.triangles.empty()) throw InputError(prefix + "it contains no triangles");
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       if (mesh.triangles[t][k] >= mesh.positions.size())
@@ -157,6 +156,13 @@ void validateInputMesh(TriangleMesh& mesh, const std::string& name)
       throw InputError(prefix + "vertex " + std::to_string(v + 1) + " has a coordinate beyond single precision " +
                        coordinates(mesh.positions[v]));
   }
+}
+
+void validateInputMesh(TriangleMesh& mesh, const std::string& name)
+{
+  const std::string prefix = "cannot read " + name + ": ";
+  if (mesh.triangles.empty()) throw InputError(prefix + "it contains no triangles");
+  requireWellFormed(mesh, name);
 
   const size_t before = mesh.triangles.size();
   std::erase_if(mesh.triangles, [&](const glm::uvec3& t) { return isDegenerate(mesh, t); });

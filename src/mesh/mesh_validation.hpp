@@ -19,4 +19,9 @@ namespace lbmshape {
 // triangle uses are allowed and kept.
 void validateInputMesh(TriangleMesh& mesh, const std::string& name);
 
+// Its first checks alone, which change nothing: every index in range and
+// every coordinate finite and within single precision (what a function
+// that indexes positions needs before it reads them).
+void requireWellFormed(const TriangleMesh& mesh, const std::string& name);
+
 }  // namespace lbmshape

@@ -11,6 +11,14 @@
 
 namespace lbmshape {
 
+// The library reads these vectors as tightly packed doubles and unsigned
+// ints: a program built with GLM's aligned types (GLM_FORCE_DEFAULT_ALIGNED_GENTYPES
+// with GLM_FORCE_INTRINSICS pads a dvec3 to 32 bytes) would hand it meshes
+// it misreads. Caught where the program includes this header.
+static_assert(sizeof(glm::dvec3) == 3 * sizeof(double) && sizeof(glm::uvec3) == 3 * sizeof(unsigned) &&
+                  sizeof(glm::vec3) == 3 * sizeof(float),
+              "lbmshape needs GLM's packed vector layout: do not define GLM_FORCE_DEFAULT_ALIGNED_GENTYPES");
+
 // Whether a mesh without triangles may be written or read. Usually it is a
 // mistake (a denoised mesh that vanished, an input with nothing to smooth);
 // a morph's frame may be empty while the shape passes through nothing, and
@@ -37,7 +45,9 @@ struct Bounds {
   double diagonal() const { return glm::length(size()); }
 };
 
-// Bounds of the vertices that triangles use.
+// Bounds of the vertices that triangles use. Throws InputError when a
+// triangle refers to a vertex the mesh lacks (a mesh from a program, not
+// yet validated).
 Bounds bounds(const TriangleMesh& mesh);
 
 }  // namespace lbmshape

@@ -73,6 +73,9 @@ void requireWritable(const TriangleMesh& mesh, const std::filesystem::path& path
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     throw OutputError(prefix + " has " + std::to_string(mesh.normals.size()) + " normals for " +
                       std::to_string(mesh.positions.size()) + " vertices");
+  if (!mesh.colours.empty() && mesh.colours.size() != mesh.positions.size())
+    throw OutputError(prefix + " has " + std::to_string(mesh.colours.size()) + " colours for " +
+                      std::to_string(mesh.positions.size()) + " vertices");
 }
 
 }  // namespace lbmshape

@@ -13,6 +13,7 @@
 #include "lbmshape/gpu/gpu_context.hpp"
 #include "lbmshape/mesh/mesh_format.hpp"
 #include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/mesh_validation.hpp"
 #include "lbmshape/pipeline/frame_writer.hpp"
 #include "lbmshape/pipeline/stage_clock.hpp"
 #include "lbmshape/render/colour_map.hpp"
@@ -143,6 +144,13 @@ render::Image drawMeshes(const std::vector<ShownMesh>& meshes, const RenderOptio
                          nlohmann::json* figures)
 {
   const interrupt::CallStop ownStop(o.stop);
+  for (const ShownMesh& m : meshes) {
+    if (!m.mesh) throw UsageError("drawMeshes: the mesh to show as \"" + m.label + "\" is null");
+    requireWellFormed(*m.mesh, m.label.empty() ? "a mesh to show" : m.label);
+    if (!m.mesh->colours.empty() && m.mesh->colours.size() != m.mesh->positions.size())
+      throw InputError("cannot draw " + m.label + ": it has " + std::to_string(m.mesh->colours.size()) +
+                       " colours for " + std::to_string(m.mesh->positions.size()) + " vertices");
+  }
   const ComputeDevice::Turn turn = device.takeTurn();
   render::Picture picture;
   picture.view = o.view;

@@ -31,7 +31,8 @@ public:
   template <class Work>
   decltype(auto) time(const std::string& name, Work&& work)
   {
-    interrupt::check("stopped before the " + name + " stage");
+    // (The message follows what stopped it: "interrupted: ", "stopped: ".)
+    interrupt::check("before the " + name + " stage");
     Stopwatch watch;
     struct Record {
       StageClock& clock;

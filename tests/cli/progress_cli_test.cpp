@@ -121,9 +121,10 @@ TEST_F(DenoiseProgress, CtrlCStopsALongRunAndWritesNothing)
   // Stopped between step batches, not after the million steps.
   std::ifstream in(log);
   const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t at = err.find("stopped after ");
+  const std::string stopped = "interrupted: after ";
+  const size_t at = err.find(stopped);
   ASSERT_NE(at, std::string::npos) << err;
-  EXPECT_LT(std::stol(err.substr(at + 14)), 1000000) << err;
+  EXPECT_LT(std::stol(err.substr(at + stopped.size())), 1000000) << err;
   for (const auto& entry : fs::directory_iterator(folder.path()))
     EXPECT_TRUE(entry.path() == log || entry.path().filename() == "sphere.obj")
         << "nothing written, no temporary file: " << entry.path();

@@ -35,9 +35,16 @@ if(NOT output MATCHES "lbmshape [0-9.]+ on .*farthest from the sphere")
 endif()
 message(STATUS "find_package(lbmshape): ${output}")
 
+# pkg-config on a copy of the prefix elsewhere (a package's staging tree, a
+# moved install): its flags name the copy.
 find_program(PKG_CONFIG pkg-config REQUIRED)
-set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
+set(moved ${WORK_DIR}/moved)
+file(COPY ${prefix}/ DESTINATION ${moved})
+set(ENV{PKG_CONFIG_PATH} ${moved}/lib/pkgconfig)
 run("pkg-config lbmshape" ${PKG_CONFIG} --cflags --libs lbmshape)
+if(NOT output MATCHES "-I${moved}/" OR NOT output MATCHES "-L${moved}/" OR output MATCHES "${prefix}")
+  message(FATAL_ERROR "pkg-config on the copied prefix ${moved} gave: ${output}")
+endif()
 separate_arguments(flags UNIX_COMMAND "${output}")
 # A program's own headers of the same names as the library's (a core/ or
 # mesh/ folder of its own) come first on its include path: the library's
@@ -48,7 +55,7 @@ foreach(header IN LISTS library_headers)
   file(WRITE ${WORK_DIR}/programs_own_headers/${header} "#error the program's own ${header} was included\n")
 endforeach()
 run("compiling with pkg-config's flags" c++ -O1 ${SOURCE_DIR}/examples/denoise_in_memory/main.cpp
-    -I${WORK_DIR}/programs_own_headers ${flags} -Wl,-rpath,${prefix}/lib -o ${WORK_DIR}/denoise_with_pkg_config)
+    -I${WORK_DIR}/programs_own_headers ${flags} -Wl,-rpath,${moved}/lib -o ${WORK_DIR}/denoise_with_pkg_config)
 run("running what pkg-config built" ${WORK_DIR}/denoise_with_pkg_config --res 32)
 message(STATUS "pkg-config lbmshape: ${output}")
 

@@ -1,6 +1,7 @@
 // The library's in-memory entry points give what the file-based ones write:
 // denoiseMesh as denoiseFile, morphMeshes as morphFiles, frame for frame;
 // and they check a mesh from a program as a file's is checked.
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -8,11 +9,13 @@
 
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/interrupt.hpp"
+#include "lbmshape/mesh/icosphere.hpp"
 #include "lbmshape/mesh/mesh_noise.hpp"
 #include "lbmshape/mesh/mesh_reader.hpp"
 #include "lbmshape/mesh/mesh_writer.hpp"
 #include "lbmshape/pipeline/denoise.hpp"
 #include "lbmshape/pipeline/morph.hpp"
+#include "lbmshape/pipeline/render_job.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
@@ -158,6 +161,46 @@ TEST(InMemory, AMeshWithAnIndexOutOfRangeIsAnInputErrorNamingIt)
     EXPECT_NE(std::string(e.what()).find("the scan"), std::string::npos) << e.what();
   }
   EXPECT_THROW(morphMeshes(testing::icosphere(2), broken, MorphOptions{}, device, {}), InputError);
+}
+
+// Every public function that takes a mesh from a program checks it before
+// it indexes it (bounds, the noise and the picture read positions by the
+// triangles' indices: a segfault, or silently wrong output); test shapes
+// and noise refuse values that make no mesh.
+TEST(InMemory, TheHelpersRefuseWhatWouldReadOutOfBounds)
+{
+  TriangleMesh broken = testing::icosphere(1);
+  broken.triangles[0].x = 50'000'000;
+  EXPECT_THROW(bounds(broken), InputError);
+  EXPECT_THROW(addNormalNoise(broken, 0.1, 1), InputError);
+  TriangleMesh notANumber = testing::icosphere(1);
+  notANumber.positions[3].y = std::nan("");
+  EXPECT_THROW(addNormalNoise(notANumber, 0.1, 1), InputError);
+  EXPECT_THROW(addNormalNoise(testing::icosphere(1), std::nan(""), 1), UsageError);
+  EXPECT_THROW(addNormalNoise(testing::icosphere(1), -0.1, 1), UsageError);
+  EXPECT_NO_THROW(addNormalNoise(testing::icosphere(1), 0.0, 1));
+
+  EXPECT_THROW(icosphere(-1), UsageError);
+  EXPECT_THROW(icosphere(maxIcosphereSubdivisions + 1), UsageError);
+  EXPECT_THROW(icosphere(1, 0.0), UsageError);
+  EXPECT_THROW(icosphere(1, 1.0, glm::dvec3(std::nan(""))), UsageError);
+  EXPECT_EQ(icosphere(2).triangleCount(), 320u);
+
+  ComputeDevice device{"", true};
+  RenderOptions picture;
+  picture.size = glm::ivec2(64, 64);
+  EXPECT_THROW(drawMeshes({{&broken, "broken"}}, picture, device), InputError);
+  EXPECT_THROW(drawMeshes({{&notANumber, "nan"}}, picture, device), InputError);
+  EXPECT_THROW(drawMeshes({{nullptr, "nothing"}}, picture, device), UsageError);
+  TriangleMesh fewColours = testing::icosphere(1);
+  fewColours.colours.assign(3, glm::vec3(1.0f));
+  EXPECT_THROW(drawMeshes({{&fewColours, "few colours"}}, picture, device), InputError);
+  const TriangleMesh sphere = testing::icosphere(1);
+  EXPECT_EQ(drawMeshes({{&sphere, "sphere"}}, picture, device).width, 64);
+
+  testing::ScratchFolder folder;
+  EXPECT_THROW(writeMesh(fewColours, folder / "few.ply"), OutputError);
+  EXPECT_FALSE(std::filesystem::exists(folder / "few.ply"));
 }
 
 }  // namespace

@@ -36,7 +36,8 @@
 //
 // Messages: progress and timings go to stderr as the command's do;
 // lbmshape::log::setLevel(lbmshape::log::Level::Quiet) leaves only the
-// warnings (core/log.hpp).
+// warnings, and lbmshape::log::setSink(...) sends them to a log panel or
+// the host's logger instead (core/log.hpp).
 #pragma once
 
 #include "lbmshape/core/error.hpp"

@@ -1,6 +1,8 @@
-// Logs and progress go to stderr; stdout is reserved for --json results.
+// Logs and progress go to stderr; stdout is reserved for --json results. A
+// program that links the library may send them elsewhere (setSink).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,20 @@ enum class Level { Quiet = 0, Normal = 1, Verbose = 2 };
 
 void setLevel(Level level);
 Level level();
+
+// What a message is, for a sink.
+enum class Kind { Info, Verbose, Warning, Progress };
+// Where the messages go instead of stderr: a plugin's log panel, a host's
+// own logger. The sink gets each message alone, without stderr's
+// "lbmshape: " and "warning: ", on the thread that logs it (a call's
+// worker threads too), after the level has filtered it; a progress line
+// comes as Kind::Progress (stderr rewrites it in place). It is called
+// outside lbmshape's locks, so it may take the host's own (calls from
+// several threads at once are the sink's to order), and must not throw; a
+// message it logs itself goes to stderr. An empty function restores stderr.
+// Warnings still reach the WarningCollector (a call's report) either way.
+using Sink = std::function<void(Kind kind, const std::string& message)>;
+void setSink(Sink sink);
 
 void info(const std::string& message);     // shown unless quiet
 void verbose(const std::string& message);  // shown with --verbose

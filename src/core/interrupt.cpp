@@ -152,11 +152,13 @@ void clearStopRequest()
 
 SigintStopsCalls::SigintStopsCalls()
 {
+  // Counted afresh even where nothing is lent: an earlier lending's count
+  // made caughtOne() true for a host that ignores SIGINT.
+  sigintsWhileHosted = 0;
   // A host that ignores SIGINT, or leaves it to end the process, keeps
   // its choice.
   if (sigaction(SIGINT, nullptr, &host_) != 0) return;
   if (!(host_.sa_flags & SA_SIGINFO) && (host_.sa_handler == SIG_IGN || host_.sa_handler == SIG_DFL)) return;
-  sigintsWhileHosted = 0;
   struct sigaction action = {};
   action.sa_handler = onHostedSigint;
   sigemptyset(&action.sa_mask);
@@ -169,6 +171,6 @@ SigintStopsCalls::~SigintStopsCalls()
   if (installed_) sigaction(SIGINT, &host_, nullptr);
 }
 
-bool SigintStopsCalls::caughtOne() const { return sigintsWhileHosted > 0; }
+bool SigintStopsCalls::caughtOne() const { return installed_ && sigintsWhileHosted > 0; }
 
 }  // namespace lbmshape::interrupt

@@ -11,20 +11,12 @@
 #include <gtest/gtest.h>
 
 #include "lbmshape/core/log.hpp"
+#include "support/captured_stderr.hpp"
 
 namespace lbmshape {
 namespace {
 
-class CapturedStderr {
-public:
-  CapturedStderr() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
-  ~CapturedStderr() { std::cerr.rdbuf(previous_); }
-  std::string text() const { return text_.str(); }
-
-private:
-  std::ostringstream text_;
-  std::streambuf* previous_;
-};
+using testing::CapturedStderr;
 
 // Sets the level and sink for a test, and restores stderr and Normal after.
 class LogSink : public ::testing::Test {

@@ -9,23 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "lbmshape/core/log.hpp"
+#include "support/captured_stderr.hpp"
 #include "lbmshape/core/progress.hpp"
 #include "lbmshape/core/stopwatch.hpp"
 
 namespace lbmshape {
 namespace {
 
-// Captures what the logger writes to std::cerr while it lives.
-class CapturedStderr {
-public:
-  CapturedStderr() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
-  ~CapturedStderr() { std::cerr.rdbuf(previous_); }
-  std::string text() const { return text_.str(); }
-
-private:
-  std::ostringstream text_;
-  std::streambuf* previous_;
-};
+using testing::CapturedStderr;
 
 class ProgressLine : public ::testing::Test {
 protected:

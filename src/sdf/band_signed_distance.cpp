@@ -72,6 +72,22 @@ std::vector<float> bandDistances(const TriangleBvh& bvh, const GridFrame& frame,
   return distance;
 }
 
+// The exact distance (voxels) of the grid's cells that have none yet;
+// returns how many.
+size_t exactWhereUnreached(const TriangleBvh& bvh, const GridFrame& frame, const BandCells& cells,
+                           std::vector<float>& distance)
+{
+  size_t filled = 0;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : filled)
+  for (size_t i = 0; i < distance.size(); ++i) {
+    if (std::isfinite(distance[i]) || !cells.real(i)) continue;
+    const glm::ivec3 c = cells.coords(i);
+    distance[i] = float(bvh.closest(frame.cellCentre(c.x, c.y, c.z)).distance / frame.voxel);
+    ++filled;
+  }
+  return filled;
+}
+
 // Which side each inactive brick is on: the side of the active cell next to
 // it (no surface lies between: the inactive brick's cells are all more than
 // two voxels from it), spread from brick to brick; a region of inactive
@@ -184,6 +200,13 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
   } else {
     distance = bandDistances(bvh, frame, cells, 3.0, clamped, options.progress, s);
   }
+
+  // Unclamped (a morph's two fields), every cell of the grid needs its
+  // distance, but propagation only spreads through bricks joined to the
+  // surface's: a morph whose shapes lie apart stores the target's bricks
+  // out of the source's reach, and they were left infinite (the morph
+  // failed: "the field holds a value that is not a finite number").
+  if (std::isinf(clamped)) s.farCells += exactWhereUnreached(bvh, frame, cells, distance);
 
   stage.restart();
   beginPart("winding-number sign", 0.2);

@@ -47,5 +47,34 @@ TEST(BandMorph, GivesTheGridsFrames)
               grid["final"]["mean_distance_to_target_voxels"].get<double>(), 0.05);
 }
 
+// Two shapes apart (no cell inside both, nothing inside either between
+// them): the source's bricks and the target's are not joined, and the
+// band's fields there used to stay infinite (the morph failed, "the field
+// holds a value that is not a finite number"); the band arrives as the
+// grid does, from the same distance.
+TEST(BandMorph, ShapesApartMorphAsOnTheGrid)
+{
+  ComputeDevice device{"", true};
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3, 1.0), folder / "here.obj");
+  writeMesh(testing::icosphere(3, 1.0, {4.0, 0.0, 0.0}), folder / "there.obj");
+  MorphOptions o;
+  o.grid.resolution = 64;
+  o.align = Alignment::None;
+  o.format = "obj";
+  o.frames = 6;
+  o.animation = false;
+  o.band = true;
+  const nlohmann::json band = morphFiles(folder / "here.obj", folder / "there.obj", folder / "band", o, device);
+  o.band = false;
+  const nlohmann::json grid = morphFiles(folder / "here.obj", folder / "there.obj", folder / "grid", o, device);
+  EXPECT_EQ(band["lattice"]["kind"], "band");
+  EXPECT_NEAR(band["schedule"]["initial_error_voxels"].get<double>(),
+              grid["schedule"]["initial_error_voxels"].get<double>(), 0.5);
+  EXPECT_EQ(band["steps"], grid["steps"]);
+  EXPECT_TRUE(band["converged"]);
+  EXPECT_LT(band["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.05);
+}
+
 }  // namespace
 }  // namespace lbmshape

@@ -112,19 +112,19 @@ void refuseShapesSmallerThanAVoxel(const TriangleMesh& source, const TriangleMes
   }
 }
 
-// A morph that arrives takes a step a frame at least (MorphSchedule): its
-// frames repeat only where it takes none. Where it had to take shorter
-// steps for that, -v says so.
+// A morph that arrives takes the same number of steps between every two
+// frames, one at least (MorphSchedule): its frames repeat only where it
+// takes none. Where it scaled its steps for that, -v says so.
 void sayHowTheFramesFallOnTheSteps(const MorphSchedule& schedule, int frames, double initialError, double tolerance)
 {
   if (schedule.totalSteps() == 0 && frames > 1)
     log::warning("the source already lies within " + nameOf(Parameter::Tolerance) + " " + numberText(tolerance) +
                  " voxels of the target (" + threeSignificantDigits(initialError) +
                  "): the morph takes no step, and all " + std::to_string(frames) + " frames are the same shape");
-  if (schedule.scale() < 1.0)
-    log::verbose("more frames than the morph's steps: gamma and Cs scaled by " +
-                 threeSignificantDigits(schedule.scale()) + " so that it takes " +
-                 std::to_string(schedule.totalSteps()) + " steps on the same way, one a frame at least");
+  if (schedule.scale() != 1.0 && frames > 1)
+    log::verbose("gamma and Cs scaled by " + threeSignificantDigits(schedule.scale()) + " so that the morph takes " +
+                 std::to_string(schedule.totalSteps()) + " steps on the same way, " +
+                 std::to_string(schedule.totalSteps() / (frames - 1)) + " between every two frames");
 }
 
 Bounds unite(const Bounds& a, const Bounds& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }

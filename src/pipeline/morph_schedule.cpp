@@ -35,16 +35,22 @@ int MorphSchedule::stepsToArrive(double initialError, double cs, double toleranc
 MorphSchedule MorphSchedule::arriving(const MorphOptions& o, double initialError)
 {
   const int total = stepsToArrive(initialError, o.cs, o.tolerance);
-  const double scale = finerStepsScale(initialError, o, total);
-  const int steps = scale < 1.0 ? stepsToArrive(initialError, o.cs * scale, o.tolerance) : total;
+  const double scale = evenStepsScale(initialError, o, total);
+  const int steps = scale != 1.0 ? stepsToArrive(initialError, o.cs * scale, o.tolerance) : total;
   return MorphSchedule(o.gamma * scale, o.cs * scale, std::min(o.gamma, arrivalGamma) * scale,
                        std::max(o.cs, arrivalCs) * scale, steps, steps / 2, o.frames, scale);
 }
 
-double MorphSchedule::finerStepsScale(double initialError, const MorphOptions& o, int steps)
+double MorphSchedule::evenStepsScale(double initialError, const MorphOptions& o, int steps)
 {
-  const int needed = o.frames - 1;
-  if (steps == 0 || steps >= needed) return 1.0;
+  const int intervals = o.frames - 1;
+  if (steps == 0 || intervals <= 0) return 1.0;
+  // The whole number of steps a frame nearest the morph's own: at least
+  // one, and the factor within 2/3 to 3/2 (a Cs of 1 becomes at most 1.5,
+  // where the second-order source stays monotone up to 2).
+  const int perFrame = std::max(1, int(std::lround(double(steps) / intervals)));
+  const int needed = perFrame * intervals;
+  if (needed == steps) return 1.0;
   // ln(1/rho(c)) = 2 artanh(c/2): the Cs whose steps to arrive are `needed`
   // (a hair faster, so that rounding does not make them one more).
   const double shrinkPerStep = std::log(initialError / o.tolerance) / needed * (1.0 + 1e-9);

@@ -19,12 +19,15 @@
 //     steps = ceil(ln(E0 / tolerance) / ln(1/rho))
 // from the largest distance E0 between the two fields near the target. The
 // frames are spread evenly in time over those steps, so --frames says how
-// many pictures, never where the morph ends. Where that is fewer steps than
-// the frames' intervals (a coarse grid, shapes close together, a long clip),
-// gamma and Cs of every step are scaled down by one factor: the same
+// many pictures, never where the morph ends. So that every frame lies the
+// same number of steps from the one before (at least one), gamma and Cs of
+// every step are scaled by one factor, the number of steps becoming the
+// nearest multiple of the frames' intervals: the same
 // dX/dt = gamma Laplacian(X) + Cs (X_target - X), solved in steps that
-// much shorter, so each frame has a shape of its own instead of repeating
-// the one before (the animation played in jerks).
+// much shorter or longer. Frames repeated the one before where the morph
+// had fewer steps than frames, and where the steps did not divide evenly
+// some frames moved twice as far as their neighbours: the clip played in
+// jerks.
 //
 // Given steps (--steps or --steps-per-frame) keep the paper's scheme:
 // constant gamma, ending where the steps end.
@@ -59,7 +62,9 @@ public:
   int annealFrom() const { return annealFrom_; }
   int totalSteps() const { return totalSteps_; }
   // gamma and Cs of every step as a fraction of the options': below 1
-  // where the morph would have arrived in fewer steps than the frames.
+  // where the morph takes more steps than it would have (more frames than
+  // its steps), above 1 (at most 3/2) where fewer, so that every frame
+  // is the same number of steps from the one before.
   double scale() const { return scale_; }
   // Frame k shows the field after frameSteps()[k] steps; the last is totalSteps().
   const std::vector<int>& frameSteps() const { return frameSteps_; }
@@ -74,10 +79,10 @@ public:
   double totalDiffusion() const;
 
 private:
-  // Where the morph would arrive in fewer steps than the frames' intervals:
-  // the factor on gamma and Cs (below 1) that makes it take one step a
-  // frame at least, else 1.
-  static double finerStepsScale(double initialError, const MorphOptions& options, int steps);
+  // The factor on gamma and Cs that makes the morph take the same whole
+  // number of steps between every two frames (at least one), the number
+  // nearest its own steps per frame; 1 where they already are.
+  static double evenStepsScale(double initialError, const MorphOptions& options, int steps);
   MorphSchedule(double gamma, double cs, double gammaEnd, double csEnd, int totalSteps, int annealFrom, int frames,
                 double scale = 1.0);
   double closingLeft(int step) const;

@@ -85,23 +85,53 @@ TEST(MorphSchedule, MoreFramesThanStepsTakeShorterStepsOnTheSameWay)
   EXPECT_LT(left, many.tolerance);
 }
 
+// Every frame the same whole number of steps from the one before: a frame
+// of two steps between frames of one moved twice as far (a stutter, the
+// animator review: 50 steps over 47 intervals). Where the morph has as many
+// steps as intervals or more, the factor stays within 3/4 to 3/2 (the
+// nearest whole number of steps a frame); the morph still arrives.
+TEST(MorphSchedule, EveryFrameIsAsManyStepsFromTheOneBefore)
+{
+  for (const int frames : {5, 17, 24, 48, 120, 241})
+    for (const double error : {0.6, 3.0, 7.2, 30.0, 180.0}) {
+      MorphOptions o;
+      o.frames = frames;
+      const MorphSchedule s = MorphSchedule::arriving(o, error);
+      SCOPED_TRACE(std::to_string(frames) + " frames, " + std::to_string(error) + " voxels");
+      const std::vector<int>& at = s.frameSteps();
+      ASSERT_GT(at[1], 0);
+      for (size_t k = 1; k < at.size(); ++k) ASSERT_EQ(at[k] - at[k - 1], at[1]) << "frame " << k;
+      if (MorphSchedule::stepsToArrive(error, o.cs, o.tolerance) >= frames - 1) {
+        EXPECT_GE(s.scale(), 0.75);
+        EXPECT_LE(s.scale(), 1.5);
+      } else {
+        EXPECT_LE(s.scale(), 1.0) << "shorter steps, one a frame";
+      }
+      EXPECT_LE(s.csAt(s.totalSteps() - 1), 1.5);
+      double left = error;
+      for (int n = 0; n < s.totalSteps(); ++n) left *= (1.0 - s.csAt(n) / 2.0) / (1.0 + s.csAt(n) / 2.0);
+      EXPECT_LT(left, o.tolerance);
+    }
+}
+
 TEST(MorphSchedule, GammaAndCsHoldThenCloseOnTheArrivalsValues)
 {
   MorphOptions o;
   const MorphSchedule s = MorphSchedule::arriving(o, 30.0);
   ASSERT_TRUE(s.annealed());
   EXPECT_EQ(s.annealFrom(), s.totalSteps() / 2);
+  const double scale = s.scale();  // the frames' even steps' (MorphSchedule.EveryFrameIsAsManyStepsFromTheOneBefore)
   for (int k = 0; k < s.annealFrom(); ++k) {
-    EXPECT_EQ(s.gammaAt(k), o.gamma);
-    EXPECT_EQ(s.csAt(k), o.cs);
+    EXPECT_DOUBLE_EQ(s.gammaAt(k), o.gamma * scale);
+    EXPECT_DOUBLE_EQ(s.csAt(k), o.cs * scale);
   }
   for (int k = s.annealFrom() + 1; k < s.totalSteps(); ++k) {
     EXPECT_LE(s.gammaAt(k), s.gammaAt(k - 1)) << k;
     EXPECT_GE(s.csAt(k), s.csAt(k - 1)) << k;
   }
-  EXPECT_DOUBLE_EQ(s.gammaAt(s.totalSteps() - 1), arrivalGamma);
-  EXPECT_DOUBLE_EQ(s.csAt(s.totalSteps() - 1), arrivalCs);
-  EXPECT_LT(s.totalDiffusion(), o.gamma * s.totalSteps());
+  EXPECT_DOUBLE_EQ(s.gammaAt(s.totalSteps() - 1), arrivalGamma * scale);
+  EXPECT_DOUBLE_EQ(s.csAt(s.totalSteps() - 1), arrivalCs * scale);
+  EXPECT_LT(s.totalDiffusion(), o.gamma * scale * s.totalSteps());
   // Batches never cross a change of gamma.
   for (int k = 0; k < s.totalSteps(); ++k)
     for (int j = k; j < s.sameStepsUntil(k); ++j) {
@@ -237,12 +267,13 @@ TEST_F(MorphArrival, MoreFramesThanStepsGiveEachFrameItsOwnShapeOnTheSameWay)
   EXPECT_TRUE(fine["converged"]);
   EXPECT_LT(fine["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.05);
   EXPECT_LT(fine["final"]["hausdorff_to_target_level_voxels"].get<double>(), 1.0);
-  // Halfway, the two runs' frames at the same time (a fine step lasts
-  // `scale` of a coarse one) lie on one another; a quarter of the way
-  // further on, the shape is elsewhere.
+  // Halfway, the two runs' frames at the same time (a step of either lasts
+  // its `scale`) lie on one another; a quarter of the way further on, the
+  // shape is elsewhere.
   const double voxel = coarse["grid"]["voxel"];
   const int halfway = coarse["frame_steps"][2];
-  const int sameTime = int(std::lround(halfway / fine["schedule"]["scale"].get<double>()));
+  const int sameTime =
+      int(std::lround(halfway * coarse["schedule"]["scale"].get<double>() / fine["schedule"]["scale"].get<double>()));
   const TriangleMesh half = readMesh(frameFile("coarse", 2));
   const double same = compareSurfaces(half, readMesh(frameFile("fine", sameTime))).mean / voxel;
   const double later = compareSurfaces(half, readMesh(frameFile("fine", sameTime + between))).mean / voxel;

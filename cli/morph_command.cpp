@@ -74,8 +74,8 @@ void addMorphCommand(CLI::App& app, const CommonOptions& common)
       cmd->add_option("--steps", a->steps, "Lattice steps in all, spread over the frames, constant gamma and Cs")
           ->excludes(a->stepsPerFrameGiven);
   cmd->add_option("--format", a->options.format, "Frame files: glb, gltf, obj, ply, off or stl")->capture_default_str();
-  cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
-  cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb");
+  CLI::Option* fps = cmd->add_option("--fps", a->options.fps, "Frames per second of morph.glb")->capture_default_str();
+  cmd->add_flag("--no-animation", a->noAnimation, "Do not write morph.glb")->excludes(fps);
   cmd->add_option("--color", a->colour,
                   "Vertex colours of the frames: none, or curvature (mean curvature on the target's scale)")
       ->check(CLI::IsMember({"none", "curvature"}))

@@ -112,6 +112,21 @@ void refuseShapesSmallerThanAVoxel(const TriangleMesh& source, const TriangleMes
   }
 }
 
+// Given steps fewer than the frames' intervals (the paper's scheme, frames
+// on whole steps): some frames repeat the one before. Only an info line
+// said so, and the clip held still in jerks.
+void warnOfGivenStepsThatRepeatFrames(const MorphSchedule& schedule, int frames)
+{
+  const std::vector<int>& at = schedule.frameSteps();
+  size_t repeats = 0;
+  for (size_t k = 1; k < at.size(); ++k) repeats += at[k] == at[k - 1];
+  if (repeats == 0) return;
+  log::warning(std::to_string(repeats) + " of the " + std::to_string(frames) + " frames repeat the frame before: " +
+               std::to_string(schedule.totalSteps()) + " steps are fewer than the " + std::to_string(frames - 1) +
+               " intervals between frames; more " + nameOf(Parameter::Steps) +
+               ", or none (a morph that arrives takes " + "as many steps between every two frames)");
+}
+
 // A morph that arrives takes the same number of steps between every two
 // frames, one at least (MorphSchedule): its frames repeat only where it
 // takes none. Where it scaled its steps for that, -v says so.
@@ -284,6 +299,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     log::verbose("the morph arrives in " + std::to_string(schedule.totalSteps()) + " steps (" +
                  std::to_string(initialError) + " voxels from the target to " + std::to_string(o.tolerance) + ")");
     sayHowTheFramesFallOnTheSteps(schedule, o.frames, initialError, o.tolerance);
+  } else {
+    warnOfGivenStepsThatRepeatFrames(schedule, o.frames);
   }
   TriangleMesh targetLevel = clock.time("extract", [&] { return lattice->targetLevel(); });
   // One colour scale for every frame, so that colours compare across them.
@@ -407,10 +424,13 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       // its frames over the whole way, wherever the tolerance is reached.
       if (stepsGiven(o) && k > 0 && lastError < o.tolerance) {
         convergedAt = currentStep;
+        // A warning: the clip holds still from here (75 % of it for
+        // --steps 200 --frames 24), which a script keeping --json must see.
         if (k + 1 < o.frames)
-          log::info("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
-                    std::to_string(lastError) + " voxels near the target); frames " + std::to_string(k + 1) + " to " +
-                    std::to_string(o.frames - 1) + " repeat it");
+          log::warning("converged at step " + std::to_string(*convergedAt) + " (max |X - X_target| " +
+                       threeSignificantDigits(lastError) + " voxels near the target); frames " + std::to_string(k + 1) +
+                       " to " + std::to_string(o.frames - 1) + " repeat it: fewer " + nameOf(Parameter::Steps) +
+                       ", or none (a morph that arrives spreads its frames over the whole way)");
       }
     }
     const int step = currentStep;

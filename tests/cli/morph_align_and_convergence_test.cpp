@@ -1,6 +1,7 @@
 // Where the target is placed (--align center and fit: the report's "align"
 // and where the last frame lands, in the source's coordinates), and what a
 // morph that converges early logs and writes.
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -96,6 +97,11 @@ TEST(MorphConvergence, LoggedAndLaterFramesRepeatTheConvergedShape)
   const std::regex logged("converged at step " + std::to_string(converged) + " .*frames " +
                           std::to_string(converged + 1) + " to " + std::to_string(frames - 1) + " repeat it");
   EXPECT_TRUE(std::regex_search(r.err, logged)) << r.err;
+  // A warning, in the report too: the rest of the clip holds still.
+  const auto& warnings = report["warnings"];
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const nlohmann::json& w) {
+    return w.get<std::string>().rfind("converged at step ", 0) == 0;
+  })) << warnings;
 
   auto bytes = [](const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

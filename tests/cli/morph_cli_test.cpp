@@ -466,6 +466,19 @@ TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
       << fit.err;
   EXPECT_EQ(fit.err.find("repeat"), std::string::npos) << "more frames than steps take shorter steps: " << fit.err;
   EXPECT_EQ(fit.err.find("where the target has"), std::string::npos) << fit.err;
+  // Given steps fewer than the intervals: frames repeat, and a warning
+  // says how many (it was an info line, or nothing).
+  const testing::CliResult few = testing::runLbmshape({"morph", sphere, bigger.string(), (folder / "few").string(),
+                                                       "--res", "20", "--frames", "6", "--steps", "2", "-q"});
+  ASSERT_EQ(few.exitCode, 0) << few.err;
+  EXPECT_NE(few.err.find("warning: 3 of the 6 frames repeat the frame before: 2 steps are fewer than the 5 intervals"),
+            std::string::npos)
+      << few.err;
+  // --fps says how fast morph.glb plays: with no morph.glb it means nothing.
+  const testing::CliResult fps = testing::runLbmshape(
+      {"morph", sphere, bigger.string(), (folder / "fps").string(), "--res", "20", "--no-animation", "--fps", "30"});
+  EXPECT_EQ(fps.exitCode, 2) << fps.err;
+  EXPECT_NE(fps.err.find("--fps excludes --no-animation"), std::string::npos) << fps.err;
   testing::CliResult itself =
       testing::runLbmshape({"morph", sphere, sphere, (folder / "itself").string(), "--res", "20", "--frames", "4"});
   ASSERT_EQ(itself.exitCode, 0) << itself.err;

@@ -33,6 +33,17 @@ double animationBytes(double areaInVoxels, int frames);
 // its file as the frames come).
 enum class FramesHeldBy { Preview, CompressedAnimation };
 
+// A plain morph.glb streams its frames to the file, which glTF's binary
+// container caps at 4 GiB (its length is 32 bits): it failed only once it
+// got there (--frames 100000 at --res 48: two minutes, 20,863 frames
+// written). Throws OutputError (exit 4), before any work, where even the
+// smaller of the two shapes' surfaces, at this voxel size, gives a file past
+// that: "morph.glb's N frames would take about X GiB, past the 4 GiB a .glb
+// holds; about K frames would fit, ...". Plain morph.glb frames take about
+// 24 B a triangle (positions, normals, indices: 24.2 measured).
+inline constexpr double glbBytesPerTriangle = 24.0;
+void checkAnimationFileFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames);
+
 // Throws DeviceError (exit 5) when animationBytes for the larger of the two
 // shapes' areas, at this voxel size, exceeds what the host allows: "the N
 // frames of the preview (of a compressed morph.glb) need about X MiB but

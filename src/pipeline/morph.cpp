@@ -274,6 +274,8 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
       checkAnimationFits(source, target, frame.voxel, o.frames, FramesHeldBy::Preview);
     else if (o.animation && o.compression != GltfCompression::None)
       checkAnimationFits(source, target, frame.voxel, o.frames, FramesHeldBy::CompressedAnimation);
+    if (to.folder && o.animation && o.compression == GltfCompression::None)
+      checkAnimationFileFits(source, target, frame.voxel, o.frames);
   });
   returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak
   // A shape that encloses nothing is the input's fault, not the morph's.

@@ -502,6 +502,22 @@ TEST_F(MorphCli, SaysWhereTheTargetWentWhenFramesRepeatAndWhatTheGridLost)
   })) << warnings;
 }
 
+// morph.glb past the 4 GiB a .glb holds: refused at once, exit 4, nothing
+// written (it failed only when it got there, minutes later, its frames
+// left behind); --no-animation or --compress are offered.
+TEST_F(MorphCli, AnAnimationPastWhatAGlbHoldsIsRefusedBeforeAnyWork)
+{
+  const fs::path out = folder / "many";
+  const testing::CliResult r =
+      testing::runLbmshape({"morph", sphere, torus, out.string(), "--res", "48", "--frames", "100000"});
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  const auto lines = testing::messageLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_NE(lines[0].find("past the 4 GiB a .glb holds; about "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("--no-animation"), std::string::npos) << lines[0];
+  EXPECT_FALSE(fs::exists(out)) << "nothing written";
+}
+
 // A shape less than a voxel across on the grid the two share is named with
 // its size and the other's, and --align fit offered, before any distance:
 // "it encloses no volume ... an open sheet has no inside" sent the user

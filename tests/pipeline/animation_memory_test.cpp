@@ -7,9 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include "lbmshape/core/error.hpp"
 #include "lbmshape/mesh/mesh_geometry.hpp"
 #include "lbmshape/pipeline/animation_memory.hpp"
 #include "support/implicit_fields.hpp"
+#include "support/test_meshes.hpp"
 #include "lbmshape/surface/marching_cubes.hpp"
 
 namespace lbmshape {
@@ -46,6 +48,27 @@ TEST(AnimationMemory, GrowsWithFramesAndArea)
   EXPECT_DOUBLE_EQ(animationBytes(2000.0, 10), 2.0 * animationBytes(1000.0, 10));
   EXPECT_GT(animationBytes(1000.0, 1), 1000.0 * trianglesPerVoxelArea * animationBytesPerTriangle)
       << "with a margin for the shapes in between";
+}
+
+// A plain morph.glb past 4 GiB is refused before any work, with a frame
+// count that fits; one that fits is not. A sphere of radius 1 at a voxel of
+// 0.05 is 5,027 voxels^2 of surface: about 15,000 triangles, 362 KB a frame.
+TEST(AnimationMemory, AFileGlbCannotHoldIsRefusedUpFront)
+{
+  const TriangleMesh sphere = testing::icosphere(4, 1.0);
+  EXPECT_NO_THROW(checkAnimationFileFits(sphere, sphere, 0.05, 48));
+  EXPECT_NO_THROW(checkAnimationFileFits(sphere, sphere, 0.05, 9000)) << "3.2 GB: it may fit";
+  try {
+    checkAnimationFileFits(sphere, sphere, 0.05, 100000);
+    FAIL() << "36 GB in a .glb";
+  } catch (const OutputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("past the 4 GiB a .glb holds"), std::string::npos) << message;
+    const size_t at = message.find("about ", message.find("holds")) + 6;
+    const int fit = std::stoi(message.substr(at));
+    EXPECT_GT(fit, 8000) << message;
+    EXPECT_LT(fit, 12000) << message;
+  }
 }
 
 }  // namespace

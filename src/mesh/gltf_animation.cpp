@@ -99,7 +99,7 @@ void GltfAnimation::add(const TriangleMesh& frame)
   requireWritable(frame, path_, name, EmptyMesh::Allowed, CoordinatePrecision::SingleAboutAnOrigin);
   GltfBuilder& builder = model_->builder;
   // At rest (no animation playing) only frame 0 is shown.
-  const int node = builder.addNode(builder.addMesh(frame, name), name,
+  const int node = builder.addNode(builder.addMesh(frame, name, true), name,
                                    i == 0 ? std::vector<double>{} : std::vector<double>{0, 0, 0});
   const ScaleKeys keys = scaleKeys(i, frameCount_, fps_);
   tinygltf::AnimationSampler sampler;

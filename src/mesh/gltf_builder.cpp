@@ -210,13 +210,13 @@ int GltfBuilder::addFloatAccessor(const std::vector<float>& values, int type, bo
   return addAccessor(accessor);
 }
 
-int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name)
+int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name, bool aboutItsCentre)
 {
   if (mesh.triangles.empty()) return -1;
   if (compression_ == GltfCompression::Meshopt) return addCompressedMesh(mesh, name);
-  // Far from the origin for its size, about its centre, which its node's
-  // translation gives back (single_precision.hpp).
-  const glm::dvec3 origin = singlePrecisionOrigin(mesh);
+  // Far from the origin for its size (or where asked), about its centre,
+  // which its node's translation gives back (single_precision.hpp).
+  const glm::dvec3 origin = aboutItsCentre ? bounds(mesh).centre() : singlePrecisionOrigin(mesh);
   std::vector<float> positions;
   positions.reserve(3 * mesh.positions.size());
   for (const auto& p : mesh.positions) {

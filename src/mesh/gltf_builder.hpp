@@ -30,7 +30,11 @@ public:
   // usable, else area-weighted ones), uint32 indices. Returns its index, or
   // -1 for a mesh without triangles: glTF has no empty meshes (nor empty
   // accessors), so nothing is added and the node stays without a mesh.
-  int addMesh(const TriangleMesh& mesh, const std::string& name);
+  // `aboutItsCentre` stores every mesh about its centre, near the origin
+  // too: an animation's hidden frames (scale 0) then shrink to a point
+  // within themselves, not to the origin, which a viewer framing the scene
+  // took in (a morph 10 units from the origin was framed from 0 to 10.5).
+  int addMesh(const TriangleMesh& mesh, const std::string& name, bool aboutItsCentre = false);
   // A node showing `mesh` (none if -1), made a root of the (single) scene;
   // returns its index. A mesh stored about its centre (single_precision.hpp)
   // or quantized gets that centre (the quantization's offset) as the node's

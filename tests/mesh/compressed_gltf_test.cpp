@@ -175,6 +175,35 @@ TEST(CompressedGltf, AnAnimationKeepsItsNodesAndDecodesEveryFrame)
   expectSameMesh(frames[2], decodeMesh(glb, roots[2]), 4.0 / 65535.0);
 }
 
+// A plain animation too stores each frame about its own centre (its
+// node's translation): a hidden frame (scale 0) shrinks to a point within
+// itself, not to the origin, which viewers framing the scene took in (a
+// morph 10 units out was framed from 0 to 10.5). Shown, a frame is where it
+// was.
+TEST(PlainGltfAnimation, HiddenFramesShrinkWithinThemselves)
+{
+  testing::ScratchFolder folder;
+  const glm::dvec3 far(10.0, 0.0, 0.0);
+  std::vector<TriangleMesh> frames = {testing::icosphere(2, 1.0, far), testing::icosphere(2, 1.2, far)};
+  writeGltfAnimation(frames, 24.0, folder / "morph.glb");
+  const auto validation = testing::validateGltf(folder / "morph.glb");
+  EXPECT_TRUE(validation.passed()) << validation;
+  const meshio::GlbContent glb = meshio::readGlb(folder / "morph.glb");
+  const nlohmann::json& roots = glb.json["scenes"][0]["nodes"];
+  ASSERT_EQ(roots.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    const nlohmann::json& node = glb.json["nodes"][roots[k].get<int>()];
+    ASSERT_TRUE(node.contains("translation")) << k;
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(node["translation"][a].get<double>(), far[a], 1e-9) << k;
+    const nlohmann::json& position =
+        glb.json["accessors"]
+                [glb.json["meshes"][node["mesh"].get<int>()]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+    EXPECT_NEAR(position["min"][0].get<double>(), -position["max"][0].get<double>(), 1e-6) << "about its centre";
+  }
+  const TriangleMesh back = readMesh(folder / "morph.glb");  // frame 0, the one shown at rest
+  EXPECT_NEAR(bounds(back).centre().x, far.x, 1e-6);
+}
+
 TEST(CompressedGltf, AFileOfNoSurfaceIsThePlainOne)
 {
   testing::ScratchFolder folder;

@@ -106,7 +106,7 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
       "Run the lattice on every cell of the grid, as the paper does, instead of the narrow band around the surface");
   cmd->add_option(
          "--color", a->colour,
-         "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf or .obj)")
+         "Vertex colours of the result: none, or curvature (mean curvature, blue-grey-red; .glb, .gltf, .obj or .ply)")
       ->check(CLI::IsMember({"none", "curvature"}))
       ->capture_default_str();
   cmd->add_flag_function(

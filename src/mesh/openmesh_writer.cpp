@@ -23,6 +23,8 @@ void writeWithOpenMesh(const TriangleMesh& mesh, MeshFormat format, const Atomic
   if (format == MeshFormat::Ply) {
     options += OpenMesh::IO::Options::LSB;
     options += OpenMesh::IO::Options::VertexNormal;
+    // A coloured mesh (a scan, --color curvature) keeps its colours.
+    if (mesh.colours.size() == mesh.positions.size()) options += OpenMesh::IO::Options::VertexColor;
     if (mesh.normals.size() == mesh.positions.size()) {
       normals = mesh.normals;
     } else {

@@ -38,13 +38,33 @@ public:
   OpenMesh::Vec3d normald(OpenMesh::VertexHandle v) const override { return OpenMesh::Vec3d(normal(v)); }
   bool is_normal_double() const override { return false; }
 
-  // Nothing else but positions and faces is written.
-  OpenMesh::Vec3uc color(OpenMesh::VertexHandle) const override { return {0, 0, 0}; }
-  OpenMesh::Vec4uc colorA(OpenMesh::VertexHandle) const override { return {0, 0, 0, 255}; }
-  OpenMesh::Vec3ui colori(OpenMesh::VertexHandle) const override { return {0, 0, 0}; }
-  OpenMesh::Vec4ui colorAi(OpenMesh::VertexHandle) const override { return {0, 0, 0, 255}; }
-  OpenMesh::Vec3f colorf(OpenMesh::VertexHandle) const override { return {0.f, 0.f, 0.f}; }
-  OpenMesh::Vec4f colorAf(OpenMesh::VertexHandle) const override { return {0.f, 0.f, 0.f, 1.f}; }
+  // The mesh's vertex colours (sRGB, 0..1), where it has one a vertex:
+  // PLY's red, green and blue bytes, as scanners write them.
+  bool has_vertex_colors() const override { return mesh_.colours.size() == mesh_.positions.size(); }
+  OpenMesh::Vec3uc color(OpenMesh::VertexHandle v) const override;
+  OpenMesh::Vec4uc colorA(OpenMesh::VertexHandle v) const override
+  {
+    const OpenMesh::Vec3uc c = color(v);
+    return {c[0], c[1], c[2], 255};
+  }
+  OpenMesh::Vec3ui colori(OpenMesh::VertexHandle v) const override
+  {
+    const OpenMesh::Vec3uc c = color(v);
+    return {c[0], c[1], c[2]};
+  }
+  OpenMesh::Vec4ui colorAi(OpenMesh::VertexHandle v) const override
+  {
+    const OpenMesh::Vec3uc c = color(v);
+    return {c[0], c[1], c[2], 255};
+  }
+  OpenMesh::Vec3f colorf(OpenMesh::VertexHandle v) const override;
+  OpenMesh::Vec4f colorAf(OpenMesh::VertexHandle v) const override
+  {
+    const OpenMesh::Vec3f c = colorf(v);
+    return {c[0], c[1], c[2], 1.f};
+  }
+
+  // Nothing else but positions, normals, colours and faces is written.
   OpenMesh::Vec2f texcoord(OpenMesh::VertexHandle) const override { return {0.f, 0.f}; }
   OpenMesh::Vec2f texcoord(OpenMesh::HalfedgeHandle) const override { return {0.f, 0.f}; }
   OpenMesh::Attributes::StatusInfo status(OpenMesh::VertexHandle) const override { return {}; }

@@ -487,9 +487,9 @@ void checkDenoiseOptions(const DenoiseOptions& o)
 void requireColourFormat(const std::filesystem::path& output, const std::string& what)
 {
   const auto format = meshFormatOf(output);
-  if (format != MeshFormat::Glb && format != MeshFormat::Gltf && format != MeshFormat::Obj)
+  if (format != MeshFormat::Glb && format != MeshFormat::Gltf && format != MeshFormat::Obj && format != MeshFormat::Ply)
     throw UsageError(nameOf(Parameter::ColourByCurvature) +
-                     " writes vertex colours into .glb, .gltf or .obj files, not " + what);
+                     " writes vertex colours into .glb, .gltf, .obj or .ply files, not " + what);
 }
 
 double colourByCurvature(TriangleMesh& mesh)

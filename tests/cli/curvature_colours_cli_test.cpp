@@ -77,7 +77,7 @@ TEST(CurvatureColours, FormatsWithoutVertexColoursAreRefusedBeforeAnyWork)
   const auto before = folder.entries();
   const std::string in = (folder / "in.obj").string();
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"denoise", in, (folder / "out.ply").string(), "--color", "curvature"},
+       {std::vector<std::string>{"denoise", in, (folder / "out.stl").string(), "--color", "curvature"},
         std::vector<std::string>{"morph", in, in, (folder / "frames").string(), "--format", "stl", "--color",
                                  "curvature"},
         std::vector<std::string>{"denoise", in, (folder / "out.glb").string(), "--color", "rainbow"}}) {

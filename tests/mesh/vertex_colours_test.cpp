@@ -149,7 +149,8 @@ namespace lbmshape {
 namespace {
 
 // The colours lbmshape writes come back as they went in: glTF COLOR_0
-// (float, and normalized bytes when compressed) and OBJ.
+// (float, and normalized bytes when compressed), OBJ, and PLY's red,
+// green and blue bytes (they were dropped).
 TEST(VertexColours, WrittenColoursReadBack)
 {
   testing::ScratchFolder folder;
@@ -160,7 +161,8 @@ TEST(VertexColours, WrittenColoursReadBack)
   mesh.colours = {{1, 0, 0}, {0, 0.5f, 0}, {0.2f, 0.4f, 0.8f}, {1, 1, 1}};
   for (const auto& [name, compression, tolerance] :
        {std::tuple{"m.glb", GltfCompression::None, 1e-5f}, std::tuple{"m.gltf", GltfCompression::None, 1e-5f},
-        std::tuple{"m.obj", GltfCompression::None, 1e-6f}, std::tuple{"c.glb", GltfCompression::Meshopt, 0.03f}}) {
+        std::tuple{"m.obj", GltfCompression::None, 1e-6f}, std::tuple{"c.glb", GltfCompression::Meshopt, 0.03f},
+        std::tuple{"m.ply", GltfCompression::None, 0.51f / 255.f}}) {  // half a byte
     writeMesh(mesh, folder / name, EmptyMesh::Refused, compression);
     const TriangleMesh read = readMesh(folder / name);
     ASSERT_EQ(read.colours.size(), 4u) << name;

@@ -113,6 +113,11 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
     visited[size_t(index)] = true;
     const tinygltf::Node& node = model.nodes[size_t(index)];
     const glm::dmat4 world = parentWorld * localTransform(node, size_t(index), source);
+    // Scaled to nothing (an animation's hidden frames, as lbmshape's own
+    // morph.glb keeps all but the first): not shown, with all below it.
+    // Read, they were each frame's triangles collapsed to a point, dropped
+    // with a warning of thousands of degenerate triangles.
+    if (glm::dmat3(world) == glm::dmat3(0.0)) continue;
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size())
         source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) +

@@ -23,7 +23,8 @@ struct GltfInstance {
 
 // The meshes of the scene to show (the default scene, else scene 0, else
 // every node without a parent), each with its node's world transform, in
-// depth-first order. Throws InputError for an index out of range, a node
+// depth-first order; a node scaled to nothing (a hidden frame) is left out
+// with everything below it. Throws InputError for an index out of range, a node
 // that is its own ancestor, a node with two parents, or a scene that lists
 // a node that is not a root.
 std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const MeshSource& source);

@@ -1,6 +1,7 @@
 #include "lbmshape/pipeline/render_job.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cstdlib>
 
 #include "lbmshape/core/atomic_file.hpp"
@@ -216,6 +217,22 @@ std::vector<fs::path> meshesToRender(const std::vector<fs::path>& paths, int per
   return files;
 }
 
+// Each file's name, and where two shown files share one (two morphs'
+// folders: frame_0000.glb each), its folder's name before it, so that the
+// labels tell them apart.
+std::vector<std::string> panelLabels(const std::vector<fs::path>& files)
+{
+  std::map<std::string, int> uses;
+  for (const fs::path& f : files) ++uses[f.filename().string()];
+  std::vector<std::string> labels;
+  for (const fs::path& f : files) {
+    const std::string name = f.filename().string();
+    const std::string folder = f.parent_path().filename().string();
+    labels.push_back(uses[name] > 1 && !folder.empty() ? folder + "/" + name : name);
+  }
+  return labels;
+}
+
 nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& png, const RenderOptions& o,
                            const ComputeDevice& device)
 {
@@ -237,9 +254,10 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   });
   std::vector<ShownMesh> shown;
   nlohmann::json panels = nlohmann::json::array();
+  const std::vector<std::string> labels = panelLabels(files);
   for (size_t i = 0; i < files.size(); ++i) {
-    shown.push_back({&meshes[i], files[i].filename().string()});
-    panels.push_back({{"path", files[i].string()}, {"triangles", meshes[i].triangleCount()}});
+    shown.push_back({&meshes[i], labels[i]});
+    panels.push_back({{"path", files[i].string()}, {"label", labels[i]}, {"triangles", meshes[i].triangleCount()}});
   }
   nlohmann::json figures;
   const render::Image image = clock.time("draw", [&] { return drawMeshes(shown, o, device, &figures); });

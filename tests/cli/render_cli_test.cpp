@@ -102,6 +102,20 @@ TEST(RenderCli, AFolderOfFramesShowsEvenlyChosenFramesFirstAndLastIncluded)
   std::vector<std::string> names;
   for (const auto& m : j["meshes"]) names.push_back(fs::path(m["path"].get<std::string>()).filename().string());
   EXPECT_EQ(names, (std::vector<std::string>{"frame_0000.obj", "frame_0003.obj", "frame_0006.obj", "frame_0009.obj"}));
+  EXPECT_EQ(j["meshes"][0]["label"], "frame_0000.obj") << "one folder: the file's name";
+
+  // Two morphs' folders side by side: each label names its folder too.
+  fs::create_directory(folder / "other");
+  for (int k : {0, 9}) writeMesh(testing::icosphere(1), folder / "other" / ("frame_000" + std::to_string(k) + ".obj"));
+  const testing::CliResult two =
+      testing::runLbmshape({"render", (folder / "frames").string(), (folder / "other").string(),
+                            (folder / "two.png").string(), "--count", "2", "--labels", "--json"});
+  ASSERT_EQ(two.exitCode, 0) << two.err;
+  std::vector<std::string> labels;
+  const nlohmann::json twoReport = nlohmann::json::parse(two.out);
+  for (const auto& m : twoReport["meshes"]) labels.push_back(m["label"]);
+  EXPECT_EQ(labels, (std::vector<std::string>{"frames/frame_0000.obj", "frames/frame_0009.obj", "other/frame_0000.obj",
+                                              "other/frame_0009.obj"}));
 }
 
 // A morph's frame with no triangles (the shape passing through nothing) is

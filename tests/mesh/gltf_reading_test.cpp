@@ -75,6 +75,22 @@ TEST_P(GltfReading, MirroringNodesKeepFacesOutward)
   EXPECT_NEAR(meshio::signedVolume(readBack(gltf)), 1.0 / 6.0, 1e-9);
 }
 
+// A node scaled to nothing, and what hangs from it, is hidden (a morph.glb's
+// frames but the first): left out, not read as a point of degenerate
+// triangles (render warned of thousands).
+TEST_P(GltfReading, NodesScaledToNothingAreHidden)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
+  gltf.json["nodes"] = {{{"mesh", mesh}},
+                        {{"mesh", mesh}, {"translation", {5, 0, 0}}, {"scale", {0, 0, 0}}, {"children", {2}}},
+                        {{"mesh", mesh}, {"translation", {0, 5, 0}}}};
+  gltf.json["scenes"] = {{{"nodes", {0, 1}}}};
+  const TriangleMesh read = readBack(gltf);
+  EXPECT_EQ(read.triangleCount(), 4u) << "the shown node alone";
+  expectNear(maximum(read), {1, 1, 1});
+}
+
 TEST_P(GltfReading, OnlyTheDefaultSceneIsRead)
 {
   meshio::HandMadeGltf gltf;

@@ -46,16 +46,17 @@ double MorphSchedule::evenStepsScale(double initialError, const MorphOptions& o,
   const int intervals = o.frames - 1;
   if (steps == 0 || intervals <= 0) return 1.0;
   // The whole number of steps a frame nearest the morph's own: at least
-  // one, and the factor within 2/3 to 3/2 (a Cs of 1 becomes at most 1.5,
-  // where the second-order source stays monotone up to 2).
-  const int perFrame = std::max(1, int(std::lround(double(steps) / intervals)));
-  const int needed = perFrame * intervals;
-  if (needed == steps) return 1.0;
+  // one, and where the morph has as many steps as intervals or more, the
+  // factor within 3/4 to 3/2 (a Cs of 1 becomes at most 1.5, where the
+  // second-order source stays monotone up to 2).
+  const long perFrame = std::max(1L, std::lround(double(steps) / intervals));
+  const long needed = perFrame * intervals;
+  if (needed == steps || needed > parameter_bounds::maxSteps) return 1.0;
   // ln(1/rho(c)) = 2 artanh(c/2): the Cs whose steps to arrive are `needed`
   // (a hair faster, so that rounding does not make them one more).
   const double shrinkPerStep = std::log(initialError / o.tolerance) / needed * (1.0 + 1e-9);
   double cs = 2.0 * std::tanh(shrinkPerStep / 2.0);
-  while (stepsToArrive(initialError, cs, o.tolerance) < needed) cs *= 0.999;
+  for (int tries = 0; tries < 100 && stepsToArrive(initialError, cs, o.tolerance) < needed; ++tries) cs *= 0.999;
   return cs / o.cs;
 }
 

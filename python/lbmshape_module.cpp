@@ -252,16 +252,16 @@ private:
 // not finished, a thread of the program's) aborted the process half the
 // time. Registered with atexit, which runs while those threads may still
 // take the GIL: stops the calls under way, as Ctrl-C does, and waits for
-// them to end (at most a few seconds), without the GIL.
+// them to end (at most a few seconds), without the GIL; then leaves every
+// thread's device to the process's end (ThreadsDevice).
 void stopCallsAtExit()
 {
+  py::gil_scoped_release released;
   if (CallUnderWay::count() > 0) {
     interrupt::requestStop();
-    py::gil_scoped_release released;
     for (int waited = 0; waited < 500 && CallUnderWay::count() > 0; ++waited)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  py::gil_scoped_release released;
   ThreadsDevice::keepFromNowOn();
 }
 

@@ -45,6 +45,12 @@ int syncToDisk(const std::filesystem::path& path, int flags)
   return error;
 }
 
+// The folder a file lies in ("." for a bare name).
+std::filesystem::path folderOf(const std::filesystem::path& file)
+{
+  return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+}
+
 // The file `path` names once its symbolic links are followed (a link that
 // points nowhere names the file it would point to; a relative link is read
 // from its own folder). A loop of links is left to the writing to report.
@@ -68,8 +74,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   std::error_code ec;
   if (std::filesystem::is_directory(target_, ec)) throw OutputError(failure(target_, "it is a folder"));
   destination_ = followedLinks(target_);
-  const std::filesystem::path folder =
-      destination_.has_parent_path() ? destination_.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path folder = folderOf(destination_);
   if (!std::filesystem::is_directory(folder, ec))
     throw OutputError(failure(target_, std::filesystem::exists(folder, ec)
                                            ? folder.string() + " is not a folder"
@@ -129,8 +134,7 @@ void AtomicFile::commit()
   // The rename itself reaches the disk with the folder's own metadata; if
   // that cannot be forced the file is still complete, only perhaps not yet
   // durable, so this is not an error.
-  syncToDisk(destination_.has_parent_path() ? destination_.parent_path() : std::filesystem::path("."),
-             O_RDONLY | O_DIRECTORY);
+  syncToDisk(folderOf(destination_), O_RDONLY | O_DIRECTORY);
 }
 
 }  // namespace lbmshape

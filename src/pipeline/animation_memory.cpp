@@ -24,14 +24,14 @@ double animationBytes(double areaInVoxels, int frames)
 
 void checkAnimationFileFits(const TriangleMesh& source, const TriangleMesh& target, double voxel, int frames)
 {
+  const double sourceArea = surfaceArea(source) / (voxel * voxel), targetArea = surfaceArea(target) / (voxel * voxel);
   // The smaller surface, and a fifth off: refused only where it surely
   // would not fit (frames in between may be smaller, or empty).
-  const double area = std::min(surfaceArea(source), surfaceArea(target)) / (voxel * voxel);
-  const double perFrame = 0.8 * area * trianglesPerVoxelArea * glbBytesPerTriangle;
+  const double perFrame = 0.8 * std::min(sourceArea, targetArea) * trianglesPerVoxelArea * glbBytesPerTriangle;
   const double limit = double(UINT32_MAX);
   if (perFrame * frames <= limit) return;
   // The frames that surely fit: the larger surface, in full.
-  const double largest = std::max(surfaceArea(source), surfaceArea(target)) / (voxel * voxel);
+  const double largest = std::max(sourceArea, targetArea);
   const int fit = int(std::floor(limit / (largest * trianglesPerVoxelArea * glbBytesPerTriangle)));
   throw OutputError("morph.glb's " + std::to_string(frames) + " frames would take about " +
                     mebibytes(uint64_t(perFrame * frames)) + ", past the 4 GiB a .glb holds; about " +

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <iomanip>
 #include <memory>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
 
+#include "lbmshape/core/concurrent_union_find.hpp"
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/parameter_names.hpp"
 #include "lbmshape/sdf/triangle_bvh.hpp"
@@ -15,40 +15,20 @@
 namespace lbmshape {
 namespace {
 
-// Sets joined by union, with path halving.
-class Groups {
-public:
-  explicit Groups(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), size_t(0)); }
-  size_t root(size_t i)
-  {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(size_t a, size_t b) { parent_[root(a)] = root(b); }
-  size_t count()
-  {
-    size_t n = 0;
-    for (size_t i = 0; i < parent_.size(); ++i) n += root(i) == i;
-    return n;
-  }
-
-private:
-  std::vector<size_t> parent_;
-};
-
 // The mesh's components (triangles joined through shared vertices), each as
 // a soup of its own triangles: enough for its bounds, volume and inside.
 std::vector<TriangleMesh> componentsOf(const TriangleMesh& mesh)
 {
-  Groups vertices(mesh.positions.size());
+  ConcurrentUnionFind vertices(mesh.positions.size());
   for (const auto& t : mesh.triangles) {
-    vertices.join(t[1], t[0]);
-    vertices.join(t[2], t[0]);
+    vertices.unite(t[0], t[1]);
+    vertices.unite(t[0], t[2]);
   }
-  std::unordered_map<size_t, size_t> componentOfRoot;
+  const std::vector<uint32_t> root = std::move(vertices).roots();
+  std::unordered_map<uint32_t, size_t> componentOfRoot;
   std::vector<TriangleMesh> components;
   for (const auto& t : mesh.triangles) {
-    const auto [it, added] = componentOfRoot.try_emplace(vertices.root(t[0]), components.size());
+    const auto [it, added] = componentOfRoot.try_emplace(root[t[0]], components.size());
     if (added) components.emplace_back();
     TriangleMesh& c = components[it->second];
     const auto first = uint32_t(c.positions.size());
@@ -75,23 +55,27 @@ size_t solidParts(const TriangleMesh& mesh)
     box.push_back(bounds(c));
     outward.push_back(areaAndSignedVolume(c).signedVolume > 0.0);
   }
-  Groups parts(components.size());
+  ConcurrentUnionFind parts(components.size());
   std::vector<std::unique_ptr<TriangleBvh>> inside(components.size());
   for (size_t b = 0; b < components.size(); ++b) {
     if (!outward[b]) continue;  // a cavity is a part of its own
     for (size_t a = 0; a < components.size(); ++a) {
-      if (a == b || !outward[a] || !overlap(box[a], box[b]) || parts.root(a) == parts.root(b)) continue;
+      if (a == b || !outward[a] || !overlap(box[a], box[b]) || parts.find(uint32_t(a)) == parts.find(uint32_t(b)))
+        continue;
       if (!inside[b]) inside[b] = std::make_unique<TriangleBvh>(components[b]);
       // Some of a's corners inside b: the two solids share a part of space.
       const size_t stride = std::max<size_t>(1, components[a].positions.size() / 4096);
       for (size_t i = 0; i < components[a].positions.size(); i += stride)
         if (inside[b]->windingNumber(components[a].positions[i]) > 0.5) {
-          parts.join(a, b);
+          parts.unite(uint32_t(a), uint32_t(b));
           break;
         }
     }
   }
-  return parts.count();
+  const std::vector<uint32_t> partOf = std::move(parts).roots();
+  size_t count = 0;  // a set's root is its lowest member
+  for (size_t i = 0; i < partOf.size(); ++i) count += partOf[i] == i;
+  return count;
 }
 
 void warnIfThePartsChanged(const TriangleMesh& wantedMesh, const MeshTopology& wanted, const std::string& wantedName,

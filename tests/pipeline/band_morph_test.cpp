@@ -9,6 +9,7 @@
 #include "lbmshape/mesh/mesh_reader.hpp"
 #include "lbmshape/mesh/mesh_writer.hpp"
 #include "lbmshape/pipeline/morph.hpp"
+#include "support/morph_options.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
@@ -21,11 +22,7 @@ TEST(BandMorph, GivesTheGridsFrames)
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(4, 1.0), folder / "sphere.obj");
   writeMesh(testing::torusMesh(1.0, 0.4, 96, 48), folder / "torus.obj");
-  MorphOptions o;
-  o.grid.resolution = 64;
-  o.align = Alignment::None;
-  o.format = "obj";
-  o.frames = 8;
+  MorphOptions o = testing::objFramesMorph(64, 8);
   o.steps = 60;
   o.band = true;
   const nlohmann::json band = morphFiles(folder / "sphere.obj", folder / "torus.obj", folder / "band", o, device);
@@ -58,12 +55,7 @@ TEST(BandMorph, ShapesApartMorphAsOnTheGrid)
   testing::ScratchFolder folder;
   writeMesh(testing::icosphere(3, 1.0), folder / "here.obj");
   writeMesh(testing::icosphere(3, 1.0, {4.0, 0.0, 0.0}), folder / "there.obj");
-  MorphOptions o;
-  o.grid.resolution = 64;
-  o.align = Alignment::None;
-  o.format = "obj";
-  o.frames = 6;
-  o.animation = false;
+  MorphOptions o = testing::objFramesMorph(64, 6);
   o.band = true;
   const nlohmann::json band = morphFiles(folder / "here.obj", folder / "there.obj", folder / "band", o, device);
   o.band = false;

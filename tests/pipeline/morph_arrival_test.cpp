@@ -14,6 +14,7 @@
 #include "lbmshape/mesh/mesh_writer.hpp"
 #include "lbmshape/pipeline/morph.hpp"
 #include "lbmshape/pipeline/morph_schedule.hpp"
+#include "support/morph_options.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
@@ -152,13 +153,8 @@ protected:
   // The tests' morph: on a 48-cell grid, unaligned, frames as OBJ files, no animation.
   static MorphOptions options(int frames, bool band = false)
   {
-    MorphOptions o;
-    o.grid.resolution = 48;
-    o.align = Alignment::None;
-    o.format = "obj";
-    o.frames = frames;
+    MorphOptions o = testing::objFramesMorph(48, frames);
     o.band = band;
-    o.animation = false;
     return o;
   }
 
@@ -187,12 +183,7 @@ TEST_F(MorphArrival, EndsOnTheTargetsZeroLevelThinPartsIncluded)
   }
 
   // The paper's scheme, for as many steps, stays further off.
-  MorphOptions o;
-  o.grid.resolution = 48;
-  o.align = Alignment::None;
-  o.format = "obj";
-  o.frames = 8;
-  o.animation = false;
+  MorphOptions o = testing::objFramesMorph(48, 8);
   o.steps = morph("ring.obj", "again", 8)["steps"].get<int>();
   const nlohmann::json paper = morphFiles(folder / "sphere.obj", folder / "ring.obj", folder / "paper", o, device);
   EXPECT_GT(paper["final"]["mean_distance_to_target_level_voxels"].get<double>(), 0.1);

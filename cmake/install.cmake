@@ -32,13 +32,32 @@ install(TARGETS lbmshape_shared EXPORT lbmshapeTargets
 install(FILES ${PROJECT_SOURCE_DIR}/include/lbmshape/lbmshape.hpp ${PROJECT_BINARY_DIR}/include/lbmshape/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape)
 # The API's headers include the library's own as "lbmshape/<folder>/...", by
-# their path under src/, and the lattice's few constants shared with the
-# shaders as "lbmshape/shaders/..." (shaders/*.h): only include/ goes on a
-# program's include path.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape
-        FILES_MATCHING PATTERN "*.hpp")
-file(GLOB shader_headers ${PROJECT_SOURCE_DIR}/shaders/*.h)
-install(FILES ${shader_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape/shaders)
+# their path under src/ (or shaders/ for the constants shared with the
+# shaders): only include/ goes on a program's include path. Only the headers
+# lbmshape.hpp reaches are installed, which need nothing but the standard
+# library, GLM and nlohmann-json (the package's declared dependencies); the
+# other internal headers (Vulkan-Hpp's, tinygltf's, OpenMesh's, OpenMP's
+# users) stay in the source tree. tests/install/check_install.cmake checks
+# that this list is exactly what lbmshape.hpp includes, and what they in
+# turn include.
+set(api_headers
+    band/band_field.hpp band/brick_set.hpp
+    core/atomic_file.hpp core/error.hpp core/extent.hpp core/interrupt.hpp core/log.hpp core/parameter_names.hpp
+    core/progress.hpp core/stopwatch.hpp core/volume.hpp
+    lbm/adaptive_gamma.hpp lbm/band_solver.hpp lbm/lattice_solver.hpp lbm/stepping_solver.hpp
+    library_version.hpp
+    mesh/gltf_compression.hpp mesh/icosphere.hpp mesh/mesh_format.hpp mesh/mesh_noise.hpp mesh/mesh_reader.hpp
+    mesh/mesh_source.hpp mesh/mesh_writer.hpp mesh/triangle_mesh.hpp mesh/writable_mesh.hpp
+    pipeline/compute_device.hpp pipeline/denoise.hpp pipeline/field_noise.hpp pipeline/frame_writer.hpp
+    pipeline/morph.hpp
+    sdf/band_signed_distance.hpp sdf/grid_frame.hpp sdf/signed_distance.hpp sdf/triangle_bvh.hpp
+    surface/surface_pieces.hpp surface/triangle_relaxation.hpp)
+foreach(header IN LISTS api_headers)
+  get_filename_component(folder ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape/${folder})
+endforeach()
+install(FILES ${PROJECT_SOURCE_DIR}/shaders/adaptive_gamma_bounds.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lbmshape/shaders)
 # The licence travels with the copies (MIT).
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lbmshape)
 

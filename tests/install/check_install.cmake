@@ -18,13 +18,50 @@ endfunction()
 
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed bin/lbmshape lib/liblbmshape.so include/lbmshape/lbmshape.hpp include/lbmshape/version.hpp
-                  include/lbmshape/core/error.hpp include/lbmshape/shaders/band_interface.h share/doc/lbmshape/LICENSE
+                  include/lbmshape/core/error.hpp include/lbmshape/shaders/adaptive_gamma_bounds.h share/doc/lbmshape/LICENSE
                   lib/cmake/lbmshape/lbmshapeConfig.cmake lib/pkgconfig/lbmshape.pc
                   share/bash-completion/completions/lbmshape ${MAN_PAGE})
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "cmake --install left out ${installed}")
   endif()
 endforeach()
+
+# The installed headers are exactly those lbmshape.hpp reaches, and these
+# reach nothing but the C and C++ standard libraries, GLM and nlohmann-json,
+# the dependencies lbmshapeConfig.cmake and lbmshape.pc declare: no
+# Vulkan-Hpp, tinygltf, OpenMesh or OpenMP for a program to find by chance.
+file(WRITE ${WORK_DIR}/api.cpp "#include <lbmshape/lbmshape.hpp>\n")
+run("listing what lbmshape.hpp includes" c++ -std=c++20 -M -I${prefix}/include ${WORK_DIR}/api.cpp)
+string(REGEX REPLACE "[ \t\r\n\\]+" ";" reached "${output}")
+set(reached_headers)
+set(undeclared)
+foreach(file IN LISTS reached)
+  if(file STREQUAL "" OR file MATCHES ":$" OR file STREQUAL "${WORK_DIR}/api.cpp")
+    continue()
+  endif()
+  if(file MATCHES "^${prefix}/include/lbmshape/(.*)$")
+    list(APPEND reached_headers ${CMAKE_MATCH_1})
+  elseif(file MATCHES "/(omp|tiny_gltf|stb_[^/]*|png|zlib)\\.h$")  # beside the C library's own
+    list(APPEND undeclared ${file})
+  elseif(NOT file MATCHES "/(glm|nlohmann)/"
+         AND NOT file MATCHES "^/usr/(include/(c\\+\\+|[a-z0-9_]+-linux-gnu[a-z0-9_]*|linux|asm|asm-generic)/|lib/gcc/)"
+         AND NOT file MATCHES "^/usr/include/[^/]+\\.h$")
+    list(APPEND undeclared ${file})
+  endif()
+endforeach()
+if(undeclared)
+  message(FATAL_ERROR "the installed headers include what the package does not declare:\n${undeclared}")
+endif()
+file(GLOB_RECURSE installed_headers RELATIVE ${prefix}/include/lbmshape ${prefix}/include/lbmshape/*)
+list(SORT reached_headers)
+list(REMOVE_DUPLICATES reached_headers)
+list(SORT installed_headers)
+if(NOT reached_headers STREQUAL installed_headers)
+  message(FATAL_ERROR "installed headers: ${installed_headers}\nlbmshape.hpp reaches: ${reached_headers}\n"
+                      "(the list api_headers in cmake/install.cmake)")
+endif()
+list(LENGTH installed_headers header_count)
+message(STATUS "${header_count} headers installed, all reached from lbmshape.hpp")
 
 run("configuring the example" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/denoise_in_memory -B ${WORK_DIR}/example
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)

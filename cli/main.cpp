@@ -102,6 +102,24 @@ int main(int argc, char** argv)
   // was started by.
   CLI::App app("lbmshape: surface denoising and morphing with a lattice Boltzmann scheme on Vulkan", "lbmshape");
   app.set_version_flag("--version", LBMSHAPE_VERSION);
+  // At the end of --help, and so the man page's EXIT STATUS and ENVIRONMENT
+  // sections (help2man reads these headings); docs/batch.md says more.
+  app.footer(R"(Exit status:
+  0    done
+  2    usage: an unknown command or option, a parameter out of range; found before any work
+  3    input: a mesh or jobs file that cannot be read or used
+  4    output: a file or folder that cannot be written
+  5    device or numerical failure: no usable Vulkan device, a job too big for it or for memory
+  130  interrupted by SIGINT (143 SIGTERM, 129 SIGHUP); only complete files remain
+
+Environment:
+  XDG_CACHE_HOME              the pipeline cache is kept in $XDG_CACHE_HOME/lbmshape (else ~/.cache/lbmshape)
+  LBMSHAPE_NO_PIPELINE_CACHE  1: keep no pipeline cache
+  LBMSHAPE_VALIDATION         1: as --validate
+  LBMSHAPE_PROGRESS_MS        the interval of progress lines in a log file (5000; 0 for every stage)
+  LBMSHAPE_DEVICE_TRACE       1: each device submission's time on stderr
+  OMP_NUM_THREADS             the CPU stages' threads (default: every core)
+)");
   app.require_subcommand(1);
   app.fallthrough();  // common options may follow the command name
 

@@ -23,4 +23,8 @@ trap 'rm -f "$include"' EXIT
 help2man --no-info --no-discard-stderr --version-string="$("$binary" --version)" \
   --name "surface denoising and morphing with a lattice Boltzmann scheme on Vulkan" \
   --include "$include" --output "$out.tmp" "$binary"
+# help2man files the help's "Environment:" under ENVIRONMENT itself, but
+# "Exit status:" as a subsection of OPTIONS: make it the section it is.
+sed -i 's/^\.SS "Exit status:"$/.SH "EXIT STATUS"/' "$out.tmp"
+grep -q '^\.SH "EXIT STATUS"$' "$out.tmp" || { echo "make-man-page.sh: no 'Exit status:' in --help" >&2; exit 1; }
 mv "$out.tmp" "$out"

@@ -2,6 +2,7 @@
 // what is wrong, found before any GPU work (nothing is printed on stdout).
 #include <gtest/gtest.h>
 
+#include "lbmshape/core/error.hpp"
 #include "support/cli_runner.hpp"
 
 namespace lbmshape {
@@ -146,6 +147,24 @@ TEST(CommandLine, HelpAndVersionSucceed)
   auto version = testing::runLbmshape({"--version"});
   EXPECT_EQ(version.exitCode, 0);
   EXPECT_NE(version.out.find(LBMSHAPE_VERSION), std::string::npos);
+}
+
+// --help (and so the man page's EXIT STATUS) lists every exit code the
+// program uses, as core/error.hpp numbers them, and the variables it reads.
+TEST(CommandLine, HelpListsTheExitCodesAndTheEnvironment)
+{
+  const auto help = testing::runLbmshape({"--help"});
+  ASSERT_EQ(help.exitCode, 0);
+  const auto statusAt = help.out.find("Exit status:");
+  ASSERT_NE(statusAt, std::string::npos) << help.out;
+  for (ExitCode code :
+       {ExitCode::Ok, ExitCode::Usage, ExitCode::Input, ExitCode::Output, ExitCode::Device, ExitCode::Interrupted})
+    EXPECT_NE(help.out.find("\n  " + std::to_string(int(code)) + " ", statusAt), std::string::npos)
+        << "exit code " << int(code) << " is not listed";
+  for (const char* variable : {"XDG_CACHE_HOME", "LBMSHAPE_NO_PIPELINE_CACHE", "LBMSHAPE_VALIDATION",
+                               "LBMSHAPE_PROGRESS_MS", "LBMSHAPE_DEVICE_TRACE"})
+    EXPECT_NE(help.out.find(std::string("\n  ") + variable + " ", help.out.find("Environment:")), std::string::npos)
+        << variable;
 }
 
 }  // namespace

@@ -48,6 +48,7 @@
 #include "lbmshape/pipeline/compute_device.hpp"
 #include "lbmshape/pipeline/denoise.hpp"
 #include "lbmshape/pipeline/morph.hpp"
+#include "log_handler.hpp"
 
 namespace py = pybind11;
 
@@ -263,6 +264,7 @@ void stopCallsAtExit()
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   ThreadsDevice::keepFromNowOn();
+  releaseLogHandlerAtExit();
 }
 
 // The device the functions use unless given one: the calling thread's
@@ -595,6 +597,13 @@ def iter_morph(*args, **kwargs):
       py::arg("level"),
       "What the calls print on stderr: 'quiet' (warnings alone), 'normal' (the default: progress and what was "
       "written, as the command prints) or 'verbose' (each stage's time, as lbmshape -v).");
+  m.def("set_log_handler", &setLogHandler, py::arg("handler"),
+        "Send the calls' messages to handler(kind, message) instead of stderr (which a Jupyter notebook does not "
+        "show): kind 'info', 'verbose', 'warning' or 'progress', the message without 'lbmshape: '; called on the "
+        "thread that logs it, after set_log_level's filter. An exception it raises goes to sys.unraisablehook and "
+        "the call goes on. None: stderr again. For the logging module: lbmshape.set_log_handler(lambda kind, "
+        "message: logging.getLogger('lbmshape').log(logging.WARNING if kind == 'warning' else logging.DEBUG if "
+        "kind == 'verbose' else logging.INFO, message))");
   m.def(
       "request_stop", [] { interrupt::requestStop(); },
       "Stop every lbmshape call under way, on any thread, at its next check (within a fraction of a second): "

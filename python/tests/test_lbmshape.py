@@ -220,6 +220,67 @@ class Denoise(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "^level must be 'quiet', 'normal' or 'verbose', not 'loud'$"):
             lbmshape.set_log_level("loud")
 
+    def test_a_log_handler_takes_the_messages_instead_of_stderr(self):
+        v, f = noisy_sphere()
+        said = []
+        stderr_text = []
+
+        def denoise_with_stderr_caught():
+            with tempfile.TemporaryFile() as caught:
+                saved = os.dup(2)
+                os.dup2(caught.fileno(), 2)
+                try:
+                    lbmshape.denoise(v, f, res=24)
+                finally:
+                    os.dup2(saved, 2)
+                    os.close(saved)
+                caught.seek(0)
+                stderr_text.append(caught.read().decode())
+
+        try:
+            lbmshape.set_log_level("verbose")
+            lbmshape.set_log_handler(lambda kind, message: said.append((kind, message)))
+            denoise_with_stderr_caught()
+            lbmshape.set_log_handler(None)
+            count = len(said)
+            denoise_with_stderr_caught()
+        finally:
+            lbmshape.set_log_handler(None)
+            lbmshape.set_log_level("normal")
+        self.assertEqual(stderr_text[0], "")
+        kinds = {kind for kind, _ in said}
+        self.assertTrue(kinds <= {"info", "verbose", "warning", "progress"}, kinds)
+        self.assertIn("verbose", kinds)
+        self.assertTrue(any(message.startswith("sdf") for _, message in said), said)
+        self.assertFalse(any(message.startswith("lbmshape:") for _, message in said), said)
+        # None: stderr again, and the handler hears nothing more.
+        self.assertEqual(len(said), count)
+        self.assertIn("lbmshape: ", stderr_text[1])
+
+    def test_a_log_handler_that_raises_leaves_the_call_going(self):
+        import sys
+        v, f = noisy_sphere()
+        unraisable = []
+        saved_hook = sys.unraisablehook
+        sys.unraisablehook = lambda report: unraisable.append(report.exc_value)
+
+        def refuse(kind, message):
+            raise RuntimeError("no logs here")
+
+        try:
+            lbmshape.set_log_level("verbose")
+            lbmshape.set_log_handler(refuse)
+            v2, f2 = lbmshape.denoise(v, f, res=24)
+        finally:
+            lbmshape.set_log_handler(None)
+            lbmshape.set_log_level("normal")
+            sys.unraisablehook = saved_hook
+        self.assertTrue(closed(f2))
+        self.assertTrue(unraisable)
+        self.assertTrue(all(isinstance(e, RuntimeError) for e in unraisable), unraisable)
+        with self.assertRaisesRegex(TypeError, "^handler must be a function of \\(kind, message\\), or None, not int$"):
+            lbmshape.set_log_handler(3)
+
     def test_triangles_must_be_integers_and_in_range(self):
         v, f = noisy_sphere()
         with self.assertRaisesRegex(lbmshape.UsageError, "^triangles must hold integers .*float64"):
@@ -509,6 +570,9 @@ class Processes(unittest.TestCase):
             "from test_lbmshape import icosphere\n"
             "v, f = icosphere(3)\n"
             "long = dict(frames=400, res=32, steps=8000, cs=0.0005, align='none')\n"
+            "if sys.argv[2] == 'handler':\n"
+            "    said = []\n"
+            "    lbmshape.set_log_handler(lambda kind, message: said.append(message))\n"
             "if sys.argv[1] == 'loop':\n"
             "    g = lbmshape.iter_morph(v, f, v * [1.3, 1, 0.8], f, **long)\n"
             "    next(g)\n"
@@ -517,10 +581,12 @@ class Processes(unittest.TestCase):
             " **long), daemon=True).start()\n"
             "    time.sleep(1)\n"
         ) % os.path.dirname(lbmshape.__file__)
-        for mode in ("loop", "thread", "loop", "thread"):
-            r = subprocess.run([sys.executable, "-c", script, mode], cwd=os.path.dirname(__file__),
+        # The same with a log handler, which a call stopped at exit still
+        # calls from its own threads.
+        for mode, log in (("loop", "stderr"), ("thread", "stderr"), ("loop", "handler"), ("thread", "handler")):
+            r = subprocess.run([sys.executable, "-c", script, mode, log], cwd=os.path.dirname(__file__),
                                capture_output=True, text=True, timeout=120)
-            self.assertEqual(r.returncode, 0, mode + ": " + r.stderr[-400:])
+            self.assertEqual(r.returncode, 0, mode + ", " + log + ": " + r.stderr[-400:])
 
 
 class Files(unittest.TestCase):

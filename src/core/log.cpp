@@ -5,6 +5,7 @@
 #include <memory>
 #include <mutex>
 #include <unistd.h>
+#include <utility>
 
 namespace lbmshape::log {
 namespace {
@@ -66,8 +67,9 @@ Level level() { return currentLevel; }
 
 void setSink(Sink s)
 {
+  std::shared_ptr<const Sink> replaced;  // let go outside the lock: its end may wait (for Python's GIL)
   std::lock_guard lock(sinkMutex);
-  currentSink = s ? std::make_shared<const Sink>(std::move(s)) : nullptr;
+  replaced = std::exchange(currentSink, s ? std::make_shared<const Sink>(std::move(s)) : nullptr);
 }
 
 void info(const std::string& m)

@@ -31,6 +31,7 @@
 #include "lbmshape/pipeline/stage_clock.hpp"
 #include "lbmshape/lbm/band_width.hpp"
 #include "lbmshape/sdf/band_signed_distance.hpp"
+#include "lbmshape/sdf/hole_radius.hpp"
 #include "lbmshape/sdf/enclosed_volume.hpp"
 #include "lbmshape/sdf/signed_distance.hpp"
 #include "lbmshape/surface/band_marching_cubes.hpp"
@@ -419,18 +420,43 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
                          const DenoiseOptions& o, std::optional<double> meshVolume, const SurfaceFinish& finish,
                          const ComputeDevice& device, StageClock& clock)
 {
-  const double halfWidth = bandHalfWidth(o);
+  double halfWidth = bandHalfWidth(o);
   const BandRunKind kind{.paperRule = o.smoothing == Smoothing::Anisotropic};
   SignedDistanceStats distanceStats;
   BandField field = clock.time("sdf", [&](Progress& progress) {
     device.warmUpForTheBand(kind);  // the device opens while the distances are computed
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
-    return signedDistanceBand(mesh, frame,
-                              {.halfWidth = halfWidth,
-                               .progress = &progress,
-                               .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); },
-                               .distancesFrom = [&](const TriangleBvh& tree) { return device.bandDistances(tree); }},
-                              &distanceStats);
+    const auto onTheBand = [&](double width) {
+      return signedDistanceBand(
+          mesh, frame,
+          {.halfWidth = width,
+           .progress = &progress,
+           .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); },
+           .distancesFrom = [&](const TriangleBvh& tree) { return device.bandDistances(tree); }},
+          &distanceStats);
+    };
+    BandField band = onTheBand(halfWidth);
+    // An open input's hole wider than the band: the surface that closes it
+    // would be cut off (sdf/hole_radius.hpp). Widened over the widest hole,
+    // and again while it still leaves (a closing surface that bulges).
+    const double wholeGrid = glm::length(glm::dvec3(frame.extent.nx, frame.extent.ny, frame.extent.nz));
+    while (surfaceLeavesTheBand(band) && halfWidth < wholeGrid) {
+      const double wider = std::max(halfWidthOverHoles(mesh, frame.voxel, halfWidth), 2.0 * halfWidth);
+      try {
+        band = onTheBand(wider);
+      } catch (const DeviceError& e) {
+        // Refused before anything was allocated: the narrower band's
+        // result, open over the hole, with what would close it.
+        log::warning("the result is left open where the surface that closes the input's holes lies more than " +
+                     std::to_string(int(halfWidth)) + " voxels from its triangles: a band " +
+                     std::to_string(int(wider)) + " voxels wide would hold it, but " + e.what());
+        break;
+      }
+      halfWidth = wider;
+      log::verbose("band widened to " + std::to_string(int(halfWidth)) +
+                   " voxels to hold the surface that closes the input's holes");
+    }
+    return band;
   });
   requireEnclosedVolume(field, input);
   returnFreedHeapMemory();  // the distances' work arrays, before the lattice's peak

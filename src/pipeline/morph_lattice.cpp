@@ -1,5 +1,6 @@
 #include "lbmshape/pipeline/morph_lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,8 +12,11 @@
 #include "lbmshape/pipeline/morph_front.hpp"
 #include "lbmshape/pipeline/field_noise.hpp"
 #include "lbmshape/pipeline/recycled_fields.hpp"
+#include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 #include "lbmshape/sdf/band_signed_distance.hpp"
 #include "lbmshape/sdf/enclosed_volume.hpp"
+#include "lbmshape/sdf/hole_radius.hpp"
 #include "lbmshape/sdf/signed_distance.hpp"
 #include "lbmshape/sdf/triangle_bvh.hpp"
 #include "lbmshape/surface/band_marching_cubes.hpp"
@@ -191,28 +195,55 @@ public:
       // and its distances (46 ms each time for the armadillo); the two
       // meshes' side by side.
       std::optional<TriangleBvh> sourceTreeMade;
-      std::shared_ptr<BrickSet> bricks, targetBricks;
-      const double reach = halfWidth_ + 2.0;
-      runSideBySide(
-          [&] {
-            sourceTreeMade.emplace(source);
-            bricks = bricksNearSurface(source, *sourceTreeMade, frame, reach);
-          },
-          [&] {
-            targetTree_ = std::make_shared<const TriangleBvh>(target);
-            targetBricks = bricksNearSurface(target, *targetTree_, frame, reach);
-          });
+      runSideBySide([&] { sourceTreeMade.emplace(source); },
+                    [&] { targetTree_ = std::make_shared<const TriangleBvh>(target); });
       const TriangleBvh &sourceTree = *sourceTreeMade, &targetTree = *targetTree_;
-      for (size_t s = 0; s < targetBricks->activeCount(); ++s) {
-        const glm::ivec3 b = targetBricks->brick(int32_t(s));
-        bricks->activate(b.x, b.y, b.z);
-      }
-      device.checkBandFits(*bricks, false, true);
-      addBricksBetween(sourceTree, targetTree, frame, *bricks);
-      device.checkBandFits(*bricks, false, true);
+      const auto bandBricks = [&](double halfWidth) {
+        std::shared_ptr<BrickSet> bricks, targetBricks;
+        const double reach = halfWidth + 2.0;
+        runSideBySide([&] { bricks = bricksNearSurface(source, sourceTree, frame, reach); },
+                      [&] { targetBricks = bricksNearSurface(target, targetTree, frame, reach); });
+        for (size_t s = 0; s < targetBricks->activeCount(); ++s) {
+          const glm::ivec3 b = targetBricks->brick(int32_t(s));
+          bricks->activate(b.x, b.y, b.z);
+        }
+        device.checkBandFits(*bricks, false, true);
+        addBricksBetween(sourceTree, targetTree, frame, *bricks);
+        device.checkBandFits(*bricks, false, true);
+        return bricks;
+      };
+      const auto fieldsOn = [&](std::shared_ptr<BrickSet> bricks) {
+        computeFields({source, sourceTree}, {target, targetTree}, std::move(bricks), progress,
+                      [&device](const TriangleBvh& tree) { return device.bandDistances(tree); });
+      };
+      std::shared_ptr<BrickSet> bricks = bandBricks(halfWidth_);
       beforeDistances();
-      computeFields({source, sourceTree}, {target, targetTree}, bricks, progress,
-                    [&device](const TriangleBvh& tree) { return device.bandDistances(tree); });
+      fieldsOn(bricks);
+      // A mesh's hole wider than the band: the surface that closes it was
+      // cut off, and the morph ended on a shape open there, or kept pieces
+      // of the source's (sdf/hole_radius.hpp). Widened over the widest
+      // hole, and again while it still leaves.
+      const double wholeGrid = glm::length(glm::dvec3(frame.extent.nx, frame.extent.ny, frame.extent.nz));
+      while ((surfaceLeavesTheBand(source_) || surfaceLeavesTheBand(target_)) && halfWidth_ < wholeGrid) {
+        const double wider = std::max({halfWidthOverHoles(source, frame.voxel, halfWidth_),
+                                       halfWidthOverHoles(target, frame.voxel, halfWidth_), 2.0 * halfWidth_});
+        try {
+          bricks = bandBricks(wider);
+        } catch (const DeviceError& e) {
+          // Refused before anything was allocated: the narrower band, with
+          // what would close the holes.
+          log::warning(
+              "the frames are left open (or keep pieces of the source) where the surfaces that close the "
+              "meshes' holes lie more than " +
+              std::to_string(int(halfWidth_)) + " voxels from their triangles: a band " + std::to_string(int(wider)) +
+              " voxels wide would hold them, but " + e.what());
+          break;
+        }
+        halfWidth_ = wider;
+        log::verbose("band widened to " + std::to_string(int(halfWidth_)) +
+                     " voxels to hold the surfaces that close the meshes' holes");
+        fieldsOn(bricks);
+      }
     });
   }
 

@@ -241,6 +241,59 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
 
 }  // namespace
 
+bool surfaceLeavesTheBand(const BandField& band)
+{
+  const BrickSet& bricks = band.bricks();
+  const Extent3 grid = bricks.bricks(), cells = bricks.cells();
+  const std::vector<float>& values = band.values();
+  bool leaves = false;
+#pragma omp parallel for schedule(dynamic, 64) reduction(|| : leaves)
+  for (size_t s = 0; s < bricks.activeCount(); ++s) {
+    if (leaves) continue;
+    const glm::ivec3 b = bricks.brick(int32_t(s));
+    for (int axis = 0; axis < 3 && !leaves; ++axis)
+      for (int direction : {-1, 1}) {
+        glm::ivec3 n = b;
+        n[axis] += direction;
+        if (!grid.contains(n.x, n.y, n.z) || bricks.slot(n.x, n.y, n.z) != noBrick) continue;
+        const bool beyondInside = band.farSide(n.x, n.y, n.z) > 0;
+        // The brick's face towards n: cell coordinate 0 or 7 along the axis.
+        const int layer = direction > 0 ? brickEdge - 1 : 0;
+        for (int u = 0; u < brickEdge && !leaves; ++u)
+          for (int v = 0; v < brickEdge; ++v) {
+            glm::ivec3 local;
+            local[axis] = layer;
+            local[(axis + 1) % 3] = u;
+            local[(axis + 2) % 3] = v;
+            const glm::ivec3 c = brickEdge * b + local;
+            if (!cells.contains(c.x, c.y, c.z)) continue;
+            if ((values[s * brickCells + size_t(cellInBrick(local.x, local.y, local.z))] > 0.0f) != beyondInside) {
+              leaves = true;
+              break;
+            }
+          }
+      }
+  }
+  if (leaves) return true;
+  // Or runs between two inactive bricks, along their shared face, where no
+  // cell is stored to mark it (each took its side from the active brick
+  // next to it, on either side of the surface).
+  const std::vector<int8_t>& sides = band.farSides();
+#pragma omp parallel for schedule(static) reduction(|| : leaves)
+  for (int z = 0; z < grid.nz; ++z)
+    for (int y = 0; y < grid.ny; ++y)
+      for (int x = 0; x < grid.nx; ++x) {
+        if (bricks.slot(x, y, z) != noBrick) continue;
+        const int8_t side = sides[grid.index(x, y, z)];
+        const glm::ivec3 next[3] = {{x + 1, y, z}, {x, y + 1, z}, {x, y, z + 1}};
+        for (const glm::ivec3& n : next)
+          if (grid.contains(n.x, n.y, n.z) && bricks.slot(n.x, n.y, n.z) == noBrick &&
+              sides[grid.index(n.x, n.y, n.z)] != side)
+            leaves = true;
+      }
+  return leaves;
+}
+
 BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, const BandDistanceOptions& options,
                              SignedDistanceStats* stats)
 {

@@ -64,4 +64,14 @@ BandField signedDistanceOn(const TriangleMesh& mesh, const TriangleBvh& tree, co
                            std::shared_ptr<const BrickSet> bricks, const BandDistanceOptions& options = {},
                            SignedDistanceStats* stats = nullptr);
 
+// Whether the zero level runs out of the band's bricks into the inactive
+// ones: a cell on the face of an active brick whose side (inside or out)
+// is not that of the inactive brick beyond, or two inactive bricks side by
+// side on different sides. A closed surface's band never
+// does (beyond it lies one side only); an open mesh's does where the
+// surface that closes a hole (the winding number's) lies further from the
+// triangles than the band reaches, and the result would be open there
+// (sdf/hole_radius.hpp says how much wider a band holds it).
+bool surfaceLeavesTheBand(const BandField& band);
+
 }  // namespace lbmshape

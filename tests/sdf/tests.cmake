@@ -4,6 +4,7 @@ lbmshape_test(sdf_tests
   ${CMAKE_CURRENT_LIST_DIR}/clear_regions_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/device_band_distances_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_frame_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/hole_radius_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_triangle_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/shell_orientation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signed_distance_test.cpp

@@ -76,6 +76,21 @@ TriangleMesh scaled(TriangleMesh mesh, double scale, glm::dvec3 centre)
   return mesh;
 }
 
+namespace {
+TriangleMesh half(const TriangleMesh& mesh, bool upper)
+{
+  TriangleMesh kept;
+  kept.positions = mesh.positions;
+  for (const glm::uvec3& t : mesh.triangles)
+    if ((mesh.positions[t.x].z + mesh.positions[t.y].z + mesh.positions[t.z].z >= 0.0) == upper)
+      kept.triangles.push_back(t);
+  return kept;
+}
+}  // namespace
+
+TriangleMesh upperHalf(const TriangleMesh& mesh) { return half(mesh, true); }
+TriangleMesh lowerHalf(const TriangleMesh& mesh) { return half(mesh, false); }
+
 double smallestAngle(const TriangleMesh& mesh, const glm::uvec3& triangle)
 {
   const glm::dvec3 p[3] = {mesh.positions[triangle.x], mesh.positions[triangle.y], mesh.positions[triangle.z]};

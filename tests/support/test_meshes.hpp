@@ -25,6 +25,11 @@ TriangleMesh sheet(int n, const std::function<glm::dvec3(double u, double v)>& p
 TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b);
 // Every position p becomes centre + scale * (p - centre).
 TriangleMesh scaled(TriangleMesh mesh, double scale, glm::dvec3 centre = glm::dvec3(0.0));
+// The triangles whose centroid lies at z >= 0, or z < 0 (the vertices kept
+// as they are): of an icosphere, the upper or lower hemisphere, open at
+// its rim.
+TriangleMesh upperHalf(const TriangleMesh& mesh);
+TriangleMesh lowerHalf(const TriangleMesh& mesh);
 
 // The smallest of a triangle's three angles, in degrees.
 double smallestAngle(const TriangleMesh& mesh, const glm::uvec3& triangle);

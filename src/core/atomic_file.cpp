@@ -3,10 +3,13 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
+#include <regex>
 #include <string>
 #include <system_error>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include "lbmshape/core/error.hpp"
@@ -65,6 +68,18 @@ std::filesystem::path followedLinks(std::filesystem::path path)
   return path;
 }
 
+std::string kindOfFile(std::filesystem::file_type type)
+{
+  switch (type) {
+  case std::filesystem::file_type::directory: return "a folder";
+  case std::filesystem::file_type::character:
+  case std::filesystem::file_type::block: return "a device";
+  case std::filesystem::file_type::fifo: return "a named pipe";
+  case std::filesystem::file_type::socket: return "a socket";
+  default: return "not a file";
+  }
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target))
@@ -74,6 +89,12 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   std::error_code ec;
   if (std::filesystem::is_directory(target_, ec)) throw OutputError(failure(target_, "it is a folder"));
   destination_ = followedLinks(target_);
+  // The new file is renamed over the old: a device, a pipe or a socket
+  // there would be replaced by a plain file (as root, /dev/null itself).
+  if (const auto type = std::filesystem::status(destination_, ec).type();
+      !ec && type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found)
+    throw OutputError(failure(target_, (destination_ == target_ ? "it" : destination_.string()) + " is " +
+                                           kindOfFile(type) + ", not a regular file"));
   const std::filesystem::path folder = folderOf(destination_);
   if (!std::filesystem::is_directory(folder, ec))
     throw OutputError(failure(target_, std::filesystem::exists(folder, ec)
@@ -120,6 +141,24 @@ AtomicFile::~AtomicFile()
   std::error_code ec;
   std::filesystem::remove(temporary_, ec);  // nothing more to do if it is already gone
   temporary_files::forget(ticket_);
+}
+
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder)
+{
+  static const std::regex temporaryName(R"(^\..*\.tmp-([0-9]+)-[0-9]+(\.[^.]*)?$)");
+  size_t removed = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (!std::regex_match(name, match, temporaryName) || !entry.is_regular_file(ec)) continue;
+    const unsigned long pid = std::stoul(match[1].str());
+    // kill(pid, 0) sends nothing: ESRCH says no process has the id.
+    if (pid == 0 || pid > uint64_t(std::numeric_limits<pid_t>::max()) || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH)
+      continue;
+    if (std::filesystem::remove(entry.path(), ec)) ++removed;
+  }
+  return removed;
 }
 
 void AtomicFile::commit()

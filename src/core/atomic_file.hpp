@@ -56,4 +56,11 @@ private:
   int ticket_ = -1;  // in temporary_files, until committed or removed
 };
 
+// Removes from `folder` the temporary files of AtomicFiles whose process is
+// gone: one killed by a signal no handler sees (SIGKILL, the kernel's
+// out-of-memory killer) leaves its ".<name>.tmp-<pid>-<n><ext>", which
+// stayed for ever and made the folder "not empty" to the next morph into
+// it. Files of live processes are left. Returns how many went.
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder);
+
 }  // namespace lbmshape

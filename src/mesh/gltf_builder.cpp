@@ -64,6 +64,15 @@ tinygltf::Value integer(size_t value)
   return tinygltf::Value(int(value));
 }
 
+// A name as glTF's JSON holds it: UTF-8, with each byte that is not UTF-8
+// replaced by U+FFFD (a Latin-1 byte of a file's name: the writer's JSON
+// threw on it, after all the work was done).
+std::string validUtf8(const std::string& name)
+{
+  return nlohmann::json::parse(nlohmann::json(name).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))
+      .get<std::string>();
+}
+
 }  // namespace
 
 GltfBuilder::GltfBuilder(GltfCompression compression) : compression_(compression)
@@ -251,7 +260,7 @@ int GltfBuilder::addMesh(const TriangleMesh& mesh, const std::string& name, bool
 int GltfBuilder::addOnePrimitiveMesh(const tinygltf::Primitive& primitive, const std::string& name)
 {
   tinygltf::Mesh gltfMesh;
-  gltfMesh.name = name;
+  gltfMesh.name = validUtf8(name);
   gltfMesh.primitives.push_back(primitive);
   model_.meshes.push_back(gltfMesh);
   return int(model_.meshes.size() - 1);
@@ -260,7 +269,7 @@ int GltfBuilder::addOnePrimitiveMesh(const tinygltf::Primitive& primitive, const
 int GltfBuilder::addNode(int mesh, const std::string& name, std::vector<double> scale)
 {
   tinygltf::Node node;
-  node.name = name;
+  node.name = validUtf8(name);
   node.scale = std::move(scale);
   const auto placed = placements_.find(mesh);
   if (placed == placements_.end()) {

@@ -35,6 +35,9 @@ MorphFolder::MorphFolder(const fs::path& folder, bool force) : folder_(folder)
     throw;
   }
   try {
+    // A killed morph's temporary files are no frames: gone before the
+    // folder is judged empty (the folder is this process's now).
+    removeDeadWritersTemporaryFiles(folder);
     if (!fs::is_empty(folder, ec) && !force)
       throw OutputError(folder.string() + " is not empty; use " + nameOf(Parameter::Force) +
                         " to write the frames into it anyway");

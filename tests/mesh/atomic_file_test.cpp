@@ -10,6 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "lbmshape/core/atomic_file.hpp"
@@ -114,6 +118,51 @@ TEST(AtomicFile, TargetThatIsAFolderIsAnOutputError)
   testing::ScratchFolder folder;
   std::filesystem::create_directory(folder / "taken.obj");
   EXPECT_THROW(AtomicFile(folder / "taken.obj"), OutputError);
+}
+
+// The new file is renamed over the old, which would replace a device or a
+// pipe by a plain file (as root, /dev/full was): refused, named, left as
+// it was, directly or through a link.
+TEST(AtomicFile, ADeviceOrAPipeIsRefusedAndLeftAsItWas)
+{
+  testing::ScratchFolder folder;
+  ASSERT_EQ(::mkfifo((folder / "pipe.glb").c_str(), 0666), 0);
+  try {
+    AtomicFile file(folder / "pipe.glb");
+    FAIL() << "expected an OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a named pipe, not a regular file"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(folder / "pipe.glb"));
+  std::filesystem::create_symlink("/dev/null", folder / "null.glb");
+  try {
+    AtomicFile file(folder / "null.glb");
+    FAIL() << "expected an OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/null is a device, not a regular file"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path()), {}), 2);  // no temporary file left
+}
+
+// A process killed without unwinding (SIGKILL) leaves its temporary files:
+// those of processes that are gone are removed, a live one's and other
+// files are left.
+TEST(AtomicFile, ADeadWritersTemporaryFilesAreRemoved)
+{
+  testing::ScratchFolder folder;
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // gone: its id names no process
+  const auto dead = folder / (".frame_0003.tmp-" + std::to_string(child) + "-7.glb");
+  const auto live = folder / (".frame_0004.tmp-" + std::to_string(::getpid()) + "-8.glb");
+  const auto other = folder / ".notes.tmp-x.glb";
+  const auto frame = folder / "frame_0002.glb";
+  for (const auto& path : {dead, live, other, frame}) std::ofstream(path) << "x";
+  EXPECT_EQ(removeDeadWritersTemporaryFiles(folder.path()), 1u);
+  EXPECT_FALSE(std::filesystem::exists(dead));
+  for (const auto& path : {live, other, frame}) EXPECT_TRUE(std::filesystem::exists(path)) << path;
 }
 
 // The first Ctrl-C is a request, and the job unwinds, removing its temporary

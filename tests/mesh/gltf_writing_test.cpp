@@ -120,6 +120,20 @@ TEST(SaveGltf, GivesTheModelBackWhole)
   EXPECT_NE(chunks.json.find("\"byteLength\":" + std::to_string(before.size())), std::string_view::npos) << chunks.json;
 }
 
+// A name with a byte that is not UTF-8 (a Latin-1 file name, "caf\xe9"):
+// written with U+FFFD in its place; the writer threw, after all the work.
+TEST(SaveGltf, ANameThatIsNotUtf8IsWrittenWithAReplacementCharacter)
+{
+  GltfBuilder builder;
+  builder.addNode(builder.addMesh(testing::icosphere(1), "caf\xe9"), "caf\xe9");
+  testing::ScratchFolder folder;
+  AtomicFile file(folder / "cafe.glb");
+  ASSERT_NO_THROW(saveGltf(builder.model(), MeshFormat::Glb, file));
+  file.commit();
+  const std::string glb = fileBytes(folder / "cafe.glb");
+  EXPECT_NE(glbChunks(glb).json.find("\"caf\xef\xbf\xbd\""), std::string_view::npos) << glbChunks(glb).json;
+}
+
 TEST(GltfAnimationFrameByFrame, IsTheFileOfAllFramesAtOnce)
 {
   testing::ScratchFolder folder;

@@ -14,6 +14,11 @@
 #include "lbmshape/core/log.hpp"
 
 namespace lbmshape::gpu {
+namespace {
+// Far above any driver's (lavapipe's for every pipeline lbmshape makes:
+// under 2 MB).
+constexpr uintmax_t largestPipelineCacheBytes = uintmax_t(256) << 20;
+}  // namespace
 
 std::filesystem::path defaultPipelineCachePath(const vk::PhysicalDeviceProperties& properties)
 {
@@ -33,9 +38,18 @@ PipelineCacheFile::PipelineCacheFile(const vk::raii::Device& device, std::filesy
     : path_(std::move(path))
 {
   std::vector<char> data;
-  if (!path_.empty()) {
-    std::ifstream in(path_, std::ios::binary);
-    if (in) data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  // Only a regular file of a sensible size: the cache is optional, and a
+  // named pipe there hung the start, a folder threw, a link to /dev/zero
+  // ran out of memory.
+  std::error_code ec;
+  if (!path_.empty() && std::filesystem::is_regular_file(path_, ec) &&
+      std::filesystem::file_size(path_, ec) <= largestPipelineCacheBytes && !ec) {
+    try {
+      std::ifstream in(path_, std::ios::binary);
+      if (in) data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } catch (const std::exception&) {
+      data.clear();  // unreadable: as if there were none
+    }
   }
   // The driver checks the header (vendor, device, UUID) and ignores data that
   // is not its own, so a stale or foreign file costs nothing but a recompile.

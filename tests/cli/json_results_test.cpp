@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+
+#include <sys/stat.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -246,6 +249,48 @@ TEST(JsonResults, PipelineCacheIsSavedAndLoadedAgain)
     files += entry.path().extension() == ".bin";
   EXPECT_EQ(files, 1u);
   EXPECT_EQ(afterThird, savedBySecond) << "the third run compiled nothing new, yet wrote the cache again";
+}
+
+// The cache is optional: a named pipe, a folder or a link to /dev/zero in
+// the cache file's place is passed over (they hung the start, threw, and
+// ran out of memory), and a relative XDG_CACHE_HOME is ignored, as the XDG
+// specification says, not made in the working folder.
+TEST(JsonResults, ACacheFileThatIsNoFileIsPassedOver)
+{
+  testing::ScratchFolder cache;
+  const std::string previous = std::getenv("XDG_CACHE_HOME") ? std::getenv("XDG_CACHE_HOME") : "";
+  setenv("XDG_CACHE_HOME", cache.path().c_str(), 1);
+  const std::vector<std::string> bench = {"bench", "--json", "--size", "16,16,16", "--steps", "1", "--runs", "1"};
+  parseStdout(testing::runLbmshape(bench));
+  std::filesystem::path file;
+  for (const auto& entry : std::filesystem::directory_iterator(cache / "lbmshape"))
+    if (entry.path().extension() == ".bin") file = entry.path();
+  ASSERT_FALSE(file.empty());
+  const std::function<void()> replacements[] = {
+      [&] { ASSERT_EQ(::mkfifo(file.c_str(), 0666), 0); },
+      [&] { std::filesystem::create_directory(file); },
+      [&] { std::filesystem::create_symlink("/dev/zero", file); },
+  };
+  for (const auto& replace : replacements) {
+    std::filesystem::remove(file);
+    replace();
+    const auto run = testing::runLbmshape(bench);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(parseStdout(run)["startup"]["pipeline_cache_loaded_bytes"].get<size_t>(), 0u);
+  }
+  testing::ScratchFolder work;
+  const auto here = std::filesystem::current_path();
+  const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+  std::filesystem::current_path(work.path());
+  setenv("XDG_CACHE_HOME", "relative/cache", 1);
+  setenv("HOME", (work / "home").c_str(), 1);
+  const auto relative = testing::runLbmshape(bench);
+  std::filesystem::current_path(here);
+  setenv("XDG_CACHE_HOME", previous.c_str(), 1);
+  setenv("HOME", home.c_str(), 1);
+  EXPECT_EQ(relative.exitCode, 0) << relative.err;
+  EXPECT_FALSE(std::filesystem::exists(work / "relative"));
+  EXPECT_TRUE(std::filesystem::is_directory(work / "home" / ".cache" / "lbmshape"));  // where HOME says instead
 }
 
 TEST(JsonResults, ReferenceDeviceRunsWithoutVulkan)

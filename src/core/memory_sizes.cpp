@@ -26,6 +26,9 @@ int longestSideThatFits(const Extent3& extent, double needed, double allowed, do
 std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power, int cap)
 {
   const int fits = std::min(cap, longestSideThatFits(extent, needed, allowed, power));
+  if (fits < coarsestGrid)
+    return "no grid would fit (not even " + nameOf(Parameter::Resolution) + " " + std::to_string(coarsestGrid) +
+           "); raise the memory limit";
   return "a grid of about " + std::to_string(fits) + " cells along its longest side (" + nameOf(Parameter::Resolution) +
          " " + std::to_string(fits) + ") would fit";
 }

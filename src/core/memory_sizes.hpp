@@ -22,6 +22,11 @@ std::string mebibytes(uint64_t bytes);
 // CPU, the host's) gives each check the other's largest side as `cap`, so
 // that the grid named fits both: named by one alone, it was refused by the
 // other.
+// The coarsest grid any mesh gets (12 cells with the default margin:
+// grid_frame.hpp): a refusal names no --res below it, which would be
+// advice that fails in turn.
+inline constexpr int coarsestGrid = 12;
+
 std::string gridThatWouldFit(const Extent3& extent, double needed, double allowed, double power, int cap = INT32_MAX);
 
 // N of gridThatWouldFit's message.

@@ -93,10 +93,12 @@ void checkFitsDevice(const LatticeLayout& layout, const gpu::DeviceDescription& 
   if (why.empty()) return;
   const int fits = std::min(cap, latticeLongestSideThatFits(layout.extent, device));
   throw DeviceError("a " + layout.extent.toString() + " lattice does not fit on " + device.name + ": " + why + "; " +
-                    (fits > 0 ? "a grid of about " + std::to_string(fits) + " cells along its longest side (" +
-                                    nameOf(Parameter::Resolution) + " " + std::to_string(fits) +
-                                    ") would fit, or use another " + nameOf(Parameter::Device)
-                              : "use another " + nameOf(Parameter::Device)));
+                    (fits >= coarsestGrid
+                         ? "a grid of about " + std::to_string(fits) + " cells along its longest side (" +
+                               nameOf(Parameter::Resolution) + " " + std::to_string(fits) +
+                               ") would fit, or use another " + nameOf(Parameter::Device)
+                         : "no grid would fit (not even " + nameOf(Parameter::Resolution) + " " +
+                               std::to_string(coarsestGrid) + "); use another " + nameOf(Parameter::Device)));
 }
 
 }  // namespace lbmshape

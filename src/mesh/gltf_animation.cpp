@@ -62,10 +62,13 @@ std::string untimeableInSinglePrecision(size_t frameCount, double fps)
   if (!std::isfinite(last))
     return "the last of " + std::to_string(frameCount) + " frames at " + numberText(fps) +
            " per second would come later than single precision can time; use a higher frame rate";
-  // Keys closer than float resolution would not be increasing any more.
-  if (!(float(double(frameCount) / fps) > last))
-    return std::to_string(frameCount) + " frames at " + numberText(fps) +
-           " per second are closer together than single precision can time; use a lower frame rate";
+  // Keys closer than float resolution would not be increasing any more:
+  // every pair is checked, for near zero the floats are subnormal, coarser
+  // than further on (at 1e45 per second the second and third keys were one).
+  for (size_t k = 1; k <= frameCount; ++k)
+    if (!(float(double(k) / fps) > float(double(k - 1) / fps)))
+      return std::to_string(frameCount) + " frames at " + numberText(fps) +
+             " per second are closer together than single precision can time; use a lower frame rate";
   return "";
 }
 

@@ -97,6 +97,10 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"morph_fps_too_high_to_time",
                   {"morph", "a.obj", "b.obj", "frames", "--fps", "1e300"},
                   "--fps 1e+300 does not fit the animation: 48 frames at 1e+300 per second are closer together"},
+        // Subnormal key times: the second and third were one float.
+        UsageCase{"morph_fps_subnormal_key_times",
+                  {"morph", "a.obj", "b.obj", "frames", "--frames", "4", "--fps", "1e45"},
+                  "--fps 1e+45 does not fit the animation: 4 frames at 1e+45 per second are closer together"},
         // An unset shell variable: not 0, not "no folder".
         UsageCase{"denoise_res_empty", {"denoise", "in.obj", "out.glb", "--res", ""}, "--res: the value is empty"},
         UsageCase{"morph_folder_empty", {"morph", "a.obj", "b.obj", ""}, "the value is empty"},

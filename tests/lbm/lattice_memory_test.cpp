@@ -94,6 +94,17 @@ TEST(LatticeFit, ARefusalNamesAGridThatFits)
   }
 }
 
+// A device too small for any grid: no --res is named (it named --res 0,
+// itself refused).
+TEST(LatticeFit, ADeviceTooSmallForAnyGridNamesNoResolution)
+{
+  gpu::DeviceDescription device = roomyDevice();
+  device.deviceLocalBytes = 64u << 10;
+  const std::string message = fitError({1024, 1024, 1024}, device);
+  EXPECT_NE(message.find("no grid would fit (not even"), std::string::npos) << message;
+  EXPECT_EQ(message.find(") would fit"), std::string::npos) << message;
+}
+
 TEST(LatticeFit, BadExtentIsAUsageError)
 {
   EXPECT_THROW(latticeLayout({0, 8, 8}), UsageError);

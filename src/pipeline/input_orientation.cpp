@@ -60,8 +60,15 @@ MeshTopology orientTheInput(TriangleMesh& mesh, const std::string& name)
   if (turned.shellsTurned > 0)
     what += std::string(what.empty() ? "" : ", and ") + std::to_string(turned.shellsTurned) +
             (turned.shellsTurned == 1 ? " closed shell faced" : " closed shells faced") + " inward, inside no other";
+  if (turned.openPiecesTurned > 0)
+    what += std::string(what.empty() ? "" : ", and ") + std::to_string(turned.openPiecesTurned) +
+            (turned.openPiecesTurned == 1 ? " open piece was" : " open pieces were") + " inside out (a mirrored scan)";
   if (!what.empty())
     log::warning(name + ": " + what + "; turned them over to face out (counter-clockwise seen from outside)");
+  if (turned.nestedShellsTurned > 0)
+    log::warning(name + ": " + std::to_string(turned.nestedShellsTurned) +
+                 (turned.nestedShellsTurned == 1 ? " shell" : " shells") +
+                 " inside those faced the wrong way for their depth (a mirrored part's cavities); turned them too");
   if (turned.unorientableEdges > 0)
     log::warning(name + ": " + std::to_string(turned.unorientableEdges) +
                  " edges join triangles that no turning can make agree (a one-sided surface); its inside there is "

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -92,6 +93,74 @@ glm::dvec3 justBehind(const TriangleMesh& mesh, uint32_t t)
   return (a + b + d) / 3.0 - 1e-3 * size * normal;
 }
 
+// A piece alone, its vertices renumbered: for its own winding number.
+TriangleMesh pieceAlone(const TriangleMesh& mesh, const std::vector<uint32_t>& piece)
+{
+  TriangleMesh alone;
+  std::unordered_map<uint32_t, uint32_t> renumbered;  // a piece's own size, however many pieces
+  for (const uint32_t t : piece) {
+    glm::uvec3 corners;
+    for (int k = 0; k < 3; ++k) {
+      const auto [at, added] = renumbered.try_emplace(mesh.triangles[t][k], uint32_t(alone.positions.size()));
+      if (added) alone.positions.push_back(mesh.positions[mesh.triangles[t][k]]);
+      corners[k] = at->second;
+    }
+    alone.triangles.push_back(corners);
+  }
+  return alone;
+}
+
+// The centroid of a piece's corners.
+glm::dvec3 centroid(const TriangleMesh& mesh, const std::vector<uint32_t>& piece)
+{
+  glm::dvec3 sum(0.0);
+  for (const uint32_t t : piece)
+    for (int k = 0; k < 3; ++k) sum += mesh.positions[mesh.triangles[t][k]];
+  return sum / double(3 * piece.size());
+}
+
+// A mirrored hollow part: its outer shell faces in, and is turned, but the
+// shell of its cavity, mirrored too, faces out, and the part came out solid.
+// So every closed piece inside a shell just turned is made to face as its
+// depth among them says: in (a cavity) inside an odd number of them, out
+// inside an even number (a ball in the cavity). Returns how many turned.
+// Depth is counted with each piece's own winding number, so pieces that
+// overlap without nesting count as holding each other only where they do.
+size_t faceTheNestedByDepth(TriangleMesh& mesh, const std::vector<std::vector<uint32_t>>& pieces,
+                            const std::vector<uint32_t>& closedPieces, const std::vector<uint32_t>& turnedOuter)
+{
+  constexpr size_t mostNested = 64;  // pairs of pieces are tested: a bound on the work
+  std::vector<uint32_t> involved = turnedOuter;
+  std::vector<TriangleBvh> trees;
+  for (const uint32_t id : turnedOuter) trees.emplace_back(pieceAlone(mesh, pieces[id]));
+  std::vector<uint32_t> nested;
+  for (const uint32_t id : closedPieces) {
+    if (std::find(turnedOuter.begin(), turnedOuter.end(), id) != turnedOuter.end()) continue;
+    const glm::dvec3 point = mesh.positions[mesh.triangles[pieces[id].front()][0]];
+    for (const TriangleBvh& outer : trees)
+      if (std::abs(outer.windingNumber(point)) >= 0.5) {
+        nested.push_back(id);
+        break;
+      }
+    if (nested.size() > mostNested) return 0;
+  }
+  for (const uint32_t id : nested) trees.emplace_back(pieceAlone(mesh, pieces[id]));
+  involved.insert(involved.end(), nested.begin(), nested.end());
+  size_t turned = 0;
+  for (const uint32_t id : nested) {
+    const glm::dvec3 point = mesh.positions[mesh.triangles[pieces[id].front()][0]];
+    int depth = 0;
+    for (size_t k = 0; k < involved.size(); ++k)
+      if (involved[k] != id && std::abs(trees[k].windingNumber(point)) >= 0.5) ++depth;
+    const bool shouldFaceIn = depth % 2 == 1;
+    if ((signedVolume(mesh, pieces[id]) < 0.0) != shouldFaceIn) {
+      for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
+      ++turned;
+    }
+  }
+  return turned;
+}
+
 }  // namespace
 
 Reorientation orientShells(TriangleMesh& mesh)
@@ -138,22 +207,39 @@ Reorientation orientShells(TriangleMesh& mesh)
 
   // Closed pieces facing in, inside no other piece: inside out. Each is
   // judged on the mesh as it is now, then the ones found are turned.
-  std::vector<uint32_t> facingIn;
+  std::vector<uint32_t> facingIn, closedPieces, openPieces;
   for (uint32_t id = 0; id < pieces.size(); ++id) {
     const std::vector<uint32_t>& piece = pieces[id];
     const bool closed =
         std::none_of(piece.begin(), piece.end(), [&](uint32_t t) { return neighbours.touchesAnOpenEdge[t]; });
+    (closed ? closedPieces : openPieces).push_back(id);
     if (closed && signedVolume(mesh, piece) < 0.0) facingIn.push_back(id);
   }
-  if (facingIn.empty()) return done;
-  std::optional<TriangleBvh> tree;  // the winding number of all pieces at once, for any number of them
-  if (pieces.size() > 1) tree.emplace(mesh);
-  std::vector<uint32_t> insideOut;
-  for (const uint32_t id : facingIn)
-    if (!tree || std::abs(tree->windingNumber(justBehind(mesh, pieces[id].front()))) < 0.5) insideOut.push_back(id);
-  for (const uint32_t id : insideOut)
-    for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
-  done.shellsTurned = insideOut.size();
+  if (!facingIn.empty()) {
+    std::optional<TriangleBvh> tree;  // the winding number of all pieces at once, for any number of them
+    if (pieces.size() > 1) tree.emplace(mesh);
+    std::vector<uint32_t> insideOut;
+    for (const uint32_t id : facingIn)
+      if (!tree || std::abs(tree->windingNumber(justBehind(mesh, pieces[id].front()))) < 0.5) insideOut.push_back(id);
+    for (const uint32_t id : insideOut)
+      for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
+    done.shellsTurned = insideOut.size();
+    if (!insideOut.empty() && closedPieces.size() > insideOut.size())
+      done.nestedShellsTurned = faceTheNestedByDepth(mesh, pieces, closedPieces, insideOut);
+  }
+  // An open piece inside out (a mirrored scan) has a winding number of
+  // about -1 where it is solid, and enclosed nothing. Turned when its
+  // corners' centroid lies deep inside it so reckoned (w <= -3/4): a scan
+  // with holes has about -1 there, while a sheet curved over its centroid
+  // (a hump) may pass -1/2 (-0.56 under the sine hump of the tests) and is
+  // left, as is a shape whose centroid lies outside it (a ring).
+  for (const uint32_t id : openPieces) {
+    const TriangleBvh own(pieceAlone(mesh, pieces[id]));
+    if (own.windingNumber(centroid(mesh, pieces[id])) <= -0.75) {
+      for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
+      ++done.openPiecesTurned;
+    }
+  }
   return done;
 }
 

@@ -73,6 +73,61 @@ TEST(ShellOrientation, OnePartInsideOutOfTwoIsTurnedAndACavityIsNot)
   EXPECT_EQ(kept.triangles, hollow.triangles);
 }
 
+// A mirrored hollow part: every shell reversed, so its outer shell faces
+// in and its cavity's faces out. Turning the outer alone made it solid;
+// the cavity is turned with it, and a ball inside the cavity turned to
+// face out again.
+TEST(ShellOrientation, AMirroredHollowPartKeepsItsCavity)
+{
+  const TriangleMesh outer = testing::icosphere(3), cavity = turnedOver(testing::icosphere(3, 0.6)),
+                     ball = testing::icosphere(2, 0.3);
+  const TriangleMesh hollow = testing::merged(outer, cavity);
+  TriangleMesh mirrored = turnedOver(hollow);
+  const Reorientation r = orientShells(mirrored);
+  EXPECT_EQ(r.shellsTurned, 1u);
+  EXPECT_EQ(r.nestedShellsTurned, 1u);
+  EXPECT_EQ(mirrored.triangles, hollow.triangles);
+
+  const TriangleMesh nested = testing::merged(hollow, ball);
+  TriangleMesh mirroredNest = turnedOver(nested);
+  const Reorientation n = orientShells(mirroredNest);
+  EXPECT_EQ(n.shellsTurned + n.nestedShellsTurned, 3u);  // the ball, in no other by the sum, is one of the first
+  EXPECT_EQ(mirroredNest.triangles, nested.triangles);
+
+  // Only the outer shell reversed (its cavity right): the cavity stays.
+  TriangleMesh outerReversed = testing::merged(turnedOver(outer), cavity);
+  const Reorientation o = orientShells(outerReversed);
+  EXPECT_EQ(o.shellsTurned, 1u);
+  EXPECT_EQ(o.nestedShellsTurned, 0u);
+  EXPECT_EQ(outerReversed.triangles, hollow.triangles);
+}
+
+// A mirrored scan (open, every triangle reversed) has a winding number of
+// about -1 inside and enclosed nothing: turned. A sheet either way up and a
+// scan the right way out are left.
+TEST(ShellOrientation, AnOpenScanInsideOutIsTurned)
+{
+  TriangleMesh scan;  // a sphere with its top cap missing
+  const TriangleMesh sphere = testing::icosphere(3);
+  scan.positions = sphere.positions;
+  for (const glm::uvec3& t : sphere.triangles)
+    if (sphere.positions[t.x].z + sphere.positions[t.y].z + sphere.positions[t.z].z < 2.4) scan.triangles.push_back(t);
+  TriangleMesh mirrored = turnedOver(scan);
+  const Reorientation r = orientShells(mirrored);
+  EXPECT_EQ(r.openPiecesTurned, 1u);
+  EXPECT_EQ(mirrored.triangles, scan.triangles);
+  TriangleMesh right = scan;
+  EXPECT_FALSE(orientShells(right).changed());
+
+  const TriangleMesh sheet =
+      testing::sheet(12, [](double u, double v) { return glm::dvec3(u, v, 0.3 * std::sin(3.0 * u)); });
+  for (const TriangleMesh& way : {sheet, turnedOver(sheet)}) {
+    TriangleMesh kept = way;
+    EXPECT_EQ(orientShells(kept).openPiecesTurned, 0u);
+    EXPECT_EQ(kept.triangles, way.triangles);
+  }
+}
+
 TEST(ShellOrientation, AnOpenSheetKeepsTheWayMostOfItFaced)
 {
   const TriangleMesh sheet =

@@ -55,7 +55,9 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
 {
   if (args.samples < 1 || args.samples > parameter_bounds::maxSamples)
     throw UsageError("--samples must be from 1 to " + std::to_string(parameter_bounds::maxSamples));
-  const TriangleMesh a = readMesh(args.a), b = readMesh(args.b);
+  // Flat meshes too: distances and topology need no inside.
+  const TriangleMesh a = readMesh(args.a, EmptyMesh::Refused, FlatMesh::Allowed),
+                     b = readMesh(args.b, EmptyMesh::Refused, FlatMesh::Allowed);
   const MeshTopology ta = analyzeTopology(a), tb = analyzeTopology(b);
   ComparisonOptions options;
   options.minSamples = args.samples;

@@ -34,7 +34,7 @@ void runNoise(const CommonOptions& common, const NoiseArguments& args)
   }
   checkNotTheInput(args.output, args.input, args.force);
   checkMeshDestination(args.output);
-  const TriangleMesh mesh = readMesh(args.input);
+  const TriangleMesh mesh = readMesh(args.input, EmptyMesh::Refused, FlatMesh::Allowed);  // a sheet too
   const double edge = meanEdgeLength(mesh);
   // The unit of --sigma: a mean edge length, or with --res a voxel of the
   // grid `denoise --res` would put around this mesh.

@@ -1,6 +1,7 @@
 #include "lbmshape/mesh/mesh_noise.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -8,6 +9,7 @@
 #include "lbmshape/core/number_text.hpp"
 #include "lbmshape/mesh/mesh_geometry.hpp"
 #include "lbmshape/mesh/mesh_validation.hpp"
+#include "lbmshape/mesh/vertex_welding.hpp"
 
 namespace lbmshape {
 namespace {
@@ -53,11 +55,30 @@ TriangleMesh addNormalNoise(const TriangleMesh& mesh, double sigmaInMeanEdgeLeng
   noisy.positions = mesh.positions;
   noisy.triangles = mesh.triangles;
   const double sigma = sigmaInMeanEdgeLengths * meanEdgeLength(mesh);
-  const std::vector<glm::dvec3> normals = areaWeightedNormals(mesh);
+  // Corners at one position move together, along the normal of all their
+  // triangles: a soup's copies of a vertex (an STL's, an unwelded OBJ's)
+  // each moved its own way, and the surface came apart in flakes.
+  std::vector<glm::dvec3> corners;
+  corners.reserve(3 * mesh.triangles.size());
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) corners.push_back(mesh.positions[t[k]]);
+  const TriangleMesh joined = weldEqualPositions(corners);
+  constexpr uint32_t unused = UINT32_MAX;
+  std::vector<uint32_t> pointOf(mesh.positions.size(), unused);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) pointOf[mesh.triangles[t][k]] = joined.triangles[t][k];
+  const std::vector<glm::dvec3> normals = areaWeightedNormals(joined);
+  // One draw per vertex, used or not, in index order, so that a vertex's
+  // displacement depends only on its index and the seed; a point takes its
+  // first vertex's.
   PortableGaussian gaussian(seed);
-  // One draw per vertex, used or not, so that a vertex's displacement depends
-  // only on its index and the seed.
-  for (size_t i = 0; i < noisy.positions.size(); ++i) noisy.positions[i] += sigma * gaussian() * normals[i];
+  std::vector<double> pointDraw(joined.positions.size(), std::numeric_limits<double>::quiet_NaN());
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const double draw = gaussian();
+    if (pointOf[i] != unused && std::isnan(pointDraw[pointOf[i]])) pointDraw[pointOf[i]] = draw;
+  }
+  for (size_t i = 0; i < noisy.positions.size(); ++i)
+    if (pointOf[i] != unused) noisy.positions[i] += sigma * pointDraw[pointOf[i]] * normals[pointOf[i]];
   return noisy;
 }
 

@@ -8,7 +8,9 @@
 namespace lbmshape {
 
 // Moves every vertex along its area-weighted normal by a Gaussian amount of
-// standard deviation sigmaInMeanEdgeLengths x meanEdgeLength(mesh). The same
+// standard deviation sigmaInMeanEdgeLengths x meanEdgeLength(mesh); the
+// vertices at one position (a soup's copies of a corner) move as one, along
+// the normal of all their triangles, so the surface stays whole. The same
 // seed gives the same mesh on every machine and compiler (the generator and
 // the Gaussian are spelled out here, not left to the standard library). A
 // vertex without a normal (no triangle with area uses it) stays put. The

@@ -12,7 +12,7 @@
 
 namespace lbmshape {
 
-TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty)
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty, FlatMesh flat)
 {
   if (source.bytes.empty()) source.refuse("the file is empty");
   // A binary STL's 80-byte header is free text: a compressed STL is told
@@ -31,13 +31,13 @@ TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh emp
     mesh.positions.clear();  // nothing to check, nothing to draw
     return mesh;
   }
-  validateInputMesh(mesh, source.name);
+  validateInputMesh(mesh, source.name, flat);
   log::verbose("read " + source.name + ": " + std::to_string(mesh.vertexCount()) + " vertices, " +
                std::to_string(mesh.triangleCount()) + " triangles");
   return mesh;
 }
 
-TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty)
+TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty, FlatMesh flat)
 {
   const std::string name = path.string();
   const auto format = meshFormatOf(path);
@@ -46,7 +46,7 @@ TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty)
   if (!format)
     throw InputError("cannot read " + name + ": unknown mesh format '" + path.extension().string() + "' (use one of " +
                      supportedExtensions() + ")");
-  return readMesh(MeshSource{file.bytes(), name, path.parent_path()}, *format, empty);
+  return readMesh(MeshSource{file.bytes(), name, path.parent_path()}, *format, empty, flat);
 }
 
 }  // namespace lbmshape

@@ -22,9 +22,13 @@ namespace lbmshape {
 // the file. Normals are not read: lbmshape derives its own from the surface.
 // With EmptyMesh::Allowed a file of no triangles (a morph's frame while
 // the shape passes through nothing) is read as an empty mesh instead.
-TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused);
+// With FlatMesh::Allowed a flat mesh (one plane, a single triangle) is read
+// as it is.
+TriangleMesh readMesh(const std::filesystem::path& path, EmptyMesh empty = EmptyMesh::Refused,
+                      FlatMesh flat = FlatMesh::Refused);
 
 // The same for bytes already in memory; `source.name` names them in messages.
-TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty = EmptyMesh::Refused);
+TriangleMesh readMesh(const MeshSource& source, MeshFormat format, EmptyMesh empty = EmptyMesh::Refused,
+                      FlatMesh flat = FlatMesh::Refused);
 
 }  // namespace lbmshape

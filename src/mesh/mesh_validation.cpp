@@ -158,7 +158,7 @@ void requireWellFormed(const TriangleMesh& mesh, const std::string& name)
   }
 }
 
-void validateInputMesh(TriangleMesh& mesh, const std::string& name)
+void validateInputMesh(TriangleMesh& mesh, const std::string& name, FlatMesh flat)
 {
   const std::string prefix = "cannot read " + name + ": ";
   if (mesh.triangles.empty()) throw InputError(prefix + "it contains no triangles");
@@ -178,6 +178,7 @@ void validateInputMesh(TriangleMesh& mesh, const std::string& name)
         (copies == 1 ? " triangle that repeats another's corners" : " triangles that repeat another's corners"));
 
   refuseStrayVertices(mesh, prefix);
+  if (flat == FlatMesh::Allowed) return;
 
   if (mesh.triangles.size() == 1) throw InputError(prefix + "it is a single triangle, which encloses no volume");
   const Bounds box = bounds(mesh);

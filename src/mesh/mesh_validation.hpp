@@ -16,8 +16,9 @@ namespace lbmshape {
 // lies in one plane (which includes a single triangle). Otherwise removes the
 // degenerate triangles and those that repeat an earlier one's corners in the
 // same turn (a warning says how many of each) and returns. Vertices no
-// triangle uses are allowed and kept.
-void validateInputMesh(TriangleMesh& mesh, const std::string& name);
+// triangle uses are allowed and kept. With FlatMesh::Allowed a flat mesh
+// passes.
+void validateInputMesh(TriangleMesh& mesh, const std::string& name, FlatMesh flat = FlatMesh::Refused);
 
 // Its first checks alone, which change nothing: every index in range and
 // every coordinate finite and within single precision (what a function

@@ -24,6 +24,11 @@ static_assert(sizeof(glm::dvec3) == 3 * sizeof(double) && sizeof(glm::uvec3) == 
 // a morph's frame may be empty while the shape passes through nothing, and
 // is written as a file with no triangles, which render draws as such.
 enum class EmptyMesh { Refused, Allowed };
+// Whether a mesh that encloses no volume because it is flat (all in one
+// plane, a single triangle) is refused: what must be solid (an input to
+// smooth or morph) refuses it, what only measures or draws a surface
+// (compare, noise, render) takes it.
+enum class FlatMesh { Refused, Allowed };
 
 struct TriangleMesh {
   std::vector<glm::dvec3> positions;

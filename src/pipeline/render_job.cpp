@@ -250,7 +250,7 @@ nlohmann::json renderFiles(const std::vector<fs::path>& paths, const fs::path& p
   clock.time("read", [&] {
     // A morph's frame may hold no triangles (the shape passing through
     // nothing): drawn as an empty panel, as its --preview does.
-    for (const fs::path& f : files) meshes.push_back(readMesh(f, EmptyMesh::Allowed));
+    for (const fs::path& f : files) meshes.push_back(readMesh(f, EmptyMesh::Allowed, FlatMesh::Allowed));
   });
   std::vector<ShownMesh> shown;
   nlohmann::json panels = nlohmann::json::array();

@@ -591,6 +591,34 @@ TEST(CompareCli, IdenticalMeshesAreAtDistanceZero)
   EXPECT_TRUE(j["b"]["closed_manifold"].get<bool>());
 }
 
+// compare and noise need no inside: a flat sheet (and a single triangle)
+// is measured and made noisy, where denoise refuses it ("encloses no
+// volume"); both were refused.
+TEST(CompareCli, FlatMeshesAreComparedAndMadeNoisy)
+{
+  testing::ScratchFolder folder;
+  const auto flat = (folder / "flat.obj").string(), wavy = (folder / "wavy.obj").string(),
+             single = (folder / "single.obj").string();
+  writeMesh(testing::sheet(8, [](double u, double v) { return glm::dvec3(u, v, 0.0); }), flat);
+  writeMesh(testing::sheet(8, [](double u, double v) { return glm::dvec3(u, v, 0.05 * std::sin(6.0 * u)); }), wavy);
+  TriangleMesh triangle;
+  triangle.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  triangle.triangles = {{0, 1, 2}};
+  writeMesh(triangle, single);
+  const testing::CliResult r = testing::runLbmshape({"compare", flat, wavy, "--json", "--samples", "2000"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["hausdorff"].get<double>(), 0.05, 0.01);
+  EXPECT_GT(j["a"]["boundary_edges"].get<int>(), 0);
+  EXPECT_EQ(testing::runLbmshape({"compare", single, flat}).exitCode, 0);
+  const testing::CliResult noisy =
+      testing::runLbmshape({"noise", flat, (folder / "noisy.obj").string(), "--sigma", "0.2"});
+  EXPECT_EQ(noisy.exitCode, 0) << noisy.err;
+  const testing::CliResult refused = testing::runLbmshape({"denoise", flat, (folder / "out.glb").string()});
+  EXPECT_EQ(refused.exitCode, 3);
+  EXPECT_NE(refused.err.find("encloses no volume"), std::string::npos) << refused.err;
+}
+
 TEST(NoiseCli, WritesANoisyCopyAndIsRepeatable)
 {
   testing::ScratchFolder folder;

@@ -53,10 +53,20 @@ protected:
   fs::path input_;
 };
 
+// What only a grid cannot hold (parts a million times their size apart:
+// flat on any grid) compare measures, as it does a flat mesh; the rest it
+// refuses as denoise does.
+bool onlyAGridCannotHold(const MeshFileCase& c) { return c.refusal.find("flat on any grid") != std::string::npos; }
+
 TEST_P(HostileFileCli, CompareRefusesIt)
 {
-  expectRefused(
-      testing::runLbmshapeWithin(fourGigabytes, {"compare", input_.string(), (folder_ / "cube.obj").string(), "-q"}));
+  const auto result =
+      testing::runLbmshapeWithin(fourGigabytes, {"compare", input_.string(), (folder_ / "cube.obj").string(), "-q"});
+  if (onlyAGridCannotHold(GetParam())) {
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    return;
+  }
+  expectRefused(result);
 }
 
 TEST_P(HostileFileCli, DenoiseRefusesIt)

@@ -1,7 +1,9 @@
 // Test-input noise: Gaussian along the normals, of the asked size, and the
 // same for the same seed.
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -62,6 +64,33 @@ TEST(Noise, ZeroSigmaChangesNothing)
 {
   const TriangleMesh sphere = testing::icosphere(2);
   EXPECT_EQ(addNormalNoise(sphere, 0.0, 1).positions, sphere.positions);
+}
+
+// A soup (each triangle its own three corners, as STL stores it): the
+// copies of a corner move as one, so the noisy soup is the noisy mesh's,
+// whole. They moved apart, by two sigmas at the median.
+TEST(Noise, ASoupsCopiesOfACornerMoveTogether)
+{
+  const TriangleMesh sphere = testing::icosphere(3);
+  TriangleMesh soup;
+  for (const glm::uvec3& t : sphere.triangles) {
+    const uint32_t first = uint32_t(soup.positions.size());
+    for (int k = 0; k < 3; ++k) soup.positions.push_back(sphere.positions[t[k]]);
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  const TriangleMesh noisySoup = addNormalNoise(soup, 0.3, 7);
+  std::map<std::tuple<double, double, double>, glm::dvec3> movedTo;  // each corner's first copy
+  size_t moved = 0;
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    const glm::dvec3& p = soup.positions[i];
+    const auto [at, first] = movedTo.try_emplace({p.x, p.y, p.z}, noisySoup.positions[i]);
+    if (!first) {
+      EXPECT_EQ(noisySoup.positions[i], at->second) << "corner " << i;
+    }
+    moved += noisySoup.positions[i] != p;
+  }
+  EXPECT_GT(moved, soup.positions.size() / 2);  // it is noisy
+  EXPECT_EQ(movedTo.size(), sphere.positions.size());
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ void runDenoise(const CommonOptions& common, DenoiseArguments& a)
   if (a.preserveFeatures) a.options.smoothing = Smoothing::PreserveFeatures;
   if (!a.preview.empty()) a.options.preview = a.preview;
   a.options.colourByCurvature = a.colour == "curvature";
-  checkDenoiseOptions(a.options);  // before the device is opened
+  checkDenoiseFileArguments(a.output, a.options);  // before the device is opened (and all run --check does)
   if (common.checkOnly) return;
   DenoiseResult result = denoiseFile(a.input, a.output, a.options, common.computeDevice());
   common.report(result.report);

@@ -178,6 +178,11 @@ Environment:
     if (!std::cout.flush())
       return fail(ExitCode::Output,
                   "cannot write the results to standard output (is the disk full, or the pipe closed?)");
+    // A signal that came after the last check (while the last figures were
+    // made, the device closed): the outputs are complete, but the process
+    // was asked to stop and says so, so that a shell loop stops too (it
+    // went on after an exit code of 0).
+    interrupt::check("every output was complete");
     return 0;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

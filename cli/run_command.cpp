@@ -295,7 +295,8 @@ void runJobs(CommonOptions& common, const RunArguments& a)
     const std::string count = std::to_string(wrong.size()) + " of " + std::to_string(jobsInPart) + " jobs";
     if (a.failFast) {
       const auto& [index, message] = *wrong.begin();
-      common.report(runReport(a, jobs, 1, 1, false, nlohmann::json::array({failureOf(jobs, index, message)})));
+      // No job ran (as --check reports it); the wrong one is the failure.
+      common.report(runReport(a, jobs, 0, 1, false, nlohmann::json::array({failureOf(jobs, index, message)})));
       throw UsageError(count + " have wrong options, found before any job ran (--fail-fast); first: " + message);
     }
     log::warning(count + " have wrong options and will fail when their turn comes; first: " + wrong.begin()->second);

@@ -43,9 +43,14 @@ void requireCompressible(MeshFormat format, const std::filesystem::path& path, G
 
 }  // namespace
 
-void checkMeshDestination(const std::filesystem::path& path, GltfCompression compression)
+void checkMeshFormat(const std::filesystem::path& path, GltfCompression compression)
 {
   requireCompressible(outputFormat(path), path, compression);
+}
+
+void checkMeshDestination(const std::filesystem::path& path, GltfCompression compression)
+{
+  checkMeshFormat(path, compression);
   AtomicFile probe(path);  // created and, uncommitted, removed again
 }
 

@@ -48,6 +48,8 @@ void commitMesh(AtomicFile& file, size_t vertices, size_t triangles);
 // that is not .glb), OutputError for a missing or unwritable folder (tested
 // by creating and removing a temporary file).
 void checkMeshDestination(const std::filesystem::path& path, GltfCompression compression = GltfCompression::None);
+// Its UsageErrors alone, which need no folder: for `run --check`.
+void checkMeshFormat(const std::filesystem::path& path, GltfCompression compression = GltfCompression::None);
 
 // UsageError when `output` is the file `input` (the same path, a link to it,
 // or a hard link): writing the result there would replace the input, which

@@ -28,6 +28,7 @@
 #include "lbmshape/pipeline/smoothing_stop.hpp"
 #include "lbmshape/pipeline/twicing.hpp"
 #include "lbmshape/render/curvature_colours.hpp"
+#include "lbmshape/render/png_file.hpp"
 #include "lbmshape/pipeline/stage_clock.hpp"
 #include "lbmshape/lbm/band_width.hpp"
 #include "lbmshape/sdf/band_signed_distance.hpp"
@@ -508,6 +509,14 @@ void checkDenoiseOptions(const DenoiseOptions& o)
   if (o.relaxRounds < 0 || o.relaxRounds > maxRelaxationRounds)
     throw UsageError(nameOf(Parameter::Relax) + " must be from 0 to " + std::to_string(maxRelaxationRounds));
   checkGridAndNoise(o.grid, o.noise);
+  if (o.preview) render::requirePngPath(*o.preview, nameOf(Parameter::Preview));
+}
+
+void checkDenoiseFileArguments(const std::filesystem::path& output, const DenoiseOptions& o)
+{
+  checkDenoiseOptions(o);
+  checkMeshFormat(output, o.compression);
+  if (o.colourByCurvature) requireColourFormat(output, output.string());
 }
 
 void requireColourFormat(const std::filesystem::path& output, const std::string& what)
@@ -688,7 +697,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
 {
   const log::WarningCollector warnings;
   const interrupt::CallStop ownStop(o.stop);
-  checkDenoiseOptions(o);
+  checkDenoiseFileArguments(output, o);
   warnIfFewGivenSteps(o);
   checkNotTheInput(output, input, o.replaceInput);
   checkMeshDestination(output, o.compression);

@@ -87,8 +87,12 @@ struct DenoiseResult {
   nlohmann::json report;  // counts, grid, timings, volume change, MLUPS
 };
 
-// Checks the options (UsageError) before any work.
+// Checks the options (UsageError) before any work; a preview's name too.
 void checkDenoiseOptions(const DenoiseOptions& options);
+// denoiseFile's UsageErrors, which need no file and no device: the options,
+// and the output's format with its compression and colours. What `run
+// --check` finds of a denoise job.
+void checkDenoiseFileArguments(const std::filesystem::path& output, const DenoiseOptions& options);
 // The checks of the grid and noise options, which morph shares.
 void checkGridAndNoise(const GridOptions& grid, const FieldNoise& noise);
 

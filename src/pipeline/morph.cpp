@@ -37,6 +37,7 @@
 #include "lbmshape/pipeline/staged_frames.hpp"
 #include "lbmshape/pipeline/render_job.hpp"
 #include "lbmshape/render/curvature_colours.hpp"
+#include "lbmshape/render/png_file.hpp"
 #include "lbmshape/pipeline/stage_clock.hpp"
 
 namespace lbmshape {
@@ -234,6 +235,7 @@ void checkMorphOptions(const MorphOptions& o)
                      o.format);
   if (o.colourByCurvature) requireColourFormat("x." + o.format, nameOf(Parameter::Format) + " " + o.format);
   checkGridAndNoise(o.grid, o.noise);
+  if (o.preview) render::requirePngPath(*o.preview, nameOf(Parameter::Preview));
 }
 
 namespace {

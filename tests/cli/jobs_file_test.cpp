@@ -152,6 +152,37 @@ TEST_F(JobsFile, WrongOptionsAreFoundBeforeAnyJobRuns)
   EXPECT_FALSE(fs::exists(folder / "frames")) << "--check runs nothing";
 }
 
+// An output of no mesh format and a preview that is not .png are usage
+// errors of the job's options: --check finds them, and --fail-fast stops
+// before any job (both let them through, and the first job ran).
+TEST_F(JobsFile, OutputAndPreviewNamesAreCheckedBeforeAnyJobRuns)
+{
+  nlohmann::json jobs = nlohmann::json::array(
+      {{{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "a.glb"}, {"res", 20}},
+       {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "i.xyz"}, {"res", 20}},
+       {{"command", "denoise"}, {"input", "sphere.obj"}, {"output", "b.glb"}, {"preview", "p.jpg"}},
+       {{"command", "morph"},
+        {"source", "sphere.obj"},
+        {"target", "torus.obj"},
+        {"output", "m"},
+        {"preview", "m.jpg"}}});
+  const fs::path file = write(jobs);
+  testing::CliResult check = testing::runLbmshape({"run", file.string(), "--check", "--json"});
+  EXPECT_EQ(check.exitCode, 2) << check.err;
+  const auto checked = nlohmann::json::parse(check.out);
+  EXPECT_EQ(checked["failed"], 3);
+  EXPECT_NE(checked["results"][1]["error"].get<std::string>().find("unknown mesh format '.xyz'"), std::string::npos)
+      << checked["results"][1];
+  EXPECT_NE(checked["results"][2]["error"].get<std::string>().find("p.jpg must be a .png file"), std::string::npos)
+      << checked["results"][2];
+  EXPECT_NE(checked["results"][3]["error"].get<std::string>().find("m.jpg must be a .png file"), std::string::npos)
+      << checked["results"][3];
+  testing::CliResult failFast = testing::runLbmshape({"run", file.string(), "--fail-fast", "--json"});
+  EXPECT_EQ(failFast.exitCode, 2) << failFast.err;
+  EXPECT_FALSE(fs::exists(folder / "a.glb")) << "no job ran";
+  EXPECT_EQ(nlohmann::json::parse(failFast.out)["run"], 0);
+}
+
 // A job that reads what another job writes after it, or in another part of
 // --shard (the parts run side by side), is warned about, naming both jobs:
 // it would read an older file, or none. A frame in a morph's folder counts

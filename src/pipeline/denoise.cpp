@@ -705,6 +705,7 @@ DenoiseResult denoiseFile(const std::filesystem::path& input, const std::filesys
   const ComputeDevice::Turn turn = device.takeTurn();
   if (o.preview) checkPreview(*o.preview, device);
   StageClock clock([&device] { return device.deviceBusyMs(); });
+  clock.describeProgressWith([] { return std::string("nothing was written"); });  // until the commit
 
   TriangleMesh mesh = clock.time("read", [&] { return readMesh(input); });
   const MeshTopology inputTopology = orientTheInput(mesh, input.string());

@@ -102,13 +102,22 @@ void refuseShapesSmallerThanAVoxel(const TriangleMesh& source, const TriangleMes
     return std::max({size.x, size.y, size.z});
   };
   const double sourceSize = across(source), targetSize = across(target);
+  const Bounds a = bounds(source), b = bounds(target);
+  const glm::dvec3 bothSize3 = glm::max(a.max, b.max) - glm::min(a.min, b.min);
+  const double bothSize = std::max({bothSize3.x, bothSize3.y, bothSize3.z});
   for (const auto& [path, size, other, otherSize] : {std::tuple{&sourcePath, sourceSize, &targetPath, targetSize},
                                                      std::tuple{&targetPath, targetSize, &sourcePath, sourceSize}}) {
     if (size >= voxel) continue;
+    // The grid spans both shapes: the larger one sets it, or, where they
+    // lie far apart, the distance between them does.
+    const std::string setBy =
+        bothSize > 1.01 * std::max(sourceSize, targetSize)
+            ? "the two shapes set together, lying apart (" + threeSignificantDigits(bothSize) + " across both)"
+            : other->string() + " (" + threeSignificantDigits(otherSize) + " across) sets";
     throw InputError(
         "cannot use " + path->string() + ": it is " + threeSignificantDigits(size) + " across, less than a voxel (" +
-        threeSignificantDigits(voxel) + ") of the grid the two shapes share, whose size " + other->string() + " (" +
-        threeSignificantDigits(otherSize) + " across) sets, so it would enclose no cell" +
+        threeSignificantDigits(voxel) + ") of the grid the two shapes share, whose size " + setBy +
+        ", so it would enclose no cell" +
         (align != Alignment::Fit ? "; " + nameOf(Parameter::Align) + " fit scales the target onto the source" : ""));
   }
 }
@@ -450,7 +459,9 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
   }
   // The writer's last frames, made and committed after the lattice's last
   // step: timed, so that the whole process's time adds up.
+  clock.describeProgressWith(whatWasDone);
   std::vector<TriangleMesh> meshes = clock.time("last_frames", [&] { return writer.finish(); });
+  clock.describeProgressWith([&] { return framesDone(o.frames); });
   const int steps = currentStep;  // the last frame's (a converged morph may have run one more)
   const double updates = double(lattice->cells()) * solver.stepsTaken();
   const nlohmann::json latticeDescription = lattice->describe();
@@ -485,6 +496,11 @@ nlohmann::json runMorph(TriangleMesh source, TriangleMesh target, const fs::path
     clock.time("animation", [&] { animation->write(); });
   }
   if (staged) staged->commit();
+  clock.describeProgressWith([&] {
+    return to.folder ? "every frame" + std::string(animation ? " and the animation" : "") + " complete in " +
+                           to.folder->path().string()
+                     : "every frame made";
+  });
   device.requireCleanValidation();
   if (to.folder && o.preview)
     clock.time("preview",

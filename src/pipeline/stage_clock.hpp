@@ -27,12 +27,13 @@ public:
   // took over a second, so slow stages are never silent; else with --verbose).
   // A stage running longer than a second shows a progress line meanwhile;
   // `work` that takes a Progress& reports how far it is through it.
-  // Ctrl-C (see core/interrupt.hpp) is honoured before each stage starts.
+  // Ctrl-C (see core/interrupt.hpp) is honoured before each stage starts,
+  // saying what is complete (describeProgressWith).
   template <class Work>
   decltype(auto) time(const std::string& name, Work&& work)
   {
     // (The message follows what stopped it: "interrupted: ", "stopped: ".)
-    interrupt::check("before the " + name + " stage");
+    interrupt::check([&] { return whatIsDone_ ? whatIsDone_() : "before the " + name + " stage"; });
     Stopwatch watch;
     struct Record {
       StageClock& clock;
@@ -54,6 +55,12 @@ public:
       return std::forward<Work>(work)();
   }
 
+  // What a stop before the next stage says is complete ("nothing was
+  // written", "12 complete frames in frames/"), as the job knows it; by
+  // default the stage it stopped before, which told a user nothing of the
+  // files.
+  void describeProgressWith(std::function<std::string()> whatIsDone) { whatIsDone_ = std::move(whatIsDone); }
+
   // Adds `ms` to the stage's total (stages repeated per frame accumulate).
   void record(const std::string& name, double ms);
   // The same for the device's busy time within the stage.
@@ -72,6 +79,7 @@ public:
 private:
   std::vector<std::pair<std::string, double>> stages_, deviceStages_;
   std::function<double()> deviceMs_;
+  std::function<std::string()> whatIsDone_;  // describeProgressWith
   Stopwatch total_;
 };
 

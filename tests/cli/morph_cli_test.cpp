@@ -533,6 +533,16 @@ TEST_F(MorphCli, AShapeSmallerThanAVoxelIsNamedWithItsSize)
       << r.err;
   EXPECT_NE(r.err.find("--align fit scales the target onto the source"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("sdf"), std::string::npos) << "before the distances: " << r.err;
+  EXPECT_NE(r.err.find(sphere + " (2 across) sets"), std::string::npos) << r.err;
+
+  // Far from the sphere, the distance between them sets the grid, not the
+  // sphere (the message named the sphere's size).
+  const fs::path far = folder / "far.obj";
+  writeMesh(testing::icosphere(2, 0.3, {1e3, 0.0, 0.0}), far);
+  const testing::CliResult apart = testing::runLbmshape(
+      {"morph", sphere, far.string(), (folder / "apart").string(), "--res", "16", "--align", "none"});
+  EXPECT_EQ(apart.exitCode, 3) << apart.err;
+  EXPECT_NE(apart.err.find("whose size the two shapes set together, lying apart"), std::string::npos) << apart.err;
 }
 
 // A folder that cannot be made is an output error before any work.

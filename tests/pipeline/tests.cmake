@@ -16,6 +16,7 @@ lbmshape_test(pipeline_tests
   ${CMAKE_CURRENT_LIST_DIR}/shared_device_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_radius_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/smoothing_stop_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/stage_clock_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/twicing_test.cpp
 )
 lbmshape_shared_asset_test(pipeline_shared_mesh_tests

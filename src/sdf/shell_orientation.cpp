@@ -119,13 +119,40 @@ glm::dvec3 centroid(const TriangleMesh& mesh, const std::vector<uint32_t>& piece
   return sum / double(3 * piece.size());
 }
 
+// Points just behind a closed piece's outermost triangles along each axis
+// and ten spread over its list: where it is judged to lie inside others.
+// One point, its first triangle's, let the file's order decide whether a
+// shell pushed partly through another (a pin through a ball) was a cavity.
+std::vector<glm::dvec3> probePoints(const TriangleMesh& mesh, const std::vector<uint32_t>& piece)
+{
+  std::vector<glm::dvec3> points;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto along = [&](uint32_t t) { return mesh.positions[mesh.triangles[t][0]][axis]; };
+    const auto [lowest, highest] =
+        std::minmax_element(piece.begin(), piece.end(), [&](uint32_t a, uint32_t b) { return along(a) < along(b); });
+    points.push_back(justBehind(mesh, *lowest));
+    points.push_back(justBehind(mesh, *highest));
+  }
+  constexpr size_t spread = 10;
+  for (size_t k = 0; k < spread; ++k) points.push_back(justBehind(mesh, piece[k * piece.size() / spread]));
+  return points;
+}
+
+// Whether all the points lie inside what `tree` holds (|w| >= 1/2).
+bool allInside(const std::vector<glm::dvec3>& points, const TriangleBvh& tree)
+{
+  return std::all_of(points.begin(), points.end(),
+                     [&](const glm::dvec3& p) { return std::abs(tree.windingNumber(p)) >= 0.5; });
+}
+
 // A mirrored hollow part: its outer shell faces in, and is turned, but the
 // shell of its cavity, mirrored too, faces out, and the part came out solid.
 // So every closed piece inside a shell just turned is made to face as its
 // depth among them says: in (a cavity) inside an odd number of them, out
 // inside an even number (a ball in the cavity). Returns how many turned.
-// Depth is counted with each piece's own winding number, so pieces that
-// overlap without nesting count as holding each other only where they do.
+// A piece holds another when all of the other's probe points lie inside it
+// (its own winding number): pieces that overlap without nesting (a pin
+// through a ball) hold nothing.
 size_t faceTheNestedByDepth(TriangleMesh& mesh, const std::vector<std::vector<uint32_t>>& pieces,
                             const std::vector<uint32_t>& closedPieces, const std::vector<uint32_t>& turnedOuter)
 {
@@ -136,22 +163,19 @@ size_t faceTheNestedByDepth(TriangleMesh& mesh, const std::vector<std::vector<ui
   std::vector<uint32_t> nested;
   for (const uint32_t id : closedPieces) {
     if (std::find(turnedOuter.begin(), turnedOuter.end(), id) != turnedOuter.end()) continue;
-    const glm::dvec3 point = mesh.positions[mesh.triangles[pieces[id].front()][0]];
-    for (const TriangleBvh& outer : trees)
-      if (std::abs(outer.windingNumber(point)) >= 0.5) {
-        nested.push_back(id);
-        break;
-      }
+    const std::vector<glm::dvec3> points = probePoints(mesh, pieces[id]);
+    if (std::any_of(trees.begin(), trees.end(), [&](const TriangleBvh& outer) { return allInside(points, outer); }))
+      nested.push_back(id);
     if (nested.size() > mostNested) return 0;
   }
   for (const uint32_t id : nested) trees.emplace_back(pieceAlone(mesh, pieces[id]));
   involved.insert(involved.end(), nested.begin(), nested.end());
   size_t turned = 0;
   for (const uint32_t id : nested) {
-    const glm::dvec3 point = mesh.positions[mesh.triangles[pieces[id].front()][0]];
+    const std::vector<glm::dvec3> points = probePoints(mesh, pieces[id]);
     int depth = 0;
     for (size_t k = 0; k < involved.size(); ++k)
-      if (involved[k] != id && std::abs(trees[k].windingNumber(point)) >= 0.5) ++depth;
+      if (involved[k] != id && allInside(points, trees[k])) ++depth;
     const bool shouldFaceIn = depth % 2 == 1;
     if ((signedVolume(mesh, pieces[id]) < 0.0) != shouldFaceIn) {
       for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
@@ -159,6 +183,42 @@ size_t faceTheNestedByDepth(TriangleMesh& mesh, const std::vector<std::vector<ui
     }
   }
   return turned;
+}
+
+// Open pieces inside out (a mirrored scan, whole or in pieces) have a
+// winding number of about -1 where they are solid, and enclosed nothing.
+// A piece is turned when, at its corners' centroid, its own winding number
+// and the whole mesh's are both -3/4 or less: a scan with holes has about
+// -1 there, while a sheet curved over its centroid (a hump) may pass -1/2
+// (-0.56 under the sine hump of the tests) and a shape whose centroid lies
+// outside it (a ring) about 0, and are left; the whole mesh's keeps the
+// inner wall of a holed hollow part (-1 alone, 0 with the outer wall that
+// holds it) as it faces. Where no piece alone is so, the open pieces
+// together are judged the same way at their common centroid (a scan in
+// patches, every patch reversed). Returns how many were turned.
+size_t turnOpenPiecesInsideOut(TriangleMesh& mesh, const std::vector<std::vector<uint32_t>>& pieces,
+                               const std::vector<uint32_t>& openPieces)
+{
+  if (openPieces.empty()) return 0;
+  constexpr double deepInside = -0.75;
+  std::optional<TriangleBvh> whole;
+  if (pieces.size() > 1) whole.emplace(mesh);
+  const auto insideOutAt = [&](const std::vector<uint32_t>& triangles) {
+    const glm::dvec3 c = centroid(mesh, triangles);
+    return TriangleBvh(pieceAlone(mesh, triangles)).windingNumber(c) <= deepInside &&
+           (!whole || whole->windingNumber(c) <= deepInside);
+  };
+  std::vector<uint32_t> turned;
+  for (const uint32_t id : openPieces)
+    if (pieces[id].size() >= 4 && insideOutAt(pieces[id])) turned.push_back(id);
+  if (turned.empty() && openPieces.size() > 1) {
+    std::vector<uint32_t> together;
+    for (const uint32_t id : openPieces) together.insert(together.end(), pieces[id].begin(), pieces[id].end());
+    if (insideOutAt(together)) turned = openPieces;
+  }
+  for (const uint32_t id : turned)
+    for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
+  return turned.size();
 }
 
 }  // namespace
@@ -220,26 +280,14 @@ Reorientation orientShells(TriangleMesh& mesh)
     if (pieces.size() > 1) tree.emplace(mesh);
     std::vector<uint32_t> insideOut;
     for (const uint32_t id : facingIn)
-      if (!tree || std::abs(tree->windingNumber(justBehind(mesh, pieces[id].front()))) < 0.5) insideOut.push_back(id);
+      if (!tree || !allInside(probePoints(mesh, pieces[id]), *tree)) insideOut.push_back(id);
     for (const uint32_t id : insideOut)
       for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
     done.shellsTurned = insideOut.size();
     if (!insideOut.empty() && closedPieces.size() > insideOut.size())
       done.nestedShellsTurned = faceTheNestedByDepth(mesh, pieces, closedPieces, insideOut);
   }
-  // An open piece inside out (a mirrored scan) has a winding number of
-  // about -1 where it is solid, and enclosed nothing. Turned when its
-  // corners' centroid lies deep inside it so reckoned (w <= -3/4): a scan
-  // with holes has about -1 there, while a sheet curved over its centroid
-  // (a hump) may pass -1/2 (-0.56 under the sine hump of the tests) and is
-  // left, as is a shape whose centroid lies outside it (a ring).
-  for (const uint32_t id : openPieces) {
-    const TriangleBvh own(pieceAlone(mesh, pieces[id]));
-    if (own.windingNumber(centroid(mesh, pieces[id])) <= -0.75) {
-      for (const uint32_t t : pieces[id]) turnOver(mesh.triangles[t]);
-      ++done.openPiecesTurned;
-    }
-  }
+  done.openPiecesTurned = turnOpenPiecesInsideOut(mesh, pieces, openPieces);
   return done;
 }
 

@@ -3,6 +3,7 @@
 // and a one-sided surface are left as they are.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -126,6 +127,69 @@ TEST(ShellOrientation, AnOpenScanInsideOutIsTurned)
     EXPECT_EQ(orientShells(kept).openPiecesTurned, 0u);
     EXPECT_EQ(kept.triangles, way.triangles);
   }
+}
+
+// A ball reversed with a pin (a long box) pushed through its poles: the
+// ball is partly inside the pin, not a cavity, and is turned, whichever of
+// its triangles comes first in the file (one, the first, decided it); the
+// pin reversed instead is turned and the ball left, not taken for a cavity
+// of the pin.
+TEST(ShellOrientation, AShellPushedThroughAnotherIsNoCavityInAnyOrder)
+{
+  const TriangleMesh ball = testing::icosphere(3), pin = testing::box({-0.2, -0.2, -1.5}, {0.2, 0.2, 1.5});
+  for (const bool reverseTheBall : {true, false}) {
+    const TriangleMesh right = testing::merged(ball, pin);
+    TriangleMesh assembly =
+        reverseTheBall ? testing::merged(turnedOver(ball), pin) : testing::merged(ball, turnedOver(pin));
+    std::mt19937 random(3);
+    for (int order = 0; order < 3; ++order) {
+      TriangleMesh shuffled = assembly;
+      std::shuffle(shuffled.triangles.begin(), shuffled.triangles.end(), random);
+      const Reorientation r = orientShells(shuffled);
+      EXPECT_EQ(r.shellsTurned, 1u) << reverseTheBall << " " << order;
+      EXPECT_EQ(r.nestedShellsTurned, 0u) << reverseTheBall << " " << order;
+      EXPECT_GT(analyzeTopology(shuffled).signedVolume, analyzeTopology(right).signedVolume - 1e-9);
+      EXPECT_NEAR(analyzeTopology(shuffled).signedVolume, analyzeTopology(right).signedVolume, 1e-9);
+    }
+  }
+}
+
+// A hollow ball with a hole through both walls: its outer wall faces out,
+// its inner wall in, as they should; both open. The inner wall alone has a
+// winding number of -1 at its centroid, but inside the outer wall the whole
+// mesh has 0 there: it is left (it was turned, and the cavity filled). The
+// same scan cut in patches, every patch reversed, is turned as a whole.
+TEST(ShellOrientation, AnOpenInnerWallIsLeftAndAScanInPatchesIsTurned)
+{
+  const auto cut = [](const TriangleMesh& sphere, const std::function<bool(const glm::dvec3&)>& keep) {
+    TriangleMesh kept;
+    kept.positions = sphere.positions;
+    for (const glm::uvec3& t : sphere.triangles)
+      if (keep((sphere.positions[t.x] + sphere.positions[t.y] + sphere.positions[t.z]) / 3.0))
+        kept.triangles.push_back(t);
+    return kept;
+  };
+  const auto awayFromTheHole = [](const glm::dvec3& c) { return c.z < 0.9 * glm::length(c); };
+  const TriangleMesh holed = testing::merged(cut(testing::icosphere(3), awayFromTheHole),
+                                             turnedOver(cut(testing::icosphere(3, 0.6), awayFromTheHole)));
+  TriangleMesh kept = holed;
+  EXPECT_EQ(orientShells(kept).openPiecesTurned, 0u);
+  EXPECT_EQ(kept.triangles, holed.triangles);
+
+  // Four patches of a sphere (quadrants in x and y, apart), each reversed.
+  const TriangleMesh sphere = testing::icosphere(3);
+  TriangleMesh patches;
+  patches.positions = sphere.positions;
+  for (const bool east : {false, true})
+    for (const bool north : {false, true}) {
+      const TriangleMesh quadrant = turnedOver(cut(sphere, [&](const glm::dvec3& c) {
+        return (c.x > 0.0) == east && (c.y > 0.0) == north && std::abs(c.x) > 0.06 && std::abs(c.y) > 0.06;
+      }));
+      patches.triangles.insert(patches.triangles.end(), quadrant.triangles.begin(), quadrant.triangles.end());
+    }
+  const Reorientation r = orientShells(patches);
+  EXPECT_EQ(r.openPiecesTurned, 4u);
+  EXPECT_GT(analyzeTopology(patches).signedVolume, 3.0);
 }
 
 TEST(ShellOrientation, AnOpenSheetKeepsTheWayMostOfItFaced)

@@ -422,6 +422,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
                          const ComputeDevice& device, StageClock& clock)
 {
   double halfWidth = bandHalfWidth(o);
+  bool holesLeftOpen = false;  // a band wide enough to close them did not fit
   const BandRunKind kind{.paperRule = o.smoothing == Smoothing::Anisotropic};
   SignedDistanceStats distanceStats;
   BandField field = clock.time("sdf", [&](Progress& progress) {
@@ -451,6 +452,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
         log::warning("the result is left open where the surface that closes the input's holes lies more than " +
                      std::to_string(int(halfWidth)) + " voxels from its triangles: a band " +
                      std::to_string(int(wider)) + " voxels wide would hold it, but " + e.what());
+        holesLeftOpen = true;
         break;
       }
       halfWidth = wider;
@@ -472,6 +474,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   return {surfaceKeepingTheVolume(smoothed.field, frame, meshVolume, shift, finish, clock),
           {{"kind", "band"},
            {"half_width", halfWidth},
+           {"holes_left_open", holesLeftOpen},
            {"bricks", bricks.activeCount()},
            {"cells", bricks.storedCells()},
            {"fraction_of_grid", double(bricks.storedCells()) / double(frame.extent.cells())}},
@@ -657,6 +660,14 @@ void describeTheMeshes(nlohmann::json& report, const TriangleMesh& input, const 
 {
   sayWhereTheInputIsOpen(inputTopology, name, "the result closes it");
   const MeshTopology outputTopology = analyzeTopology(result);
+  // Marching cubes closes every surface inside the lattice: an open result
+  // ran out of it. The band says so itself where it could not widen.
+  if (outputTopology.boundaryEdges > 0 && !report["lattice"].value("holes_left_open", false))
+    log::warning("the result is open (" + std::to_string(outputTopology.boundaryEdges) +
+                 " edges in one triangle only): the inside that " + name +
+                 " encloses (its winding number above 1/2, which over an open mesh's holes may bulge past its rim) "
+                 "reaches the edge of the grid; a wider " +
+                 nameOf(Parameter::Margin) + " holds more of it");
   warnIfThePartsChanged(input, inputTopology, "the input", outputTopology, "the result",
                         report["grid"]["voxel"].get<double>());
   report["command"] = "denoise";

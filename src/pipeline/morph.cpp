@@ -236,6 +236,10 @@ void checkMorphOptions(const MorphOptions& o)
     throw UsageError(nameOf(Parameter::Tolerance) + " must be above 0 and at most " +
                      numberText(parameter_bounds::maxTolerance) + " voxel, not " + numberText(o.tolerance) +
                      " (a last frame further from the target's field than that is not at the target)");
+  // ".obj" named frame_0000..obj: the extension is the format's, dot aside.
+  if (!o.format.empty() && o.format.front() == '.')
+    throw UsageError(nameOf(Parameter::Format) + " " + o.format + ": give the format without its dot (" +
+                     o.format.substr(1) + ")");
   if (!meshFormatOf("x." + o.format))
     throw UsageError(nameOf(Parameter::Format) + " " + o.format +
                      " is not a mesh format (use glb, gltf, obj, ply, off or stl)");

@@ -97,6 +97,9 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"morph_fps_too_high_to_time",
                   {"morph", "a.obj", "b.obj", "frames", "--fps", "1e300"},
                   "--fps 1e+300 does not fit the animation: 48 frames at 1e+300 per second are closer together"},
+        UsageCase{"morph_format_with_its_dot",
+                  {"morph", "a.obj", "b.obj", "frames", "--format", ".obj"},
+                  "--format .obj: give the format without its dot (obj)"},
         // Subnormal key times: the second and third were one float.
         UsageCase{"morph_fps_subnormal_key_times",
                   {"morph", "a.obj", "b.obj", "frames", "--frames", "4", "--fps", "1e45"},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/interrupt.hpp"
@@ -11,6 +12,7 @@
 #include "lbmshape/sdf/band_distance.hpp"
 #include "lbmshape/sdf/cell_space.hpp"
 #include "lbmshape/sdf/far_field.hpp"
+#include "lbmshape/sdf/hole_radius.hpp"
 #include "lbmshape/sdf/triangle_bvh.hpp"
 #include "lbmshape/sdf/winding_gradient_bound.hpp"
 #include "lbmshape/sdf/winding_sign.hpp"
@@ -18,13 +20,44 @@
 namespace lbmshape {
 namespace {
 
-// The bricks with a cell within `reachVoxels` of the surface, activated in
-// brick order (so slots do not depend on the threads). A brick passes when
-// the surface comes within reach of one of its eight 4 x 4 x 4 quarters,
-// each tested from its centre: the test is conservative (no brick with a
-// cell in reach is missed) and overshoots by at most a quarter's half
-// diagonal, 2.6 voxels, where testing whole bricks would overshoot by 6.1.
-std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& frame, double reachVoxels)
+// The fans over an open mesh's holes (hole_radius.hpp), where the surface
+// that closes them lies: the band reaches there as it reaches the
+// triangles, and a bit further by how far the rims leave their planes.
+// Without them the band stopped at the triangles and cut that surface off
+// over every hole wider than itself; it was then widened everywhere, over
+// the whole mesh, to the widest hole's radius (the open bunny scan at 384:
+// 73 voxels, 72,159 bricks, 1.7 GB, 47 s).
+struct FanReach {
+  std::optional<TriangleBvh> tree;  // none for a closed mesh
+  double beyond = 0.0;              // in the mesh's units, beyond the band's reach
+};
+
+FanReach fanReach(const TriangleMesh& mesh, const GridFrame& frame, double halfWidth)
+{
+  // A planar film of less area than a disk of radius halfWidth has no
+  // point farther than that from its rim: the band holds it without a fan.
+  // (Three quarters of it, for the band's own rounding.) A rim far from
+  // planar (a slit around a sphere's equator: its two edges' areas cancel)
+  // may have a film larger than its fan's area; where that film leaves the
+  // band, the band is widened (pipeline/denoise.cpp).
+  const double leastRadius = 0.75 * halfWidth * frame.voxel;
+  ClosingFans fans = closingFans(mesh, std::acos(-1.0) * leastRadius * leastRadius);
+  FanReach reach;
+  if (fans.mesh.triangles.empty()) return reach;
+  reach.tree.emplace(fans.mesh, TriangleBvh::Queries::ClosestOnly);
+  reach.beyond = fans.farthestOffPlane;
+  return reach;
+}
+
+// The bricks with a cell within `reachVoxels` of the surface (or of the fans
+// over its holes), activated in brick order (so slots do not depend on the
+// threads). A brick passes when the surface comes within reach of one of
+// its eight 4 x 4 x 4 quarters, each tested from its centre: the test is
+// conservative (no brick with a cell in reach is missed) and overshoots by
+// at most a quarter's half diagonal, 2.6 voxels, where testing whole bricks
+// would overshoot by 6.1.
+std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const FanReach& fans, const GridFrame& frame,
+                                     double reachVoxels)
 {
   auto bricks = std::make_shared<BrickSet>(frame.extent);
   const Extent3 grid = bricks->bricks();
@@ -32,6 +65,10 @@ std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& fr
     return reachVoxels * frame.voxel + 0.5 * (cellsAcross - 1) * std::sqrt(3.0) * frame.voxel;
   };
   const double brickReach = reachFrom(brickEdge), quarterReach = reachFrom(brickEdge / 2);
+  const auto within = [&](const glm::dvec3& p, double reach) {
+    return bvh.closest(p, reach).triangle != TriangleBvh::kNoTriangle ||
+           (fans.tree && fans.tree->closest(p, reach + fans.beyond).triangle != TriangleBvh::kNoTriangle);
+  };
   std::vector<uint8_t> near(grid.cells(), 0);
   const interrupt::Watch stop;  // the threads below are not the call's
 #pragma omp parallel for schedule(dynamic, 64)
@@ -39,12 +76,10 @@ std::shared_ptr<BrickSet> bandBricks(const TriangleBvh& bvh, const GridFrame& fr
     if (b % 256 == 0 && stop.requested()) continue;  // the caller stops after the loop
     const glm::ivec3 brick(int(b % grid.nx), int(b / grid.nx % grid.ny), int(b / grid.nx / grid.ny));
     const glm::dvec3 first = glm::dvec3(brickEdge * brick);
-    if (bvh.closest(frame.toWorld(first + 0.5 * (brickEdge - 1)), brickReach).triangle == TriangleBvh::kNoTriangle)
-      continue;
+    if (!within(frame.toWorld(first + 0.5 * (brickEdge - 1)), brickReach)) continue;
     for (int q = 0; q < 8 && !near[b]; ++q) {
       const glm::dvec3 quarter = first + glm::dvec3(q & 1, q >> 1 & 1, q >> 2 & 1) * double(brickEdge / 2);
-      near[b] = bvh.closest(frame.toWorld(quarter + 0.5 * (brickEdge / 2 - 1)), quarterReach).triangle !=
-                TriangleBvh::kNoTriangle;
+      near[b] = within(frame.toWorld(quarter + 0.5 * (brickEdge / 2 - 1)), quarterReach);
     }
   }
   for (size_t b = 0; b < grid.cells(); ++b)
@@ -152,7 +187,7 @@ std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const Tria
                                             double reachVoxels)
 {
   checkSignedDistanceArguments(mesh, frame, 1.0);
-  return bandBricks(tree, frame, reachVoxels);
+  return bandBricks(tree, fanReach(mesh, frame, reachVoxels - 2.0), frame, reachVoxels);
 }
 
 namespace {
@@ -174,7 +209,8 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
   };
 
   Stopwatch stage;
-  const std::shared_ptr<const BrickSet> bricks = given ? given : bandBricks(bvh, frame, options.halfWidth + 2.0);
+  const std::shared_ptr<const BrickSet> bricks =
+      given ? given : bandBricks(bvh, fanReach(mesh, frame, options.halfWidth), frame, options.halfWidth + 2.0);
   s.bvhMs = treeMs + stage.ms();
   interrupt::check("nothing was written");
   if (options.checkBricks) options.checkBricks(*bricks);

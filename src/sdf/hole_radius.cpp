@@ -9,8 +9,19 @@
 #include "lbmshape/core/concurrent_union_find.hpp"
 
 namespace lbmshape {
+namespace {
 
-double widestHoleRadius(const TriangleMesh& mesh)
+// The rims of a mesh's holes: the directed edges left over once every edge
+// is cancelled by the edges running it back, each rim the set of them
+// joined through shared vertices.
+struct HoleRims {
+  std::vector<glm::uvec2> edges;  // a -> b, as the mesh's triangles run them (net)
+  std::vector<uint32_t> rimOf;    // per vertex: its rim's number, for vertices on a rim
+  std::vector<uint8_t> onRim;     // per vertex
+  uint32_t count = 0;             // rims
+};
+
+HoleRims holeRims(const TriangleMesh& mesh)
 {
   // Each directed edge a->b counts +1 on key (min, max) when a < b and -1
   // otherwise: what is left after summing is the rims.
@@ -22,36 +33,59 @@ double widestHoleRadius(const TriangleMesh& mesh)
       if (a != b) keyed.emplace_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b), a < b ? 1 : -1);
     }
   __gnu_parallel::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  ConcurrentUnionFind rims(mesh.positions.size());
-  std::vector<uint8_t> onRim(mesh.positions.size(), 0);
-  bool open = false;
+  HoleRims rims;
+  ConcurrentUnionFind joined(mesh.positions.size());
+  rims.onRim.assign(mesh.positions.size(), 0);
   for (size_t i = 0; i < keyed.size();) {
     size_t j = i;
     int net = 0;
     for (; j < keyed.size() && keyed[j].first == keyed[i].first; ++j) net += keyed[j].second;
     if (net != 0) {
-      const uint32_t a = uint32_t(keyed[i].first >> 32), b = uint32_t(keyed[i].first & 0xffffffffu);
-      rims.unite(a, b);
-      onRim[a] = onRim[b] = 1;
-      open = true;
+      const uint32_t low = uint32_t(keyed[i].first >> 32), high = uint32_t(keyed[i].first & 0xffffffffu);
+      joined.unite(low, high);
+      rims.onRim[low] = rims.onRim[high] = 1;
+      // An edge run |net| more times one way: its film is bounded by it as often.
+      for (int k = 0; k < std::abs(net); ++k)
+        rims.edges.push_back(net > 0 ? glm::uvec2(low, high) : glm::uvec2(high, low));
     }
     i = j;
   }
-  if (!open) return 0.0;
-  const std::vector<uint32_t> rimOf = std::move(rims).roots();
-  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
-  std::vector<uint32_t> count(mesh.positions.size(), 0);
+  if (rims.edges.empty()) return rims;
+  const std::vector<uint32_t> roots = std::move(joined).roots();
+  std::vector<uint32_t> number(mesh.positions.size(), UINT32_MAX);
+  rims.rimOf.assign(mesh.positions.size(), UINT32_MAX);
   for (size_t v = 0; v < mesh.positions.size(); ++v)
-    if (onRim[v]) {
-      sum[rimOf[v]] += mesh.positions[v];
-      ++count[rimOf[v]];
+    if (rims.onRim[v]) {
+      uint32_t& n = number[roots[v]];
+      if (n == UINT32_MAX) n = rims.count++;
+      rims.rimOf[v] = n;
     }
+  return rims;
+}
+
+std::vector<glm::dvec3> rimCentroids(const TriangleMesh& mesh, const HoleRims& rims)
+{
+  std::vector<glm::dvec3> sum(rims.count, glm::dvec3(0.0));
+  std::vector<uint32_t> count(rims.count, 0);
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if (rims.onRim[v]) {
+      sum[rims.rimOf[v]] += mesh.positions[v];
+      ++count[rims.rimOf[v]];
+    }
+  for (uint32_t r = 0; r < rims.count; ++r) sum[r] /= double(count[r]);
+  return sum;
+}
+
+}  // namespace
+
+double widestHoleRadius(const TriangleMesh& mesh)
+{
+  const HoleRims rims = holeRims(mesh);
+  if (rims.count == 0) return 0.0;
+  const std::vector<glm::dvec3> centroid = rimCentroids(mesh, rims);
   double widest = 0.0;
   for (size_t v = 0; v < mesh.positions.size(); ++v)
-    if (onRim[v]) {
-      const glm::dvec3 centroid = sum[rimOf[v]] / double(count[rimOf[v]]);
-      widest = std::max(widest, glm::length(mesh.positions[v] - centroid));
-    }
+    if (rims.onRim[v]) widest = std::max(widest, glm::length(mesh.positions[v] - centroid[rims.rimOf[v]]));
   return widest;
 }
 
@@ -60,6 +94,50 @@ double halfWidthOverHoles(const TriangleMesh& mesh, double voxel, double halfWid
   const double radius = widestHoleRadius(mesh) / voxel;
   if (radius == 0.0) return halfWidth;
   return std::max(halfWidth, std::ceil(1.25 * radius) + 1.0);
+}
+
+ClosingFans closingFans(const TriangleMesh& mesh, double leastArea)
+{
+  const HoleRims rims = holeRims(mesh);
+  ClosingFans fans;
+  if (rims.count == 0) return fans;
+  const std::vector<glm::dvec3> centroid = rimCentroids(mesh, rims);
+  // Each rim's plane: the normal of its fan (the Newell normal of its edges,
+  // as the triangles run them, which does not need them ordered in a loop).
+  std::vector<glm::dvec3> normal(rims.count, glm::dvec3(0.0));
+  for (const glm::uvec2& e : rims.edges) {
+    const glm::dvec3 c = centroid[rims.rimOf[e.x]];
+    normal[rims.rimOf[e.x]] += glm::cross(mesh.positions[e.x] - c, mesh.positions[e.y] - c);
+  }
+  // A rim's film is at least as large as its fan's vector area (half the
+  // Newell normal's length; equal for a planar rim): a smaller one lies
+  // within the band anyway. A T-junction's "rim" (a long edge one way, the
+  // short ones beside it back) encloses nothing, and its fan would only
+  // fill a solid with bricks (a cube with T-junctions on every edge: the
+  // whole grid).
+  std::vector<uint8_t> fanned(rims.count);
+  for (uint32_t r = 0; r < rims.count; ++r) fanned[r] = 0.5 * glm::length(normal[r]) >= leastArea;
+  // The fans' own vertices: the rim's, then one centroid a rim.
+  std::vector<uint32_t> vertexOf(mesh.positions.size(), UINT32_MAX);
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if (rims.onRim[v] && fanned[rims.rimOf[v]]) {
+      vertexOf[v] = uint32_t(fans.mesh.positions.size());
+      fans.mesh.positions.push_back(mesh.positions[v]);
+    }
+  const auto firstCentroid = uint32_t(fans.mesh.positions.size());
+  fans.mesh.positions.insert(fans.mesh.positions.end(), centroid.begin(), centroid.end());
+  fans.mesh.triangles.reserve(rims.edges.size());
+  for (const glm::uvec2& e : rims.edges) {
+    const uint32_t r = rims.rimOf[e.x];
+    if (!fanned[r]) continue;
+    // Run back, as the triangle that would close the hole runs the edge.
+    fans.mesh.triangles.emplace_back(vertexOf[e.y], vertexOf[e.x], firstCentroid + r);
+    const double length = glm::length(normal[r]);
+    const double off = length > 0.0 ? std::abs(glm::dot(mesh.positions[e.x] - centroid[r], normal[r] / length))
+                                    : glm::length(mesh.positions[e.x] - centroid[r]);
+    fans.farthestOffPlane = std::max(fans.farthestOffPlane, off);
+  }
+  return fans;
 }
 
 }  // namespace lbmshape

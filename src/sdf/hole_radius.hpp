@@ -7,8 +7,11 @@
 // cells near the triangles, so a hole wider than the band left the result
 // open there (a hemisphere's rim, a scan's hole 40 voxels across), and a
 // morph to such a target ended on a shape with holes while its fields said
-// it had arrived. A band wider than the widest hole's radius holds the
-// whole film, as the dense grid does.
+// it had arrived. The band reaches the fans over the rims (closingFans
+// below), which hold a planar rim's film exactly and most others' nearly;
+// where the film still leaves the band (a rim far out of its plane, a film
+// pulled aside by the rest of the mesh), a band wider than the widest
+// hole's radius holds it, as the dense grid does.
 #pragma once
 
 #include "lbmshape/mesh/triangle_mesh.hpp"
@@ -28,5 +31,21 @@ double widestHoleRadius(const TriangleMesh& mesh);
 // with a quarter more for a film that bulges out of its rim's plane, and
 // the voxel the lattice's neighbours need.
 double halfWidthOverHoles(const TriangleMesh& mesh, double voxel, double halfWidth);
+
+// Where the film over each hole lies, to a first guess: a fan of triangles
+// from each rim's edges to the centroid of its vertices, for the band to
+// reach there as it reaches the triangles (band_signed_distance.cpp). For a
+// planar rim alone (a hemisphere's) the film is exactly that disk: the
+// winding number of a point on it is 1/2. A film bulges out of its rim's
+// plane at most as far as the rim does, in the usual case that the rest of
+// the mesh does not pull it further; farthestOffPlane says how far the rims
+// do, and a band that still leaves is widened as before.
+struct ClosingFans {
+  TriangleMesh mesh;              // no triangles for a closed mesh
+  double farthestOffPlane = 0.0;  // in the mesh's units: a rim vertex from its fan's plane
+};
+// Rims whose fan covers less than `leastArea` (the mesh's units squared)
+// get none.
+ClosingFans closingFans(const TriangleMesh& mesh, double leastArea = 0.0);
 
 }  // namespace lbmshape

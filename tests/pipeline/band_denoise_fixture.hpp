@@ -31,8 +31,9 @@ protected:
   // Band and grid results for a mesh agree within `toleranceVoxels` (mean).
   // The paper's anisotropic rule gets twice that: its kappa is the change of
   // X over one step divided by gamma, which magnifies the difference
-  // between the two schemes (moment form and BGK) step after step.
-  void compare(const std::filesystem::path& input, int resolution, double toleranceVoxels)
+  // between the two schemes (moment form and BGK) step after step. Returns
+  // the band's report.
+  nlohmann::json compare(const std::filesystem::path& input, int resolution, double toleranceVoxels)
   {
     double hausdorffVoxels = 1.0;
     if (GetParam().smoothing == Smoothing::Anisotropic) toleranceVoxels *= 2.0, hausdorffVoxels *= 2.0;
@@ -59,6 +60,7 @@ protected:
     }
     EXPECT_EQ(band.report["lattice"]["kind"], "band");
     EXPECT_EQ(grid.report["lattice"]["kind"], "grid");
+    return band.report;
   }
 };
 

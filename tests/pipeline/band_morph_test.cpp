@@ -47,7 +47,9 @@ TEST(BandMorph, GivesTheGridsFrames)
 // A source open at a rim far wider than the band: its closing surface lies
 // where no triangle is near, and the band left it out. The morph into a
 // sphere ended in pieces (21 of them, 1,607 boundary edges, 21 voxels off
-// at 128) while its fields said it had arrived; it ends as on the grid.
+// at 128) while its fields said it had arrived; it ends as on the grid,
+// with the band reaching the fan over the rim instead of widened
+// everywhere to the rim's radius (45 voxels at 96 cells).
 TEST(BandMorph, ASourcesWideHoleIsClosedAsOnTheGrid)
 {
   ComputeDevice device{"", true};
@@ -60,6 +62,7 @@ TEST(BandMorph, ASourcesWideHoleIsClosedAsOnTheGrid)
   o.band = false;
   const nlohmann::json grid = morphFiles(folder / "hemisphere.obj", folder / "sphere.obj", folder / "grid", o, device);
   EXPECT_EQ(band["lattice"]["kind"], "band");
+  EXPECT_LT(band["lattice"]["half_width"].get<double>(), 20.0);
   const TriangleMesh a = readMesh(folder / "band" / "frame_0002.obj"), b = readMesh(folder / "grid" / "frame_0002.obj");
   const MeshTopology t = analyzeTopology(a);
   EXPECT_TRUE(t.closedManifold);

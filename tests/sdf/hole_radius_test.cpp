@@ -2,7 +2,11 @@
 // mesh's holes (sdf/hole_radius.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "lbmshape/analysis/mesh_topology.hpp"
 #include "lbmshape/sdf/hole_radius.hpp"
+#include "lbmshape/sdf/triangle_bvh.hpp"
 #include "sdf_fixtures.hpp"
 #include "support/test_meshes.hpp"
 
@@ -40,6 +44,59 @@ TEST(HoleRadius, TheWidestOfSeveralHolesCounts)
   for (const glm::uvec3& t : pitted.triangles)
     if (pitted.positions[t.x].z + pitted.positions[t.y].z + pitted.positions[t.z].z > -2.4) cut.triangles.push_back(t);
   EXPECT_NEAR(widestHoleRadius(cut), 0.6, 0.06);  // sqrt(1 - 0.8^2)
+}
+
+TEST(ClosingFans, AClosedMeshHasNone) { EXPECT_TRUE(closingFans(testing::icosphere(3, 1.0)).mesh.triangles.empty()); }
+
+// A hemisphere's film is the disk its rim bounds (the winding number is 1/2
+// on it): the fan lies there, one triangle per rim edge, and is nearly flat.
+TEST(ClosingFans, AHemispheresFanIsTheDiskWhereTheWindingNumberIsAHalf)
+{
+  const TriangleMesh half = testing::upperHalf(testing::icosphere(4, 2.0));
+  const ClosingFans fans = closingFans(half);
+  EXPECT_EQ(fans.mesh.triangles.size(), analyzeTopology(half).boundaryEdges);
+  EXPECT_LT(fans.farthestOffPlane, 0.2);  // the rim zigzags about the equator
+  const TriangleBvh tree(half);
+  for (size_t t = 0; t < fans.mesh.triangles.size(); t += 7) {
+    const glm::uvec3 f = fans.mesh.triangles[t];
+    // Half way from the rim to the centre: far from the rim's zigzag.
+    const glm::dvec3 p = 0.25 * (fans.mesh.positions[f.x] + fans.mesh.positions[f.y]) + 0.5 * fans.mesh.positions[f.z];
+    EXPECT_NEAR(tree.windingNumber(p), 0.5, 0.05) << "fan triangle " << t;
+    EXPECT_NEAR(p.z, 0.0, 0.1);
+  }
+}
+
+// A T-junction: an edge one face runs whole and the faces beside it run in
+// two halves. Its "rim" encloses nothing, and gets no fan (which would only
+// fill the solid with bricks), however little area is asked for.
+TEST(ClosingFans, ATJunctionEnclosesNothingAndGetsNoFan)
+{
+  TriangleMesh tetra;
+  tetra.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0, 0}};
+  // Outward tetrahedron, the face (0, 2, 1) split at 4, the middle of edge 0-1.
+  tetra.triangles = {{0, 2, 4}, {4, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  EXPECT_GT(analyzeTopology(tetra).boundaryEdges, 0u);
+  EXPECT_TRUE(closingFans(tetra, 1e-12).mesh.triangles.empty());
+  EXPECT_FALSE(closingFans(tetra, 0.0).mesh.triangles.empty());
+}
+
+// Two open caps apart: two rims, two fans, each over its own rim.
+TEST(ClosingFans, EachRimHasItsOwnFan)
+{
+  TriangleMesh tube = testing::upperHalf(testing::icosphere(4, 1.0));
+  const TriangleMesh lower = testing::lowerHalf(testing::icosphere(4, 1.0));
+  // Two separate caps, each open: two rims apart, the lower 5 below.
+  const auto offset = uint32_t(tube.positions.size());
+  for (const glm::dvec3& p : lower.positions) tube.positions.push_back(p - glm::dvec3(0.0, 0.0, 5.0));
+  for (const glm::uvec3& t : lower.triangles) tube.triangles.push_back(t + offset);
+  const ClosingFans fans = closingFans(tube);
+  std::vector<double> centres;
+  for (const glm::uvec3& t : fans.mesh.triangles) centres.push_back(fans.mesh.positions[t.z].z);
+  std::sort(centres.begin(), centres.end());
+  centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
+  ASSERT_EQ(centres.size(), 2u);
+  EXPECT_NEAR(centres[0], -5.0, 0.05);
+  EXPECT_NEAR(centres[1], 0.0, 0.05);
 }
 
 }  // namespace

@@ -58,7 +58,7 @@ GltfFileAccess::GltfFileAccess(const MeshSource& source, const std::vector<GltfB
   for (size_t b = 0; b < buffers.size(); ++b) {
     const std::string& uri = buffers[b].uri;
     if (uri.empty() || uri.starts_with("data:")) continue;  // the GLB chunk, or embedded data
-    const std::string name = "buffer " + std::to_string(b) + " (uri " + text::quoted(uri) + ")";
+    const std::string name = "buffer " + std::to_string(b) + " (uri " + text::quotedName(uri) + ")";
     const std::string only = "; lbmshape reads only data: URIs and files beside the glTF file";
     if (hasScheme(uri)) source.refuse(name + " names a scheme other than data:" + only);
     const auto file = decoded(uri);
@@ -107,7 +107,7 @@ bool GltfFileAccess::readWholeFile(std::vector<unsigned char>* out, std::string*
   }
   allowed->second.read = true;
   auto refuse = [&](const std::string& why) {
-    access.refusal_ = "the buffer file " + text::quoted(path) + (why.starts_with(":") ? "" : " ") + why;
+    access.refusal_ = "the buffer file " + text::quotedName(path) + (why.starts_with(":") ? "" : " ") + why;
     if (error) *error = access.refusal_.value();
     return false;
   };
@@ -118,9 +118,13 @@ bool GltfFileAccess::readWholeFile(std::vector<unsigned char>* out, std::string*
     if (!target.starts_with(folder + "/")) return refuse("leads out of the glTF file's folder (a symbolic link)");
     // Refuses anything but a regular file before reading a byte of it.
     const MappedFile file(path);
-    if (file.bytes().size() != allowed->second.byteLength)
-      return refuse("does not have the " + std::to_string(allowed->second.byteLength) + " bytes its buffer declares");
-    out->assign(file.bytes().begin(), file.bytes().end());
+    // Longer is allowed (the glTF validator accepts it: some writers pad the
+    // file to 4 bytes); the buffer is its first byteLength bytes.
+    const uint64_t declared = allowed->second.byteLength;
+    if (file.bytes().size() < declared)
+      return refuse("has " + std::to_string(file.bytes().size()) + " bytes, fewer than the " +
+                    std::to_string(declared) + " its buffer declares");
+    out->assign(file.bytes().begin(), file.bytes().begin() + std::ptrdiff_t(declared));
     return true;
   } catch (const InputError& e) {
     // "cannot read PATH: why" -> "the buffer file 'PATH': why"

@@ -33,6 +33,8 @@ public:
 
   std::map<std::string, std::vector<GltfJsonElement>> kept{{"buffers", {}}, {"bufferViews", {}}, {"images", {}}};
   GltfJsonElement top;  // the top-level object's own properties
+  // The names in the top level's extensionsRequired and extensionsUsed.
+  std::map<std::string, std::vector<std::string>> extensionLists{{"extensionsRequired", {}}, {"extensionsUsed", {}}};
   uint64_t scenes = 0;
   bool tooDeep = false;
   uint64_t containers = 0, scalars = 0;
@@ -50,6 +52,8 @@ public:
   bool string(string_t& s) override
   {
     if (GltfJsonElement* e = directElement(); e && current_.back().collection == "buffers") e->strings[key_] = s;
+    if (stack_.size() == 2 && stack_[1].array && extensionLists.count(stack_[1].key))
+      extensionLists[stack_[1].key].push_back(s);
     return scalar(text::quoted(shown(s)), JsonKind::String);
   }
   bool binary(binary_t&) override { return scalar("binary data", JsonKind::String); }
@@ -199,8 +203,15 @@ std::optional<uint64_t> number(const GltfJsonElement& e, const std::string& key)
   return found == e.wholeNumbers.end() ? std::nullopt : std::optional<uint64_t>(found->second);
 }
 
-void checkBuffers(const std::vector<GltfJsonElement>& buffers, bool glb, const MeshSource& source)
+void checkBuffers(const std::vector<GltfJsonElement>& buffers, bool glb, const std::vector<std::string>& used,
+                  const MeshSource& source)
 {
+  // A meshopt file's fallback buffer has no uri: what it holds is made by
+  // decoding, which lbmshape does for GLB files only.
+  const std::string meshoptFallback =
+      std::find(used.begin(), used.end(), "EXT_meshopt_compression") != used.end()
+          ? " (EXT_meshopt_compression's fallback buffer? lbmshape decodes meshopt in GLB files only)"
+          : "";
   std::set<std::string> files;
   for (size_t b = 0; b < buffers.size(); ++b) {
     const std::string name = "buffer " + std::to_string(b);
@@ -210,11 +221,11 @@ void checkBuffers(const std::vector<GltfJsonElement>& buffers, bool glb, const M
     if (uri == buffers[b].strings.end()) {
       // GLB: only buffer 0 may be the binary chunk (glTF 2.0, 4.4.3.3).
       if (glb && b != 0) source.refuse(name + " has no uri, but only buffer 0 may refer to the GLB's binary chunk");
-      if (!glb) source.refuse(name + " has no uri");
+      if (!glb) source.refuse(name + " has no uri" + meshoptFallback);
       continue;
     }
     if (!uri->second.starts_with("data:") && !files.insert(uri->second).second)
-      source.refuse(name + " names the file " + text::quoted(uri->second) + " that another buffer already names");
+      source.refuse(name + " names the file " + text::quotedName(uri->second) + " that another buffer already names");
   }
 }
 
@@ -253,6 +264,39 @@ void checkImageViews(const GltfJsonScan& scan, const MeshSource& source)
   }
 }
 
+// Required extensions lbmshape knows and cannot read: the geometry they
+// hold would be missing or wrong. (EXT_meshopt_compression is decoded
+// beforehand in GLB files, gltf_meshopt_decoding.hpp.)
+const std::set<std::string> unreadableRequiredExtensions = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                                            "KHR_meshopt_compression", "EXT_mesh_gpu_instancing"};
+
+// Required extensions that change nothing lbmshape reads (materials,
+// textures, lights, metadata, animations beside the scene it reads) or that
+// it reads (quantized positions). Any other required extension is refused:
+// the glTF specification has a reader refuse what a file requires and it
+// does not know, which may change the geometry.
+bool understoodRequiredExtension(const std::string& extension)
+{
+  static const std::set<std::string> understood = {
+      "KHR_mesh_quantization",  "KHR_texture_transform", "KHR_texture_basisu",
+      "EXT_texture_webp",       "EXT_texture_avif",      "KHR_lights_punctual",
+      "KHR_materials_variants", "KHR_xmp_json_ld",       "KHR_animation_pointer"};
+  return understood.count(extension) > 0 || extension.starts_with("KHR_materials_");
+}
+
+void refuseRequiredExtensions(const std::vector<std::string>& required, bool glb, const MeshSource& source)
+{
+  for (const std::string& extension : required) {
+    // A GLB's meshopt views are decoded before this check (readGltf).
+    if (extension == "EXT_meshopt_compression" && !glb)
+      source.refuse("it requires EXT_meshopt_compression, which lbmshape decodes in GLB files only (.glb)");
+    if (unreadableRequiredExtensions.count(extension))
+      source.refuse("it requires " + text::printable(extension) + ", which lbmshape cannot decode");
+    if (!understoodRequiredExtension(extension))
+      source.refuse("it requires the extension " + text::quoted(shown(extension)) + ", which lbmshape does not know");
+  }
+}
+
 }  // namespace
 
 std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, const MeshSource& source)
@@ -266,8 +310,12 @@ std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, cons
   if (scan.containers * bytesPerContainer + scan.scalars * bytesPerScalar > structureBudget(json.size()))
     source.refuse("its JSON holds " + std::to_string(scan.containers + scan.scalars) +
                   " values, more than a glTF file of this size needs");
+  // Before anything else of the file is judged: a file whose geometry is
+  // compressed fails every other check (accessors without views), and
+  // should be refused for what it needs.
+  refuseRequiredExtensions(scan.extensionLists.at("extensionsRequired"), glb, source);
   checkDefaultScene(scan, source);
-  checkBuffers(scan.kept.at("buffers"), glb, source);
+  checkBuffers(scan.kept.at("buffers"), glb, scan.extensionLists.at("extensionsUsed"), source);
   checkImageViews(scan, source);
 
   std::vector<GltfBufferEntry> buffers;

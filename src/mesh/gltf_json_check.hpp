@@ -32,7 +32,9 @@ struct GltfBufferEntry {
 // buffers on one file, gives a GLB more than one buffer of its own (or not
 // as buffer 0), has an image whose buffer view reaches past its buffer, a
 // key twice in one object, a default scene it does not have, or an element
-// property of the wrong type (gltf_json_element.hpp).
+// property of the wrong type (gltf_json_element.hpp), or requires an
+// extension lbmshape cannot read (Draco; meshopt outside a GLB) or does
+// not know: that first, as a compressed file fails the other checks.
 // Returns the buffers; tinygltf checks the rest.
 std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, const MeshSource& source);
 

@@ -24,26 +24,6 @@
 namespace lbmshape {
 namespace {
 
-// Geometry lbmshape would get wrong by ignoring the extension, so refuses.
-// (EXT_meshopt_compression is decoded beforehand in GLB files,
-// gltf_meshopt_decoding.hpp, and refused here in .gltf ones.)
-const std::set<std::string> unsupportedRequiredExtensions = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                                             "KHR_meshopt_compression", "EXT_mesh_gpu_instancing"};
-
-// Required extensions that change nothing lbmshape reads (materials,
-// textures, lights, metadata, animations beside the scene it reads) or that
-// it reads (quantized positions). Any other required extension is refused:
-// the glTF specification has a reader refuse what a file requires and it
-// does not know, which may change the geometry.
-bool understoodRequiredExtension(const std::string& extension)
-{
-  static const std::set<std::string> understood = {
-      "KHR_mesh_quantization",  "KHR_texture_transform", "KHR_texture_basisu",
-      "EXT_texture_webp",       "EXT_texture_avif",      "KHR_lights_punctual",
-      "KHR_materials_variants", "KHR_xmp_json_ld",       "KHR_animation_pointer"};
-  return understood.count(extension) > 0 || extension.starts_with("KHR_materials_");
-}
-
 // The geometry a scene may instance, in bytes of TriangleMesh: a file may
 // place one mesh many times, but never so often that a small file fills
 // the machine's memory.
@@ -183,7 +163,19 @@ public:
       addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world, *instance.weights);
   }
 
-  TriangleMesh take() { return std::move(mesh_); }
+  // One warning for each kind of primitive passed over, however many: a
+  // CAD export with an edge-line primitive per part gave a line each.
+  TriangleMesh take()
+  {
+    for (const Skipped* skipped : {&notTriangles_, &withoutPositions_})
+      if (skipped->count > 0)
+        log::warning("reading " + source_.name + ": skipped " +
+                     (skipped->count == 1
+                          ? skipped->first
+                          : std::to_string(skipped->count) + " primitives (" + skipped->first + " the first)") +
+                     ": " + skipped->why);
+    return std::move(mesh_);
+  }
 
 private:
   static std::string primitiveName(int mesh, size_t primitive)
@@ -238,15 +230,9 @@ private:
                     const std::vector<double>& weights)
   {
     const int mode = primitive.mode;  // one of glTF's (gltf_json_element.hpp); triangles when absent
-    if (!isTriangles(mode)) {
-      log::warning("reading " + source_.name + ": skipped " + name + ": points or lines, not triangles");
-      return;
-    }
+    if (!isTriangles(mode)) return notTriangles_.add(name);
     auto position = primitive.attributes.find("POSITION");
-    if (position == primitive.attributes.end()) {
-      log::warning("reading " + source_.name + ": skipped " + name + ": it has no POSITION attribute");
-      return;
-    }
+    if (position == primitive.attributes.end()) return withoutPositions_.add(name);
     std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");
     applyMorphTargets(primitive, name, weights, positions);
     std::vector<uint32_t> order;
@@ -277,10 +263,21 @@ private:
     }
   }
 
+  struct Skipped {
+    std::string why;
+    size_t count = 0;
+    std::string first;
+    void add(const std::string& name)
+    {
+      if (count++ == 0) first = name;
+    }
+  };
+
   const tinygltf::Model& model_;
   const MeshSource& source_;
   const GltfAccessors& accessors_;
   TriangleMesh mesh_;
+  Skipped notTriangles_{"points or lines, not triangles", 0, {}}, withoutPositions_{"no POSITION attribute", 0, {}};
 };
 
 }  // namespace
@@ -296,18 +293,19 @@ TriangleMesh readGltf(const MeshSource& given, MeshFormat format)
   }
   MeshSource source = given;
   if (decoded) source.bytes = *decoded;
+  // A GLB saved under a .gltf name (its JSON parse failed, "last read: 'g'"):
+  // read as what it is.
+  if (format == MeshFormat::Gltf && given.bytes.starts_with("glTF")) {
+    log::warning("reading " + given.name + ": it is a GLB (binary glTF) file, though named .gltf; read as GLB");
+    return readGltf(given, MeshFormat::Glb);
+  }
 
-  // Before tinygltf sees the file: nesting it could not survive, and the
-  // buffer files it would open.
+  // Before tinygltf sees the file: nesting it could not survive, required
+  // extensions lbmshape cannot read (gltf_json_check.hpp), and the buffer
+  // files it would open.
   const std::vector<GltfBufferEntry> buffers = checkGltfJson(jsonOf(source, format), format == MeshFormat::Glb, source);
   GltfFileAccess files(source, buffers);
-  const tinygltf::Model model = load(source, format, files);
-  for (const auto& extension : model.extensionsRequired) {
-    if (unsupportedRequiredExtensions.count(extension))
-      source.refuse("it requires " + extension + ", which lbmshape cannot decode");
-    if (!understoodRequiredExtension(extension))
-      source.refuse("it requires the extension '" + extension + "', which lbmshape does not know");
-  }
+  const tinygltf::Model model = load(source, format, files);  // its required extensions checked above
 
   // What the file holds bounds what it may make: for a compressed file, its
   // own size, not what it decoded to.

@@ -84,28 +84,72 @@ inline std::optional<int64_t> integer(std::string_view token)
   return value;
 }
 
+// The length of the well-formed UTF-8 sequence at the start of `text` for a
+// character a message may show (not a control, a space other than ASCII's,
+// a soft hyphen, a line or paragraph separator, a bidirectional or
+// zero-width format character, a byte order mark); 0 for anything else.
+inline size_t printableUtf8Length(std::string_view text)
+{
+  const auto byte = [&](size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(0);
+  const size_t length = lead >= 0xc2 && lead <= 0xdf   ? 2
+                        : lead >= 0xe0 && lead <= 0xef ? 3
+                        : lead >= 0xf0 && lead <= 0xf4 ? 4
+                                                       : 0;
+  if (length == 0 || text.size() < length) return 0;
+  uint32_t code = lead & (0x7f >> length);
+  for (size_t i = 1; i < length; ++i) {
+    if ((byte(i) & 0xc0) != 0x80) return 0;
+    code = code << 6 | (byte(i) & 0x3f);
+  }
+  const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+  const bool hidden = code <= 0xa0 || code == 0xad || code == 0x1680 || (code >= 0x2000 && code <= 0x200a) ||
+                      code == 0x202f || code == 0x205f || code == 0x3000 || (code >= 0x200b && code <= 0x200f) ||
+                      (code >= 0x2028 && code <= 0x202e) || (code >= 0x2060 && code <= 0x206f) || code == 0xfeff ||
+                      (code >= 0xd800 && code <= 0xdfff);
+  return overlong || hidden || code > 0x10ffff ? 0 : length;
+}
+
+enum class Letters { Ascii, Utf8 };
+
 // Text from a file (or about it) fit for a one-line message: printable ASCII
-// only (anything else, line ends included, becomes '?'), at most `limit`
-// characters and "..." after that.
-inline std::string printable(std::string_view text, size_t limit = 200)
+// and, with Letters::Utf8, the printable characters of well-formed UTF-8;
+// anything else, line ends included, becomes '?'. At most `limit`
+// characters, and "..." after that. A file's content is shown in ASCII,
+// where a damaged byte (a no-break space in a keyword) must show as one.
+inline std::string printable(std::string_view text, size_t limit = 200, Letters letters = Letters::Ascii)
 {
   while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
   std::string out;
-  for (size_t i = 0; i < text.size() && i < limit; ++i) {
+  size_t characters = 0, i = 0;
+  for (; i < text.size() && characters < limit; ++characters) {
     const auto c = static_cast<unsigned char>(text[i]);
-    out += c >= 0x20 && c < 0x7f ? char(c) : '?';
+    if (c >= 0x20 && c < 0x7f) {
+      out += char(c);
+      ++i;
+    } else if (const size_t n = letters == Letters::Utf8 ? printableUtf8Length(text.substr(i)) : 0; n > 0) {
+      out += text.substr(i, n);
+      i += n;
+    } else {
+      out += '?';
+      ++i;
+    }
   }
-  return text.size() > limit ? out + "..." : out;
+  return i < text.size() ? out + "..." : out;
 }
 
 // A piece of the file for an error message, in quotes: printable, at most
 // about 60 characters.
-inline std::string quoted(std::string_view text)
+inline std::string quoted(std::string_view text, Letters letters = Letters::Ascii)
 {
   std::string out(1, '\'');  // appended, not "'" + ...: GCC 12 warns falsely (-Wrestrict) on that
-  out += printable(text, 60);
+  out += printable(text, 60, letters);
   out += '\'';
   return out;
 }
+
+// A file's name for a message, in its own letters ("données ü.bin", not
+// "donn??es ??.bin") where they are printable UTF-8.
+inline std::string quotedName(std::string_view name) { return quoted(name, Letters::Utf8); }
 
 }  // namespace lbmshape::text

@@ -263,6 +263,36 @@ TEST(CompressedGltf, LbmshapeReadsWhatItCompressed)
   EXPECT_NEAR(meshio::signedVolume(read), meshio::signedVolume(sphere), 1e-3 * meshio::signedVolume(sphere));
 }
 
+// The same file saved as .gltf and .bin, as tools may: lbmshape decodes
+// meshopt in GLB files only, and says so (it said "buffer 1 has no uri",
+// or with the extension only used, nothing of meshopt).
+TEST(CompressedGltf, InAGltfFileItIsRefusedForWhatItNeeds)
+{
+  testing::ScratchFolder folder;
+  writeMesh(testing::icosphere(3), folder / "sphere.glb", EmptyMesh::Refused, GltfCompression::Meshopt);
+  meshio::GlbContent glb = meshio::readGlb(folder / "sphere.glb");
+  glb.json["buffers"][0]["uri"] = "sphere.bin";
+  std::ofstream(folder / "sphere.bin", std::ios::binary)
+      .write(reinterpret_cast<const char*>(glb.binary.data()), std::streamsize(glb.binary.size()));
+  const auto refusal = [&] {
+    std::ofstream(folder / "sphere.gltf") << glb.json.dump();
+    try {
+      readMesh(folder / "sphere.gltf");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  std::string message = refusal();
+  EXPECT_NE(message.find("requires EXT_meshopt_compression, which lbmshape decodes in GLB files only"),
+            std::string::npos)
+      << message;
+  glb.json["extensionsRequired"] = {"KHR_mesh_quantization"};
+  message = refusal();
+  EXPECT_NE(message.find("buffer 1 has no uri (EXT_meshopt_compression's fallback buffer?"), std::string::npos)
+      << message;
+}
+
 struct BadCompression {
   const char* name;
   std::function<void(nlohmann::json&, std::vector<unsigned char>&)> change;

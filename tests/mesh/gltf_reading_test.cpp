@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "lbmshape/core/error.hpp"
+#include "lbmshape/core/log.hpp"
 #include "mesh/hand_made_gltf.hpp"
 #include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh/mesh_fixtures.hpp"
+#include "support/scratch_folder.hpp"
 #include "support/test_meshes.hpp"
 
 namespace lbmshape {
@@ -147,6 +149,66 @@ TEST_P(GltfReading, AnUnknownRequiredExtensionIsRefusedNamingIt)
     ADD_FAILURE() << "read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("requires the extension 'FOO_bent_space'"), std::string::npos) << e.what();
+  }
+}
+
+// Primitives passed over (a CAD export's edge lines, one per part) are
+// warned of once for each kind, with their count, not a line each.
+TEST_P(GltfReading, SkippedPrimitivesAreWarnedOfOnce)
+{
+  meshio::HandMadeGltf gltf;
+  const int positions = gltf.addPositions(meshio::tetraCorners), indices = gltf.addIndices(meshio::tetraIndices);
+  const int tetra = gltf.addMesh(positions, indices);
+  const int lines = gltf.addMesh(positions, indices, 1);
+  for (int k = 0; k < 4; ++k)
+    gltf.json["meshes"][lines]["primitives"].push_back({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
+  gltf.json["nodes"] = {{{"mesh", tetra}}, {{"mesh", lines}}};
+  gltf.json["scenes"] = {{{"nodes", {0, 1}}}};
+  std::vector<std::string> warnings;
+  log::setSink([&](log::Kind kind, const std::string& message) {
+    if (kind == log::Kind::Warning) warnings.push_back(message);
+  });
+  const TriangleMesh read = readBack(gltf);
+  log::setSink({});
+  EXPECT_EQ(read.triangleCount(), 4u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("skipped 5 primitives (mesh 1 primitive 0 the first): points or lines"), std::string::npos)
+      << warnings[0];
+}
+
+// A GLB saved under a .gltf name is read as the GLB it is, with a warning
+// (its JSON parse failed: "last read: 'g'").
+TEST(GltfReadingNamed, AGlbNamedGltfIsReadAsGlb)
+{
+  testing::ScratchFolder folder;
+  meshio::HandMadeGltf gltf;
+  gltf.json["nodes"] = {
+      {{"mesh", gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices))}}};
+  gltf.writeGlb(folder / "model.glb");
+  std::filesystem::rename(folder / "model.glb", folder / "model.gltf");
+  EXPECT_EQ(readMesh(folder / "model.gltf").triangleCount(), 4u);
+}
+
+// A Draco file as exporters write it: the compressed primitive's accessors
+// have no buffer view. It is refused for the extension it requires, not for
+// the accessors tinygltf cannot read ("accessor[1] invalid bufferView").
+TEST_P(GltfReading, ADracoFileIsRefusedForItsExtension)
+{
+  meshio::HandMadeGltf gltf;
+  const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
+  gltf.json["nodes"] = {{{"mesh", mesh}}};
+  for (auto& accessor : gltf.json["accessors"]) accessor.erase("bufferView");
+  gltf.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"] = {
+      {"bufferView", 0}, {"attributes", {{"POSITION", 0}}}};
+  gltf.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  gltf.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  try {
+    readBack(gltf);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("it requires KHR_draco_mesh_compression, which lbmshape cannot decode"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -7,6 +7,7 @@
 #include "lbmshape/core/error.hpp"
 #include "mesh/mesh_fixtures.hpp"
 #include "lbmshape/mesh/mesh_reader.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 #include "support/mesh_file_cases.hpp"
 
 namespace lbmshape {
@@ -55,7 +56,14 @@ void expectRefused(const std::function<void()>& read, const std::string& name, c
     EXPECT_NE(message.find("cannot read " + name + ": "), std::string::npos) << message;
     EXPECT_NE(message.find(phrase), std::string::npos) << "should say '" << phrase << "': " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
-    for (char ch : message) EXPECT_TRUE(ch >= 0x20 && ch < 0x7f) << "printable: " << message;
+    // Printable ASCII, and file names in their own letters (printable UTF-8).
+    for (size_t i = 0; i < message.size();) {
+      const auto ch = static_cast<unsigned char>(message[i]);
+      const size_t length =
+          ch >= 0x20 && ch < 0x7f ? 1 : text::printableUtf8Length(std::string_view(message).substr(i));
+      ASSERT_GT(length, 0u) << "printable: " << message;
+      i += length;
+    }
   }
 }
 

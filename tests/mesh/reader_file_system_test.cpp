@@ -84,12 +84,30 @@ TEST(GltfBuffer, NamingAFifoIsRefusedWithoutWaiting)
   EXPECT_NE(refusalOf([&] { readMesh(gltf); }).find("FIFO"), std::string::npos);
 }
 
-TEST(GltfBuffer, OfAnotherSizeThanDeclaredIsRefused)
+// Shorter than declared is refused, saying how long it is; longer (padding,
+// which the glTF validator accepts) is read as its first byteLength bytes.
+TEST(GltfBuffer, ShorterThanDeclaredIsRefusedAndLongerIsRead)
 {
   testing::ScratchFolder folder;
   const fs::path gltf = gltfWithBuffer(folder.path(), "model.bin");
-  std::ofstream(folder / "model.bin", std::ios::app) << "extra";
-  EXPECT_NE(refusalOf([&] { readMesh(gltf); }).find("declares"), std::string::npos);
+  const auto size = fs::file_size(folder / "model.bin");
+  std::ofstream(folder / "model.bin", std::ios::app) << std::string(4, '\0');
+  EXPECT_EQ(readMesh(gltf).triangleCount(), 4u);
+  fs::resize_file(folder / "model.bin", size - 1);
+  const std::string message = refusalOf([&] { readMesh(gltf); });
+  EXPECT_NE(message.find("has " + std::to_string(size - 1) + " bytes, fewer than the " + std::to_string(size) +
+                         " its buffer declares"),
+            std::string::npos)
+      << message;
+}
+
+// A file name beyond ASCII is named as it is, not as question marks.
+TEST(GltfBuffer, AMissingFileIsNamedInItsOwnLetters)
+{
+  testing::ScratchFolder folder;
+  const fs::path gltf = gltfWithBuffer(folder.path(), "donn%C3%A9es%20%C3%BC.bin");
+  const std::string message = refusalOf([&] { readMesh(gltf); });
+  EXPECT_NE(message.find("données ü.bin"), std::string::npos) << message;
 }
 
 TEST(GltfBuffer, MissingIsAnInputErrorNamingIt)

@@ -12,6 +12,7 @@ lbmshape_reader_test(mesh_tests
   ${CMAKE_CURRENT_LIST_DIR}/reader_file_system_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/round_trip_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/soup_reading_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/text_scan_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vertex_colours_test.cpp
 )
 target_link_libraries(mesh_tests PRIVATE meshoptimizer::meshoptimizer)  # decodes what --compress wrote

@@ -1,6 +1,7 @@
 #include "lbmshape/core/atomic_file.hpp"
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <limits>
@@ -46,6 +47,21 @@ int syncToDisk(const std::filesystem::path& path, int flags)
   int error = ::fsync(fd) == 0 || errno == EINVAL ? 0 : errno;  // EINVAL: this file system has nothing to sync
   ::close(fd);
   return error;
+}
+
+// This machine's name as temporary files carry it: letters, digits and
+// '_' only (a '-' would run into the process id), at most 32 of them.
+const std::string& thisHost()
+{
+  static const std::string host = [] {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
+    std::string kept;
+    for (const char* c = name; *c && kept.size() < 32; ++c)
+      kept += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+    return kept;
+  }();
+  return host;
 }
 
 // The folder a file lies in ("." for a bare name).
@@ -107,8 +123,8 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   static std::atomic<unsigned> counter{0};
   const std::string stem = destination_.stem().string(), extension = destination_.extension().string();
   for (int attempt = 0; attempt < 100; ++attempt) {
-    std::filesystem::path candidate =
-        folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
+    std::filesystem::path candidate = folder / ("." + stem + ".tmp-" + thisHost() + "-" + std::to_string(::getpid()) +
+                                                "-" + std::to_string(counter++) + extension);
     // Listed before it is made (a second Ctrl-C or an abort ends the process
     // without unwinding): listed only after, a signal in between left it.
     // A name that is taken (a dead process's leftover) is taken off again.
@@ -143,16 +159,25 @@ AtomicFile::~AtomicFile()
   temporary_files::forget(ticket_);
 }
 
-size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder)
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder, const std::filesystem::path& target)
 {
-  static const std::regex temporaryName(R"(^\..*\.tmp-([0-9]+)-[0-9]+(\.[^.]*)?$)");
+  // ".<stem>.tmp-<host>-<pid>-<n><ext>"; without the host, as lbmshape
+  // named them before it wrote the host in.
+  static const std::regex temporaryName(R"(^\..*\.tmp-(?:([A-Za-z0-9_]+)-)?([0-9]+)-[0-9]+(\.[^.]*)?$)");
+  std::string prefix(1, '.');  // appended, not "." + ...: GCC 12 warns falsely (-Wrestrict) on that
+  if (!target.empty()) prefix += target.stem().string() + ".tmp-";
+  const std::string extension = target.extension().string();
   size_t removed = 0;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     std::smatch match;
     const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix) || (!target.empty() && !name.ends_with(extension))) continue;
     if (!std::regex_match(name, match, temporaryName) || !entry.is_regular_file(ec)) continue;
-    const unsigned long pid = std::stoul(match[1].str());
+    // Another machine's (a folder shared over the network): its process
+    // ids are not this machine's to ask about.
+    if (match[1].matched && match[1].str() != thisHost()) continue;
+    const unsigned long pid = std::stoul(match[2].str());
     // kill(pid, 0) sends nothing: ESRCH says no process has the id.
     if (pid == 0 || pid > uint64_t(std::numeric_limits<pid_t>::max()) || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH)
       continue;
@@ -170,6 +195,9 @@ void AtomicFile::commit()
   if (ec) throw OutputError(failure(target_, ec.message()));
   committed_ = true;
   temporary_files::forget(ticket_);
+  // What an earlier writer of this file left when it was killed without
+  // unwinding (SIGKILL, the out-of-memory killer) goes now.
+  removeDeadWritersTemporaryFiles(folderOf(destination_), destination_);
   // The rename itself reaches the disk with the folder's own metadata; if
   // that cannot be forced the file is still complete, only perhaps not yet
   // durable, so this is not an error.

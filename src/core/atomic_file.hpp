@@ -57,10 +57,12 @@ private:
 };
 
 // Removes from `folder` the temporary files of AtomicFiles whose process is
-// gone: one killed by a signal no handler sees (SIGKILL, the kernel's
-// out-of-memory killer) leaves its ".<name>.tmp-<pid>-<n><ext>", which
-// stayed for ever and made the folder "not empty" to the next morph into
-// it. Files of live processes are left. Returns how many went.
-size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder);
+// gone (of `target`'s only, where one is given): one killed by a signal no
+// handler sees (SIGKILL, the kernel's out-of-memory killer) leaves its
+// ".<name>.tmp-<host>-<pid>-<n><ext>", which stayed for ever and made the
+// folder "not empty" to the next morph into it. Files of live processes,
+// and of other machines (a folder shared over the network), are left.
+// Returns how many went. commit() calls it for its own target.
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder, const std::filesystem::path& target = {});
 
 }  // namespace lbmshape

@@ -9,20 +9,27 @@
 #include <algorithm>
 #include <optional>
 #include <fstream>
+#include <string>
 
+#include "lbmshape/core/cgroup_memory.hpp"
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/memory_sizes.hpp"
 
 namespace lbmshape {
 namespace {
 
-// The cgroup (v2) limit of this process, if any.
-uint64_t cgroupLimit()
+// What the machine's other processes leave: /proc/meminfo's MemAvailable
+// (free memory and the page cache the kernel can reclaim), or all of
+// physical memory where that cannot be read.
+uint64_t availablePhysicalBytes()
 {
-  std::ifstream file("/sys/fs/cgroup/memory.max");
-  uint64_t limit = 0;
-  if (file >> limit && limit > 0) return limit;  // "max" reads as no number
-  return UINT64_MAX;
+  std::ifstream file("/proc/meminfo");
+  std::string key;
+  uint64_t kibibytes = 0;
+  std::string unit;
+  while (file >> key >> kibibytes >> unit)
+    if (key == "MemAvailable:") return kibibytes * 1024;
+  return uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
 }
 
 // Bytes of address space this process maps now (/proc/self/statm's first field).
@@ -46,8 +53,8 @@ std::optional<uint64_t> addressSpaceLimit()
 
 uint64_t hostMemoryBytes()
 {
-  uint64_t bytes = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
-  bytes = std::min(bytes, cgroupLimit());
+  uint64_t bytes = availablePhysicalBytes();
+  if (const std::optional<uint64_t> left = cgroupMemoryLeft()) bytes = std::min(bytes, *left);
   if (const std::optional<uint64_t> limit = addressSpaceLimit()) {
     const uint64_t mapped = mappedBytes();
     bytes = std::min<uint64_t>(bytes, *limit > mapped ? *limit - mapped : 0);

@@ -1,8 +1,9 @@
-// What this process may still allocate on the host: the machine's physical
-// memory, less under a cgroup's memory.max (a container, a batch job's
-// limit) or an address-space limit (ulimit -v, less what is mapped
-// already). For refusing a job that cannot fit before it allocates, as the
-// device checks do for device memory.
+// What this process may still allocate on the host: the machine's
+// available memory (MemAvailable), less where a cgroup's limit leaves less
+// (a container, a batch job, a systemd scope: core/cgroup_memory.hpp, the
+// limit less what the cgroup's processes use) or an address-space limit
+// (ulimit -v, less what is mapped already). For refusing a job that cannot
+// fit before it allocates, as the device checks do for device memory.
 #pragma once
 
 #include <climits>

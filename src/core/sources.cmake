@@ -2,6 +2,7 @@ target_sources(lbmshape_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/atomic_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cache_directory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/folder_lock.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/cgroup_memory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/host_memory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interrupt.cpp
   ${CMAKE_CURRENT_LIST_DIR}/last_resort.cpp

@@ -7,6 +7,7 @@
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/gpu/driver_modules.hpp"
+#include "lbmshape/gpu/driver_shader_cache.hpp"
 
 namespace lbmshape::gpu {
 namespace {
@@ -80,6 +81,7 @@ bool validationRequestedByEnvironment()
 VulkanInstance::VulkanInstance(bool validation)
 {
   validation = validation || validationRequestedByEnvironment();
+  turnOffADriverShaderCacheWithoutRoom();
   vk::ApplicationInfo app("lbmshape", 1, "lbmshape", 1, VK_API_VERSION_1_1);
   std::vector<const char*> layers, extensions;
   if (validation) {

@@ -1,4 +1,5 @@
 lbmshape_test(core_tests
+  ${CMAKE_CURRENT_LIST_DIR}/cgroup_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/concurrent_union_find_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/host_memory_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interrupt_test.cpp

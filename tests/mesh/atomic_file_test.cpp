@@ -1,5 +1,6 @@
 // AtomicFile: the target appears, or changes, only on commit().
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <fstream>
@@ -155,14 +156,45 @@ TEST(AtomicFile, ADeadWritersTemporaryFilesAreRemoved)
   if (child == 0) ::_exit(0);
   ASSERT_GT(child, 0);
   ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // gone: its id names no process
-  const auto dead = folder / (".frame_0003.tmp-" + std::to_string(child) + "-7.glb");
-  const auto live = folder / (".frame_0004.tmp-" + std::to_string(::getpid()) + "-8.glb");
+  char host[256] = {};
+  ASSERT_EQ(::gethostname(host, sizeof host - 1), 0);
+  std::string thisHost;
+  for (const char* c = host; *c && thisHost.size() < 32; ++c) thisHost += std::isalnum(uint8_t(*c)) ? *c : '_';
+  const std::string gone = std::to_string(child);
+  const auto dead = folder / (".frame_0003.tmp-" + thisHost + "-" + gone + "-7.glb");
+  const auto deadUnnamed = folder / (".frame_0005.tmp-" + gone + "-7.glb");  // as named before the host
+  const auto live = folder / (".frame_0004.tmp-" + thisHost + "-" + std::to_string(::getpid()) + "-8.glb");
+  // Another machine's, in a folder shared over the network: its process
+  // ids say nothing here.
+  const auto elsewhere = folder / (".frame_0006.tmp-" + thisHost + "x-" + gone + "-9.glb");
   const auto other = folder / ".notes.tmp-x.glb";
   const auto frame = folder / "frame_0002.glb";
-  for (const auto& path : {dead, live, other, frame}) std::ofstream(path) << "x";
-  EXPECT_EQ(removeDeadWritersTemporaryFiles(folder.path()), 1u);
+  for (const auto& path : {dead, deadUnnamed, live, elsewhere, other, frame}) std::ofstream(path) << "x";
+  EXPECT_EQ(removeDeadWritersTemporaryFiles(folder.path()), 2u);
   EXPECT_FALSE(std::filesystem::exists(dead));
-  for (const auto& path : {live, other, frame}) EXPECT_TRUE(std::filesystem::exists(path)) << path;
+  EXPECT_FALSE(std::filesystem::exists(deadUnnamed));
+  for (const auto& path : {live, elsewhere, other, frame}) EXPECT_TRUE(std::filesystem::exists(path)) << path;
+}
+
+// A denoise killed while it wrote (the out-of-memory killer) left its
+// temporary file beside the output for ever: the next write of that output
+// removes it on commit, and leaves other files' temporary files alone.
+TEST(AtomicFile, ACommitRemovesItsTargetsDeadTemporaryFiles)
+{
+  testing::ScratchFolder folder;
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+  const auto leftover = folder / (".big.tmp-" + std::to_string(child) + "-1.obj");
+  const auto anotherFiles = folder / (".small.tmp-" + std::to_string(child) + "-1.obj");
+  for (const auto& path : {leftover, anotherFiles}) std::ofstream(path) << "x";
+  AtomicFile file(folder / "big.obj");
+  file.open() << "o";
+  file.commit();
+  EXPECT_FALSE(std::filesystem::exists(leftover));
+  EXPECT_TRUE(std::filesystem::exists(anotherFiles));
+  EXPECT_TRUE(std::filesystem::exists(folder / "big.obj"));
 }
 
 // The first Ctrl-C is a request, and the job unwinds, removing its temporary

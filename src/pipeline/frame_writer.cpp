@@ -1,4 +1,5 @@
 #include "lbmshape/pipeline/frame_writer.hpp"
+#include "lbmshape/pipeline/staged_frames.hpp"
 
 #include <cxxabi.h>
 
@@ -97,7 +98,7 @@ double FrameWriter::push(int index, FrameField field)
   Stopwatch waited;
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return queue_.size() < queueCapacity || error_; });
-  if (error_) std::rethrow_exception(error_);
+  if (error_) rethrowSayingWhatIsComplete();
   const double ms = waited.ms();
   queue_.emplace_back(index, std::move(field));
   changed_.notify_all();
@@ -108,8 +109,30 @@ std::vector<TriangleMesh> FrameWriter::finish()
 {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return (queue_.empty() && !busy_ && toCommit_.empty() && !committing_) || error_; });
-  if (error_) std::rethrow_exception(error_);
+  if (error_) rethrowSayingWhatIsComplete();
   return std::move(meshes_);
+}
+
+void FrameWriter::rethrowSayingWhatIsComplete() const
+{
+  if (sink_) std::rethrow_exception(error_);
+  try {
+    std::rethrow_exception(error_);
+  } catch (const OutputError& e) {
+    // A disk full or a file-size limit part way: the frames before the
+    // failure stay, whole, and a user should not have to list the folder
+    // to learn which (a stop by a signal says so too).
+    // Frames staged to replace an earlier morph's are removed with their
+    // hidden folder (StagedFrames): the earlier files stay.
+    if (folder_.filename() == StagedFrames::hiddenFolderName)
+      throw OutputError(std::string(e.what()) + "; " + folder_.parent_path().string() +
+                        " keeps the earlier morph's files");
+    if (written_ == 0) throw OutputError(std::string(e.what()) + "; no frame was written");
+    const std::string kept = written_ == 1 ? framePath(0).filename().string() + " is complete"
+                                           : framePath(0).filename().string() + " to " +
+                                                 framePath(written_ - 1).filename().string() + " are complete";
+    throw OutputError(std::string(e.what()) + "; " + kept + " in " + folder_.string());
+  }
 }
 
 std::vector<int> FrameWriter::emptyFrames() const

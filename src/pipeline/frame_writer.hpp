@@ -120,6 +120,8 @@ private:
   bool stopping_ = false;
   bool busy_ = false;
   std::exception_ptr error_;
+  // Rethrows error_; an OutputError with the frames it leaves complete.
+  [[noreturn]] void rethrowSayingWhatIsComplete() const;
   std::vector<TriangleMesh> meshes_;
   int written_ = 0;
   std::vector<int> emptyFrames_;

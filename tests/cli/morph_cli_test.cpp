@@ -76,6 +76,41 @@ TEST_F(MorphCli, FramesAndAnimationAreValidGltf)
 // Frames are extracted and written on a thread of their own while the
 // lattice goes on; two runs interleave differently, and must still write the
 // same bytes.
+// A full disk or a file-size limit part way through: the frames before the
+// failure stay whole, and the error says which (it named only the file
+// that failed, and a user had to list the folder).
+TEST_F(MorphCli, AWriteThatFailsPartWaySaysWhichFramesAreComplete)
+{
+  // Torus to sphere: the frames grow, so a limit between the first's size
+  // and the last's fails part way.
+  const std::vector<std::string> job = {
+      "morph", torus, sphere, (folder / "frames").string(), "--res", "32", "--frames", "6", "-q", "--no-animation"};
+  ASSERT_EQ(testing::runLbmshape(job).exitCode, 0);
+  const uintmax_t first = fs::file_size(folder / "frames" / "frame_0000.glb"),
+                  last = fs::file_size(folder / "frames" / "frame_0005.glb");
+  ASSERT_GT(last, first + 4096);
+  fs::remove_all(folder / "frames");
+
+  std::string command =
+      "exec prlimit --fsize=" + std::to_string((first + last) / 2) + " '" + testing::lbmshapeBinary() + "'";
+  for (const std::string& argument : job) command += " '" + argument + "'";
+  command += " 2>'" + (folder / "err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+  std::ifstream err(folder / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  std::vector<std::string> frames;
+  for (const auto& entry : fs::directory_iterator(folder / "frames"))
+    if (entry.path().filename().string().starts_with("frame_")) frames.push_back(entry.path().filename().string());
+  std::sort(frames.begin(), frames.end());
+  ASSERT_GE(frames.size(), 1u) << message;
+  ASSERT_LT(frames.size(), 6u) << message;
+  const std::string said =
+      frames.size() == 1 ? frames[0] + " is complete" : frames.front() + " to " + frames.back() + " are complete";
+  EXPECT_NE(message.find(said + " in " + (folder / "frames").string()), std::string::npos) << message;
+}
+
 TEST_F(MorphCli, FramesDoNotDependOnTheWritersTiming)
 {
   auto bytes = [](const fs::path& p) {

@@ -140,6 +140,22 @@ std::vector<glm::vec3> GltfAccessors::colours(int index, const std::string& what
   return out;
 }
 
+std::vector<glm::dvec4> GltfAccessors::quadruples(int index, const std::string& what) const
+{
+  const tinygltf::Accessor& a = accessor(index, TINYGLTF_TYPE_VEC4, what);
+  std::vector<glm::dvec4> out(count(index, TINYGLTF_TYPE_VEC4, what), glm::dvec4(0.0));
+  read(a, 4, what, [&](uint64_t i, int c, double value) { out[i][c] = value; });
+  return out;
+}
+
+std::vector<glm::dmat4> GltfAccessors::matrices(int index, const std::string& what) const
+{
+  const tinygltf::Accessor& a = accessor(index, TINYGLTF_TYPE_MAT4, what);
+  std::vector<glm::dmat4> out(count(index, TINYGLTF_TYPE_MAT4, what), glm::dmat4(0.0));
+  read(a, 16, what, [&](uint64_t i, int c, double value) { out[i][c / 4][c % 4] = value; });
+  return out;
+}
+
 std::vector<uint32_t> GltfAccessors::indices(int index, uint64_t below, const std::string& what) const
 {
   const tinygltf::Accessor& a = accessor(index, TINYGLTF_TYPE_SCALAR, what);

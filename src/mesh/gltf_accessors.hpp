@@ -31,6 +31,12 @@ public:
   // A VEC3 or VEC4 accessor's elements as RGB (alpha dropped), each in
   // [0, 1]: COLOR_0 (float, or normalized unsigned integers).
   std::vector<glm::vec3> colours(int accessor, const std::string& what) const;
+  // A VEC4 accessor's elements (float, integers as they are, or normalized
+  // integers scaled as glTF defines them): a skin's JOINTS_n and WEIGHTS_n.
+  std::vector<glm::dvec4> quadruples(int accessor, const std::string& what) const;
+  // A MAT4 accessor's elements (column-major, as glTF stores them): a skin's
+  // inverse bind matrices.
+  std::vector<glm::dmat4> matrices(int accessor, const std::string& what) const;
   // A SCALAR accessor's elements as indices; each must be below `below`.
   std::vector<uint32_t> indices(int accessor, uint64_t below, const std::string& what) const;
 

@@ -19,6 +19,7 @@
 #include "lbmshape/mesh/glb_container.hpp"
 #include "lbmshape/mesh/gltf_meshopt_decoding.hpp"
 #include "lbmshape/mesh/gltf_scene_walk.hpp"
+#include "lbmshape/mesh/gltf_skinning.hpp"
 #include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
@@ -103,7 +104,7 @@ tinygltf::Model load(const MeshSource& source, MeshFormat format, GltfFileAccess
 class SoupBuilder {
 public:
   SoupBuilder(const tinygltf::Model& model, const MeshSource& source, const GltfAccessors& accessors)
-      : model_(model), source_(source), accessors_(accessors)
+      : model_(model), source_(source), accessors_(accessors), skins_(model, source, accessors)
   {}
 
   // Counts what the instances would add, and refuses it beyond the budget
@@ -160,7 +161,7 @@ public:
   {
     const auto& primitives = model_.meshes[size_t(instance.mesh)].primitives;
     for (size_t p = 0; p < primitives.size(); ++p)
-      addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world, *instance.weights);
+      addPrimitive(primitives[p], primitiveName(instance.mesh, p), instance.world, *instance.weights, instance.skin);
   }
 
   // One warning for each kind of primitive passed over, however many: a
@@ -226,15 +227,18 @@ private:
     }
   }
 
-  void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, const glm::dmat4& world,
-                    const std::vector<double>& weights)
+  void addPrimitive(const tinygltf::Primitive& primitive, const std::string& name, glm::dmat4 world,
+                    const std::vector<double>& weights, int skin)
   {
     const int mode = primitive.mode;  // one of glTF's (gltf_json_element.hpp); triangles when absent
     if (!isTriangles(mode)) return notTriangles_.add(name);
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) return withoutPositions_.add(name);
     std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");
-    applyMorphTargets(primitive, name, weights, positions);
+    applyMorphTargets(primitive, name, weights, positions);  // before skinning, as glTF orders them
+    // A skinned mesh is placed by its joints alone (gltf_skinning.hpp).
+    const bool skinMirrors = skin >= 0 && skins_.pose(primitive, name, skin, positions);
+    if (skin >= 0) world = glm::dmat4(1.0);
     std::vector<uint32_t> order;
     if (primitive.indices >= 0) {
       order = accessors_.indices(primitive.indices, positions.size(), name + " indices");
@@ -248,7 +252,7 @@ private:
     addColours(primitive, name, base, positions.size());
     // A mirroring transform turns counter-clockwise faces clockwise (glTF
     // spec, 3.7.4); swapping two corners keeps them facing outwards.
-    const bool mirrored = glm::determinant(world) < 0;
+    const bool mirrored = skin >= 0 ? skinMirrors : glm::determinant(world) < 0;
     auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
       if (mirrored) std::swap(b, c);
       mesh_.triangles.emplace_back(base + a, base + b, base + c);
@@ -276,6 +280,7 @@ private:
   const tinygltf::Model& model_;
   const MeshSource& source_;
   const GltfAccessors& accessors_;
+  GltfSkins skins_;
   TriangleMesh mesh_;
   Skipped notTriangles_{"points or lines, not triangles", 0, {}}, withoutPositions_{"no POSITION attribute", 0, {}};
 };

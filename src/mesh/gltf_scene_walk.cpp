@@ -123,12 +123,38 @@ std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const Mesh
         source.refuse(nodeName(size_t(index)) + " refers to mesh " + std::to_string(node.mesh) +
                       ", which does not exist");
       const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
-      instances.push_back({node.mesh, world, node.weights.empty() ? &mesh.weights : &node.weights});
+      if (node.skin >= 0 && size_t(node.skin) >= model.skins.size())
+        source.refuse(nodeName(size_t(index)) + " refers to skin " + std::to_string(node.skin) +
+                      ", which does not exist");
+      instances.push_back({node.mesh, world, node.weights.empty() ? &mesh.weights : &node.weights, node.skin});
     }
     for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
       pending.emplace_back(*child, world);
   }
   return instances;
+}
+
+std::vector<glm::dmat4> nodeWorldTransforms(const tinygltf::Model& model, const MeshSource& source)
+{
+  const std::vector<int> parent = parentsOf(model, source);  // trees: each chain ends at a root
+  const size_t n = model.nodes.size();
+  std::vector<glm::dmat4> world(n);
+  std::vector<bool> known(n, false);
+  std::vector<size_t> chain;
+  for (size_t start = 0; start < n; ++start) {
+    chain.clear();
+    for (size_t node = start; !known[node];) {
+      chain.push_back(node);
+      if (parent[node] == noParent) break;
+      node = size_t(parent[node]);
+    }
+    for (auto node = chain.rbegin(); node != chain.rend(); ++node) {
+      const glm::dmat4 local = localTransform(model.nodes[*node], *node, source);
+      world[*node] = parent[*node] == noParent ? local : world[size_t(parent[*node])] * local;
+      known[*node] = true;
+    }
+  }
+  return world;
 }
 
 }  // namespace lbmshape

@@ -19,6 +19,7 @@ struct GltfInstance {
   // The weights of the mesh's morph targets: the node's, else the mesh's
   // (glTF 2.0, 3.7.2.2); empty: none.
   const std::vector<double>* weights;
+  int skin = -1;  // the node's skin (an index into model.skins, checked), or -1
 };
 
 // The meshes of the scene to show (the default scene, else scene 0, else
@@ -28,5 +29,9 @@ struct GltfInstance {
 // that is its own ancestor, a node with two parents, or a scene that lists
 // a node that is not a root.
 std::vector<GltfInstance> meshInstances(const tinygltf::Model& model, const MeshSource& source);
+
+// Every node's world transform, in or out of the scene (a skin's joints are
+// nodes, and may lie outside the scene's trees). Throws as meshInstances().
+std::vector<glm::dmat4> nodeWorldTransforms(const tinygltf::Model& model, const MeshSource& source);
 
 }  // namespace lbmshape

@@ -12,6 +12,7 @@ target_sources(lbmshape_mesh PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/gltf_meshopt_decoding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_scene_walk.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_skinning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/icosphere.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_format.cpp

@@ -189,6 +189,65 @@ TEST(GltfReadingNamed, AGlbNamedGltfIsReadAsGlb)
   EXPECT_EQ(readMesh(folder / "model.gltf").triangleCount(), 4u);
 }
 
+// A skinned mesh is posed by its joints, as a viewer shows it without an
+// animation, and the transform of the node that holds it is ignored (glTF
+// 2.0, 3.7.3). Before, the skin was ignored and the node's translation
+// applied: the mesh came out in its bind pose, 100 units off.
+class GltfSkin : public GltfReading {
+protected:
+  // A tetrahedron held by node 0 (translated by 100, which must not count),
+  // skinned to joints 1 and 2; joint 2 raised by 3 along z. Corners 0-2
+  // follow joint 1 alone; corner 3 the two joints half and half.
+  meshio::HandMadeGltf skinned(const glm::vec3& jointScale = glm::vec3(1.0f))
+  {
+    meshio::HandMadeGltf gltf;
+    const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
+    auto& attributes = gltf.json["meshes"][mesh]["primitives"][0]["attributes"];
+    attributes["JOINTS_0"] = gltf.addJoints({{0, 1, 0, 0}, {0, 1, 0, 0}, {0, 1, 0, 0}, {0, 1, 0, 0}});
+    attributes["WEIGHTS_0"] = gltf.addWeights({{1, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}, {0.5, 0.5, 0, 0}});
+    gltf.json["skins"] = {
+        {{"joints", {1, 2}}, {"inverseBindMatrices", gltf.addMatrices({glm::mat4(1.0f), glm::mat4(1.0f)})}}};
+    gltf.json["nodes"] = {{{"mesh", mesh}, {"skin", 0}, {"translation", {100, 0, 0}}},
+                          {{"children", {2}}, {"scale", {jointScale.x, jointScale.y, jointScale.z}}},
+                          {{"translation", {0, 0, 3}}}};
+    gltf.json["scenes"] = {{{"nodes", {0, 1}}}};
+    return gltf;
+  }
+};
+
+TEST_P(GltfSkin, AMeshIsPosedByItsJointsNotByItsNode)
+{
+  const TriangleMesh read = readBack(skinned());
+  ASSERT_EQ(read.vertexCount(), 4u);
+  for (int v = 0; v < 3; ++v) expectNear(read.positions[size_t(v)], glm::dvec3(meshio::tetraCorners[size_t(v)]), 1e-6);
+  expectNear(read.positions[3], glm::dvec3(meshio::tetraCorners[3]) + glm::dvec3(0, 0, 1.5), 1e-6);
+  EXPECT_GT(meshio::signedVolume(read), 0.0);
+}
+
+// Joints that mirror turn the faces, as a mirroring node does.
+TEST_P(GltfSkin, MirroringJointsKeepTheFacesOutward)
+{
+  const TriangleMesh read = readBack(skinned(glm::vec3(-1.0f, 1.0f, 1.0f)));
+  EXPECT_NEAR(read.positions[1].x, -1.0, 1e-6);  // corner 1, (1, 0, 0), mirrored
+  EXPECT_GT(meshio::signedVolume(read), 0.0);
+}
+
+TEST_P(GltfSkin, AJointPastTheSkinsIsRefusedNamingIt)
+{
+  meshio::HandMadeGltf gltf = skinned();
+  gltf.json["skins"][0]["joints"] = {1};
+  try {
+    readBack(gltf);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("JOINTS_0 refers to joint 1, but skin 0 has 1"), std::string::npos)
+        << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Containers, GltfSkin, ::testing::Values(".gltf", ".glb"),
+                         [](const auto& info) { return info.param.substr(1); });
+
 // A Draco file as exporters write it: the compressed primitive's accessors
 // have no buffer view. It is refused for the extension it requires, not for
 // the accessors tinygltf cannot read ("accessor[1] invalid bufferView").

@@ -75,6 +75,31 @@ int HandMadeGltf::addColours8(const std::vector<glm::u8vec4>& colours)
   return int(json["accessors"].size() - 1);
 }
 
+int HandMadeGltf::addJoints(const std::vector<glm::u8vec4>& joints)
+{
+  const int view = addView(joints.data(), joints.size() * 4, 34962);
+  json["accessors"].push_back(
+      {{"bufferView", view}, {"componentType", 5121}, {"count", joints.size()}, {"type", "VEC4"}});
+  return int(json["accessors"].size() - 1);
+}
+
+int HandMadeGltf::addWeights(const std::vector<glm::vec4>& weights)
+{
+  const int view = addView(weights.data(), weights.size() * sizeof(glm::vec4), 34962);
+  json["accessors"].push_back(
+      {{"bufferView", view}, {"componentType", 5126}, {"count", weights.size()}, {"type", "VEC4"}});
+  return int(json["accessors"].size() - 1);
+}
+
+int HandMadeGltf::addMatrices(const std::vector<glm::mat4>& matrices)
+{
+  const int view = addView(matrices.data(), matrices.size() * sizeof(glm::mat4), -1);
+  json["bufferViews"].back().erase("target");
+  json["accessors"].push_back(
+      {{"bufferView", view}, {"componentType", 5126}, {"count", matrices.size()}, {"type", "MAT4"}});
+  return int(json["accessors"].size() - 1);
+}
+
 int HandMadeGltf::addMesh(int positions, int indices, int mode)
 {
   nlohmann::json primitive = {{"attributes", {{"POSITION", positions}}}, {"mode", mode}};

@@ -28,6 +28,11 @@ public:
   // COLOR_0 accessors: float RGB, or normalized unsigned bytes RGBA.
   int addColours(const std::vector<glm::vec3>& colours);
   int addColours8(const std::vector<glm::u8vec4>& colours);
+  // A skin's accessors: JOINTS_0 (unsigned bytes), WEIGHTS_0 (floats), and
+  // inverse bind matrices (MAT4 floats, column-major).
+  int addJoints(const std::vector<glm::u8vec4>& joints);
+  int addWeights(const std::vector<glm::vec4>& weights);
+  int addMatrices(const std::vector<glm::mat4>& matrices);
   // A mesh of one primitive; `indices` < 0 for none. Returns the mesh index.
   int addMesh(int positions, int indices, int mode = 4);
 

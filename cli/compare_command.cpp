@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "lbmshape/analysis/joined_seams.hpp"
 #include "lbmshape/analysis/mesh_topology.hpp"
 #include "lbmshape/analysis/surface_comparison.hpp"
 #include "lbmshape/core/error.hpp"
@@ -17,9 +18,11 @@ struct CompareArguments {
   uint64_t seed = 1;
 };
 
-nlohmann::json topologyJson(const std::string& path, const MeshTopology& t)
+nlohmann::json topologyJson(const std::string& path, const JoinedSeams& seen)
 {
+  const MeshTopology& t = seen.topology;
   return {{"path", path},
+          {"joined_vertices", seen.joinedVertices},
           {"vertices", t.vertices},
           {"triangles", t.triangles},
           {"components", t.components},
@@ -42,13 +45,17 @@ nlohmann::json directedJson(const DirectedDistance& d)
           {"mean_normal_angle_deg", d.meanNormalAngle}};
 }
 
-void printTopology(const char* label, const std::string& path, const MeshTopology& t)
+void printTopology(const char* label, const std::string& path, const JoinedSeams& seen)
 {
+  const MeshTopology& t = seen.topology;
   std::printf("%s %s\n  %zu vertices, %zu triangles, %zu component(s), area %.6g, volume %.6g\n", label, path.c_str(),
               t.vertices, t.triangles, t.components, t.area, t.signedVolume);
   std::printf("  genus %s, %zu boundary edges, %zu non-manifold edges, %zu non-manifold vertices%s\n",
               t.genus ? std::to_string(*t.genus).c_str() : "- (not a closed manifold)", t.boundaryEdges,
               t.nonManifoldEdges, t.nonManifoldVertices, t.consistentlyOriented ? "" : ", inconsistent orientation");
+  if (seen.joinedVertices > 0)
+    std::printf("  (%zu vertices at the positions of others joined to them, as denoise joins them)\n",
+                seen.joinedVertices);
 }
 
 void runCompare(const CommonOptions& common, const CompareArguments& args)
@@ -58,7 +65,9 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
   // Flat meshes too: distances and topology need no inside.
   const TriangleMesh a = readMesh(args.a, EmptyMesh::Refused, FlatMesh::Allowed),
                      b = readMesh(args.b, EmptyMesh::Refused, FlatMesh::Allowed);
-  const MeshTopology ta = analyzeTopology(a), tb = analyzeTopology(b);
+  // Topology as denoise reads the meshes (analysis/joined_seams.hpp);
+  // distances of the meshes as they are (a seam changes none).
+  const JoinedSeams ta = joinSeams(a), tb = joinSeams(b);
   ComparisonOptions options;
   options.minSamples = args.samples;
   options.seed = args.seed;

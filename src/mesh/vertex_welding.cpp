@@ -58,4 +58,22 @@ TriangleMesh weldEqualPositions(const std::vector<glm::dvec3>& corners)
   return mesh;
 }
 
+TriangleMesh weldEqualPositions(const TriangleMesh& mesh)
+{
+  std::vector<glm::dvec3> corners;
+  corners.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) corners.push_back(mesh.positions[t[k]]);
+  TriangleMesh joined = weldEqualPositions(corners);
+  const auto carry = [&](const auto& perVertex, auto& into) {
+    if (perVertex.size() != mesh.positions.size()) return;
+    into.resize(joined.positions.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) into[joined.triangles[t][k]] = perVertex[mesh.triangles[t][k]];
+  };
+  carry(mesh.normals, joined.normals);
+  carry(mesh.colours, joined.colours);
+  return joined;
+}
+
 }  // namespace lbmshape

@@ -14,4 +14,12 @@ namespace lbmshape {
 // merged. At most 2^32 - 1 corners.
 TriangleMesh weldEqualPositions(const std::vector<glm::dvec3>& corners);
 
+// The mesh with corners at equal positions made one vertex (a triangle
+// soup; a glTF split at its UV seams and sharp edges, or into a primitive
+// per material, as Blender exports it), each vertex keeping the normal and
+// colour of a corner there: the pieces the file's numbering cut apart are
+// one surface again, which can be closed, face out as a whole and keep its
+// volume.
+TriangleMesh weldEqualPositions(const TriangleMesh& mesh);
+
 }  // namespace lbmshape

@@ -4,50 +4,20 @@
 #include <vector>
 
 #include "lbmshape/core/log.hpp"
-#include "lbmshape/mesh/vertex_welding.hpp"
+#include "lbmshape/analysis/joined_seams.hpp"
 #include "lbmshape/sdf/shell_orientation.hpp"
 
 namespace lbmshape {
-namespace {
-
-// The mesh with corners at equal positions made one vertex (a triangle
-// soup; a glTF split at its UV seams and sharp edges, as Blender exports
-// it), each vertex keeping the normal and colour of a corner there: the
-// pieces the file's numbering cut apart are one surface again, which can be
-// closed, face out as a whole and keep its volume.
-TriangleMesh welded(const TriangleMesh& mesh)
-{
-  std::vector<glm::dvec3> corners;
-  corners.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) corners.push_back(mesh.positions[t[k]]);
-  TriangleMesh joined = weldEqualPositions(corners);
-  const auto carry = [&](const auto& perVertex, auto& into) {
-    if (perVertex.size() != mesh.positions.size()) return;
-    into.resize(joined.positions.size());
-    for (size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) into[joined.triangles[t][k]] = perVertex[mesh.triangles[t][k]];
-  };
-  carry(mesh.normals, joined.normals);
-  carry(mesh.colours, joined.colours);
-  return joined;
-}
-
-}  // namespace
 
 MeshTopology orientTheInput(TriangleMesh& mesh, const std::string& name)
 {
-  MeshTopology topology = analyzeTopology(mesh);
-  if (topology.boundaryEdges > 0) {
-    TriangleMesh joined = welded(mesh);
-    MeshTopology joinedTopology = analyzeTopology(joined);
-    if (joinedTopology.boundaryEdges < topology.boundaryEdges) {
-      log::verbose(name + ": " + std::to_string(mesh.vertexCount() - joined.vertexCount()) +
-                   " vertices at the positions of others joined to them (" + std::to_string(topology.boundaryEdges) +
-                   " open edges before, " + std::to_string(joinedTopology.boundaryEdges) + " after)");
-      mesh = std::move(joined);
-      topology = std::move(joinedTopology);
-    }
+  JoinedSeams seams = joinSeams(mesh);
+  MeshTopology topology = std::move(seams.topology);
+  if (seams.joined) {
+    log::verbose(name + ": " + std::to_string(seams.joinedVertices) +
+                 " vertices at the positions of others joined to them (" + std::to_string(seams.boundaryEdgesBefore) +
+                 " open edges before, " + std::to_string(topology.boundaryEdges) + " after)");
+    mesh = std::move(*seams.joined);
   }
   // Only a mesh that may need it is looked at: a single piece, wound
   // alike and facing out, is as the sign needs it.

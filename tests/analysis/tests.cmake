@@ -1,4 +1,5 @@
 lbmshape_test(analysis_tests
+  ${CMAKE_CURRENT_LIST_DIR}/joined_seams_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_topology_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_comparison_test.cpp
 )

@@ -591,6 +591,34 @@ TEST(CompareCli, IdenticalMeshesAreAtDistanceZero)
   EXPECT_TRUE(j["b"]["closed_manifold"].get<bool>());
 }
 
+// compare reports topology as denoise reads the mesh: a glTF split into a
+// primitive per material (each numbering its seam's vertices) is one
+// closed surface, not "2 components, 414 boundary edges"; the distances
+// are the meshes' as they are.
+TEST(CompareCli, ASurfaceInPiecesNumberedApartIsReportedWhole)
+{
+  testing::ScratchFolder folder;
+  TriangleMesh split = testing::upperHalf(testing::icosphere(3));
+  const TriangleMesh lower = testing::lowerHalf(testing::icosphere(3));
+  const auto offset = uint32_t(split.positions.size());
+  split.positions.insert(split.positions.end(), lower.positions.begin(), lower.positions.end());
+  for (const glm::uvec3& t : lower.triangles) split.triangles.push_back(t + offset);
+  const std::string path = (folder / "split.obj").string(), whole = sphereObj(folder.path());
+  writeMesh(split, path);
+  testing::CliResult r = testing::runLbmshape({"compare", path, whole, "--json", "--samples", "2000"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["a"]["closed_manifold"].get<bool>());
+  EXPECT_EQ(j["a"]["components"], 1);
+  EXPECT_EQ(j["a"]["boundary_edges"], 0);
+  EXPECT_GT(j["a"]["joined_vertices"].get<int>(), 0);
+  EXPECT_EQ(j["b"]["joined_vertices"], 0);
+  EXPECT_LT(j["hausdorff"].get<double>(), 1e-6);
+  r = testing::runLbmshape({"compare", path, whole, "--samples", "2000"});
+  EXPECT_NE(r.out.find("vertices at the positions of others joined to them, as denoise joins them"), std::string::npos)
+      << r.out;
+}
+
 // compare and noise need no inside: a flat sheet (and a single triangle)
 // is measured and made noisy, where denoise refuses it ("encloses no
 // volume"); both were refused.

@@ -1,7 +1,11 @@
 #include "lbmshape/core/atomic_file.hpp"
 
 #include <atomic>
-#include <cctype>
+#include <set>
+#include <mutex>
+#include <fstream>
+#include <cstdio>
+#include <charconv>
 #include <cerrno>
 #include <cstring>
 #include <limits>
@@ -10,6 +14,7 @@
 #include <system_error>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -49,19 +54,31 @@ int syncToDisk(const std::filesystem::path& path, int flags)
   return error;
 }
 
-// This machine's name as temporary files carry it: letters, digits and
-// '_' only (a '-' would run into the process id), at most 32 of them.
-const std::string& thisHost()
+// Where this process's id means this process, as temporary files carry it:
+// 16 hex digits of a hash of the host's name, its boot's id and the inode
+// of the process-id namespace. Two machines sharing a folder over the
+// network, two containers with one host name (pods whose names share a
+// prefix, --uts=host) or a machine after a reboot each have their own, and
+// none takes another's live writer for dead.
+const std::string& writerTag()
 {
-  static const std::string host = [] {
+  static const std::string tag = [] {
+    std::string identity;
     char name[256] = {};
-    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
-    std::string kept;
-    for (const char* c = name; *c && kept.size() < 32; ++c)
-      kept += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
-    return kept;
+    if (::gethostname(name, sizeof name - 1) == 0) identity += name;
+    std::ifstream boot("/proc/sys/kernel/random/boot_id");
+    std::string bootId;
+    std::getline(boot, bootId);
+    identity += "/" + bootId;
+    struct stat space {};
+    if (::stat("/proc/self/ns/pid", &space) == 0) identity += "/" + std::to_string(space.st_ino);
+    uint64_t hash = 14695981039346656037ull;  // FNV-1a
+    for (const char c : identity) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return std::string(hex);
   }();
-  return host;
+  return tag;
 }
 
 // The folder a file lies in ("." for a bare name).
@@ -123,7 +140,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   static std::atomic<unsigned> counter{0};
   const std::string stem = destination_.stem().string(), extension = destination_.extension().string();
   for (int attempt = 0; attempt < 100; ++attempt) {
-    std::filesystem::path candidate = folder / ("." + stem + ".tmp-" + thisHost() + "-" + std::to_string(::getpid()) +
+    std::filesystem::path candidate = folder / ("." + stem + ".tmp-" + writerTag() + "-" + std::to_string(::getpid()) +
                                                 "-" + std::to_string(counter++) + extension);
     // Listed before it is made (a second Ctrl-C or an abort ends the process
     // without unwinding): listed only after, a signal in between left it.
@@ -159,32 +176,44 @@ AtomicFile::~AtomicFile()
   temporary_files::forget(ticket_);
 }
 
-size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder, const std::filesystem::path& target)
+namespace {
+
+// Removes the temporary files in `folder` whose writer is gone: those with
+// this process's tag (writerTag) whose process id names no process, and
+// with `untaggedToo` those named before the tag was written, as a locked
+// morph folder may. Never throws: a name, an id or an entry it cannot read
+// is passed over.
+size_t removeDead(const std::filesystem::path& folder, bool untaggedToo) noexcept
 {
-  // ".<stem>.tmp-<host>-<pid>-<n><ext>"; without the host, as lbmshape
-  // named them before it wrote the host in.
-  static const std::regex temporaryName(R"(^\..*\.tmp-(?:([A-Za-z0-9_]+)-)?([0-9]+)-[0-9]+(\.[^.]*)?$)");
-  std::string prefix(1, '.');  // appended, not "." + ...: GCC 12 warns falsely (-Wrestrict) on that
-  if (!target.empty()) prefix += target.stem().string() + ".tmp-";
-  const std::string extension = target.extension().string();
-  size_t removed = 0;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    std::smatch match;
-    const std::string name = entry.path().filename().string();
-    if (!name.starts_with(prefix) || (!target.empty() && !name.ends_with(extension))) continue;
-    if (!std::regex_match(name, match, temporaryName) || !entry.is_regular_file(ec)) continue;
-    // Another machine's (a folder shared over the network): its process
-    // ids are not this machine's to ask about.
-    if (match[1].matched && match[1].str() != thisHost()) continue;
-    const unsigned long pid = std::stoul(match[2].str());
-    // kill(pid, 0) sends nothing: ESRCH says no process has the id.
-    if (pid == 0 || pid > uint64_t(std::numeric_limits<pid_t>::max()) || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH)
-      continue;
-    if (std::filesystem::remove(entry.path(), ec)) ++removed;
+  try {
+    // ".<stem>.tmp-<tag>-<pid>-<n><ext>", or without the tag.
+    static const std::regex temporaryName(R"(^\..*\.tmp-(?:([A-Za-z0-9_]+)-)?([0-9]+)-[0-9]+(\.[^.]*)?$)");
+    size_t removed = 0;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator entry(folder, ec), end; !ec && entry != end; entry.increment(ec)) {
+      std::smatch match;
+      const std::string name = entry->path().filename().string();
+      if (!name.starts_with(".") || name.find(".tmp-") == std::string::npos) continue;
+      if (!std::regex_match(name, match, temporaryName) || !entry->is_regular_file(ec)) continue;
+      if (match[1].matched ? match[1].str() != writerTag() : !untaggedToo) continue;
+      const std::string digits = match[2].str();
+      uint64_t pid = 0;
+      if (std::from_chars(digits.data(), digits.data() + digits.size(), pid).ec != std::errc()) continue;
+      // kill(pid, 0) sends nothing: ESRCH says no process has the id.
+      if (pid == 0 || pid > uint64_t(std::numeric_limits<pid_t>::max()) || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH)
+        continue;
+      std::error_code removal;
+      if (std::filesystem::remove(entry->path(), removal)) ++removed;
+    }
+    return removed;
+  } catch (...) {
+    return 0;  // (std::regex or an allocation): the leftovers stay, as they did
   }
-  return removed;
 }
+
+}  // namespace
+
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder) { return removeDead(folder, true); }
 
 void AtomicFile::commit()
 {
@@ -195,9 +224,19 @@ void AtomicFile::commit()
   if (ec) throw OutputError(failure(target_, ec.message()));
   committed_ = true;
   temporary_files::forget(ticket_);
-  // What an earlier writer of this file left when it was killed without
-  // unwinding (SIGKILL, the out-of-memory killer) goes now.
-  removeDeadWritersTemporaryFiles(folderOf(destination_), destination_);
+  // What writers on this machine left in the folder when they were killed
+  // without unwinding (SIGKILL, the out-of-memory killer) goes now: once a
+  // folder in a process, not once a file (a morph's frames would read the
+  // folder once each).
+  {
+    static std::mutex cleaned;
+    static std::set<std::string> folders;
+    std::unique_lock lock(cleaned);
+    if (folders.insert(folderOf(destination_).string()).second) {
+      lock.unlock();
+      removeDead(folderOf(destination_), false);
+    }
+  }
   // The rename itself reaches the disk with the folder's own metadata; if
   // that cannot be forced the file is still complete, only perhaps not yet
   // durable, so this is not an error.

@@ -57,12 +57,16 @@ private:
 };
 
 // Removes from `folder` the temporary files of AtomicFiles whose process is
-// gone (of `target`'s only, where one is given): one killed by a signal no
-// handler sees (SIGKILL, the kernel's out-of-memory killer) leaves its
-// ".<name>.tmp-<host>-<pid>-<n><ext>", which stayed for ever and made the
-// folder "not empty" to the next morph into it. Files of live processes,
-// and of other machines (a folder shared over the network), are left.
-// Returns how many went. commit() calls it for its own target.
-size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder, const std::filesystem::path& target = {});
+// gone: one killed by a signal no handler sees (SIGKILL, the kernel's
+// out-of-memory killer) leaves its ".<name>.tmp-<tag>-<pid>-<n><ext>",
+// which stayed for ever and made the folder "not empty" to the next morph
+// into it. The tag names the machine, its boot and its process-id
+// namespace: files of live processes, and of other machines or containers
+// (a folder shared over the network or a volume), are left; files named
+// before the tag are taken for this machine's (a locked morph folder's).
+// Returns how many went. Never throws. commit() removes this machine's
+// dead writers' files (tagged ones only) from each folder it writes into,
+// once a process.
+size_t removeDeadWritersTemporaryFiles(const std::filesystem::path& folder);
 
 }  // namespace lbmshape

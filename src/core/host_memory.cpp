@@ -18,20 +18,6 @@
 namespace lbmshape {
 namespace {
 
-// What the machine's other processes leave: /proc/meminfo's MemAvailable
-// (free memory and the page cache the kernel can reclaim), or all of
-// physical memory where that cannot be read.
-uint64_t availablePhysicalBytes()
-{
-  std::ifstream file("/proc/meminfo");
-  std::string key;
-  uint64_t kibibytes = 0;
-  std::string unit;
-  while (file >> key >> kibibytes >> unit)
-    if (key == "MemAvailable:") return kibibytes * 1024;
-  return uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
-}
-
 // Bytes of address space this process maps now (/proc/self/statm's first field).
 uint64_t mappedBytes()
 {
@@ -53,7 +39,11 @@ std::optional<uint64_t> addressSpaceLimit()
 
 uint64_t hostMemoryBytes()
 {
-  uint64_t bytes = availablePhysicalBytes();
+  // Physical memory, not MemAvailable: that leaves out idle pages the
+  // kernel would swap out and ZFS's cache, and would refuse on a desktop
+  // jobs that run. A cgroup's limit, which the kernel enforces, counts
+  // what its processes use.
+  uint64_t bytes = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
   if (const std::optional<uint64_t> left = cgroupMemoryLeft()) bytes = std::min(bytes, *left);
   if (const std::optional<uint64_t> limit = addressSpaceLimit()) {
     const uint64_t mapped = mappedBytes();

@@ -1,5 +1,5 @@
 // What this process may still allocate on the host: the machine's
-// available memory (MemAvailable), less where a cgroup's limit leaves less
+// physical memory, less where a cgroup's limit leaves less
 // (a container, a batch job, a systemd scope: core/cgroup_memory.hpp, the
 // limit less what the cgroup's processes use) or an address-space limit
 // (ulimit -v, less what is mapped already). For refusing a job that cannot

@@ -48,7 +48,7 @@ bool hasRoomFor(const fs::path& folder, uint64_t leastFreeBytes)
 
 void turnOffADriverShaderCacheWithoutRoom()
 {
-  if (environment("MESA_SHADER_CACHE_DISABLE")) return;  // the user's choice, either way
+  if (environment("MESA_SHADER_CACHE_DISABLE")) return;  // the user's choice, either way (or this, done)
   const fs::path folder = driverShaderCacheFolder();
   if (folder.empty() || hasRoomFor(folder, leastRoomForTheDriversCache)) return;
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);

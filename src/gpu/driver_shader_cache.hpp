@@ -23,8 +23,10 @@ bool hasRoomFor(const std::filesystem::path& folder, uint64_t leastFreeBytes);
 // (exit 135, no message; a whole jobs file lost), whatever lbmshape's own
 // cache does. Where the cache's file system has under 64 MiB free, the
 // driver's cache is turned off (MESA_SHADER_CACHE_DISABLE, unless the
-// environment sets it) and a verbose line says so. Call before the first
-// Vulkan instance.
+// environment sets it) and a verbose line says so, once a process. Call
+// before the first Vulkan instance, on a thread no other reads the
+// environment beside (ComputeDevice's constructor does; the instance
+// calls it again, for programs that make one alone).
 void turnOffADriverShaderCacheWithoutRoom();
 
 }  // namespace lbmshape::gpu

@@ -1,6 +1,7 @@
 #include "lbmshape/mesh/gltf_json_check.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <map>
 #include <optional>
 #include <set>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lbmshape/core/checked_arithmetic.hpp"
+#include "lbmshape/core/error.hpp"
 #include "lbmshape/mesh/gltf_json_element.hpp"
 #include "lbmshape/mesh/text_scan.hpp"
 
@@ -39,6 +41,10 @@ public:
   bool tooDeep = false;
   uint64_t containers = 0, scalars = 0;
   std::string syntaxError;
+  // The first element's refusal, given once the file's required extensions
+  // are judged: a compressed file's elements are no reason to refuse it
+  // when the extension it requires is.
+  std::exception_ptr refusal;
 
   bool null() override { return scalar("null", JsonKind::Null); }
   bool boolean(bool b) override { return scalar(b ? "true" : "false", JsonKind::Boolean); }
@@ -65,7 +71,8 @@ public:
       const std::string where = !current_.empty() && current_.back().depth == stack_.size()
                                     ? " of " + gltfElementName(current_.back().collection, current_.back().index)
                                     : "";
-      source_.refuse("its JSON gives the key " + text::quoted(shown(k)) + " twice in one object" + where);
+      defer(
+          [&] { source_.refuse("its JSON gives the key " + text::quoted(shown(k)) + " twice in one object" + where); });
     }
     key_ = k;
     return true;
@@ -81,6 +88,17 @@ public:
   }
 
 private:
+  template <class Check>
+  void defer(Check check)
+  {
+    if (refusal) return;
+    try {
+      check();
+    } catch (const InputError&) {
+      refusal = std::current_exception();
+    }
+  }
+
   struct Container {
     bool array;
     std::string key;                         // the key under which it was opened, in its parent object
@@ -177,7 +195,7 @@ private:
   {
     if (!current_.empty() && current_.back().depth == stack_.size()) {
       OpenElement& done = current_.back();
-      checkGltfElement(done.collection, done.index, done.element, source_);
+      defer([&] { checkGltfElement(done.collection, done.index, done.element, source_); });
       if (done.collection.empty()) {
         top = std::move(done.element);
       } else {
@@ -284,10 +302,15 @@ bool understoodRequiredExtension(const std::string& extension)
   return understood.count(extension) > 0 || extension.starts_with("KHR_materials_");
 }
 
-void refuseRequiredExtensions(const std::vector<std::string>& required, bool glb, const MeshSource& source)
+// `meshoptInAGlb`: whether EXT_meshopt_compression still required in a
+// GLB is refused too. Its views are decoded before this check (readGltf),
+// so where it is still required the file's structure kept them from being
+// decoded, and that is what to say first.
+void refuseRequiredExtensions(const std::vector<std::string>& required, bool glb, bool meshoptInAGlb,
+                              const MeshSource& source)
 {
   for (const std::string& extension : required) {
-    // A GLB's meshopt views are decoded before this check (readGltf).
+    if (extension == "EXT_meshopt_compression" && glb && !meshoptInAGlb) continue;
     if (extension == "EXT_meshopt_compression" && !glb)
       source.refuse("it requires EXT_meshopt_compression, which lbmshape decodes in GLB files only (.glb)");
     if (unreadableRequiredExtensions.count(extension))
@@ -313,7 +336,9 @@ std::vector<GltfBufferEntry> checkGltfJson(std::string_view json, bool glb, cons
   // Before anything else of the file is judged: a file whose geometry is
   // compressed fails every other check (accessors without views), and
   // should be refused for what it needs.
-  refuseRequiredExtensions(scan.extensionLists.at("extensionsRequired"), glb, source);
+  refuseRequiredExtensions(scan.extensionLists.at("extensionsRequired"), glb, false, source);
+  if (scan.refusal) std::rethrow_exception(scan.refusal);
+  refuseRequiredExtensions(scan.extensionLists.at("extensionsRequired"), glb, true, source);
   checkDefaultScene(scan, source);
   checkBuffers(scan.kept.at("buffers"), glb, scan.extensionLists.at("extensionsUsed"), source);
   checkImageViews(scan, source);

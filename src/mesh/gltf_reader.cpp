@@ -237,7 +237,8 @@ private:
     std::vector<glm::dvec3> positions = accessors_.vectors(position->second, name + " POSITION");
     applyMorphTargets(primitive, name, weights, positions);  // before skinning, as glTF orders them
     // A skinned mesh is placed by its joints alone (gltf_skinning.hpp).
-    const bool skinMirrors = skin >= 0 && skins_.pose(primitive, name, skin, positions);
+    const std::vector<uint8_t> skinMirrors =
+        skin >= 0 ? skins_.pose(primitive, name, skin, positions) : std::vector<uint8_t>();
     if (skin >= 0) world = glm::dmat4(1.0);
     std::vector<uint32_t> order;
     if (primitive.indices >= 0) {
@@ -252,9 +253,10 @@ private:
     addColours(primitive, name, base, positions.size());
     // A mirroring transform turns counter-clockwise faces clockwise (glTF
     // spec, 3.7.4); swapping two corners keeps them facing outwards.
-    const bool mirrored = skin >= 0 ? skinMirrors : glm::determinant(world) < 0;
+    const bool mirrored = glm::determinant(world) < 0;
     auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
-      if (mirrored) std::swap(b, c);
+      const bool turned = skinMirrors.empty() ? mirrored : skinMirrors[a] + skinMirrors[b] + skinMirrors[c] >= 2;
+      if (turned) std::swap(b, c);
       mesh_.triangles.emplace_back(base + a, base + b, base + c);
     };
     if (mode == TINYGLTF_MODE_TRIANGLES) {

@@ -1,8 +1,10 @@
 #include "lbmshape/mesh/gltf_skinning.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lbmshape/mesh/gltf_scene_walk.hpp"
+#include "lbmshape/mesh/text_scan.hpp"
 
 namespace lbmshape {
 
@@ -34,8 +36,8 @@ const std::vector<glm::dmat4>& GltfSkins::jointMatrices(int skin)
   return matrices;
 }
 
-bool GltfSkins::pose(const tinygltf::Primitive& primitive, const std::string& name, int skin,
-                     std::vector<glm::dvec3>& positions)
+std::vector<uint8_t> GltfSkins::pose(const tinygltf::Primitive& primitive, const std::string& name, int skin,
+                                     std::vector<glm::dvec3>& positions)
 {
   const std::vector<glm::dmat4>& joints = jointMatrices(skin);
   std::vector<glm::dmat4> blend(positions.size(), glm::dmat4(0.0));
@@ -58,16 +60,25 @@ bool GltfSkins::pose(const tinygltf::Primitive& primitive, const std::string& na
         if (w == 0.0) continue;
         if (!(std::isfinite(w) && w > 0.0)) source_.refuse(weightsName + " holds a weight that is not positive");
         const double j = indices[v][k];
-        if (!(j >= 0.0 && j < double(joints.size())))
-          source_.refuse(jointsName + " refers to joint " + std::to_string(int64_t(j)) + ", but skin " +
-                         std::to_string(skin) + " has " + std::to_string(joints.size()));
+        // Whole numbers only (glTF: unsigned bytes or shorts); a float or
+        // normalized accessor's 0.9 is no joint, and NaN none either.
+        if (!(j >= 0.0 && j == std::floor(j)))
+          source_.refuse(jointsName + " holds " + text::printable(std::to_string(j)) +
+                         ", which is not a joint's number");
+        if (j >= double(joints.size()))
+          source_.refuse(jointsName + " refers to joint " + std::to_string(uint64_t(std::min(j, 1e18))) +
+                         ", but skin " + std::to_string(skin) + " has " + std::to_string(joints.size()));
         blend[v] += w * joints[size_t(j)];
         total[v] += w;
       }
   }
+  std::vector<uint8_t> mirrors(positions.size(), 0);
   for (size_t v = 0; v < positions.size(); ++v)
-    if (total[v] > 0.0) positions[v] = glm::dvec3((blend[v] / total[v]) * glm::dvec4(positions[v], 1.0));
-  return !positions.empty() && total[0] > 0.0 && glm::determinant(blend[0]) < 0.0;
+    if (total[v] > 0.0) {
+      positions[v] = glm::dvec3((blend[v] / total[v]) * glm::dvec4(positions[v], 1.0));
+      mirrors[v] = glm::determinant(glm::dmat3(blend[v])) < 0.0;
+    }
+  return mirrors;
 }
 
 }  // namespace lbmshape

@@ -7,6 +7,7 @@
 // wrong place (the node's translation of 100 added, a raised arm down).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,12 +27,13 @@ public:
   // scene walk): each by the weighted sum of its joints' matrices (joint's
   // world transform times its inverse bind matrix), over every
   // JOINTS_n/WEIGHTS_n pair it has; weights are scaled to sum to 1, and a
-  // vertex whose weights are all 0 stays as it is. Returns whether the
-  // first vertex's matrix mirrors (its faces then turn, as a mirroring
-  // node's do). Throws InputError for a joint past the skin's or a count
-  // that does not match the positions.
-  bool pose(const tinygltf::Primitive& primitive, const std::string& name, int skin,
-            std::vector<glm::dvec3>& positions);
+  // vertex whose weights are all 0 stays as it is. Returns, per vertex,
+  // whether its matrix mirrors (a triangle most of whose corners mirror
+  // turns, as a mirroring node's faces do). Throws InputError for a joint
+  // that is no whole number or past the skin's, a weight that is not
+  // positive, or a count that does not match the positions.
+  std::vector<uint8_t> pose(const tinygltf::Primitive& primitive, const std::string& name, int skin,
+                            std::vector<glm::dvec3>& positions);
 
 private:
   const std::vector<glm::dmat4>& jointMatrices(int skin);

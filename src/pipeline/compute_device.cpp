@@ -8,6 +8,7 @@
 #include "lbmshape/core/interrupt.hpp"
 #include "lbmshape/core/log.hpp"
 #include "lbmshape/core/memory_sizes.hpp"
+#include "lbmshape/gpu/driver_shader_cache.hpp"
 #include "lbmshape/core/stopwatch.hpp"
 #include "lbmshape/gpu/gpu_context.hpp"
 #include "lbmshape/gpu/vulkan_instance.hpp"
@@ -22,7 +23,12 @@ namespace lbmshape {
 
 ComputeDevice::ComputeDevice(const std::string& request, bool validation, RunsOn distances, RunsOn surfaces)
     : request_(request), validation_(validation), distances_(distances), surfaces_(surfaces)
-{}
+{
+  // On the caller's thread, before any warm-up thread starts the instance:
+  // it may set an environment variable, which another thread must not be
+  // reading meanwhile.
+  gpu::turnOffADriverShaderCacheWithoutRoom();
+}
 
 ComputeDevice::~ComputeDevice() { finishWarmUp(); }
 
@@ -263,8 +269,13 @@ void ComputeDevice::checkFits(const Extent3& extent) const
 namespace {
 
 template <class Solver>
-std::unique_ptr<Solver> withDriverHeadroom(std::unique_ptr<Solver> solver)
+std::unique_ptr<Solver> withDriverHeadroom(std::unique_ptr<Solver> solver, bool deviceIsTheCpu)
 {
+  // Only a driver on the CPU allocates on the host as it runs, and only an
+  // address-space limit fails those allocations where the driver cannot
+  // see it (a discrete GPU's run was refused when the machine had little
+  // memory available, with advice about ulimit -v).
+  if (!deviceIsTheCpu || addressSpaceUnlimited()) return solver;
   const uint64_t left = hostMemoryBytes();
   if (left < driverHeadroomBytes)
     throw DeviceError("out of memory: " + mebibytes(left) + " of address space is left once the lattice is made, and " +
@@ -278,7 +289,8 @@ std::unique_ptr<Solver> withDriverHeadroom(std::unique_ptr<Solver> solver)
 std::unique_ptr<LatticeSolver> ComputeDevice::makeSolver(const Extent3& extent) const
 {
   if (!isReference()) checkFitsDevice(latticeLayout(extent), description());
-  if (!isReference()) return withDriverHeadroom<LatticeSolver>(std::make_unique<VulkanSolver>(*gpu(), extent));
+  if (!isReference())
+    return withDriverHeadroom<LatticeSolver>(std::make_unique<VulkanSolver>(*gpu(), extent), description().isCpu());
   return std::make_unique<ReferenceSolver>(extent);
 }
 
@@ -287,7 +299,8 @@ std::unique_ptr<BandSolver> ComputeDevice::makeBandSolver(std::shared_ptr<const 
 {
   if (!isReference())
     return withDriverHeadroom<BandSolver>(
-        std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks), BandVulkanSolver::defaultStagingBytes, kind));
+        std::make_unique<BandVulkanSolver>(*gpu(), std::move(bricks), BandVulkanSolver::defaultStagingBytes, kind),
+        description().isCpu());
   return std::make_unique<BandReferenceSolver>(std::move(bricks));
 }
 

@@ -1,5 +1,6 @@
 #include "lbmshape/pipeline/denoise.hpp"
 
+#include <optional>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -428,16 +429,27 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   BandField field = clock.time("sdf", [&](Progress& progress) {
     device.warmUpForTheBand(kind);  // the device opens while the distances are computed
     const bool perCellOmega = o.smoothing != Smoothing::Isotropic;
-    const auto onTheBand = [&](double width) {
+    const auto onTheBand = [&](double width, bool overHoles) {
       return signedDistanceBand(
           mesh, frame,
           {.halfWidth = width,
+           .overHoles = overHoles,
            .progress = &progress,
            .checkBricks = [&](const BrickSet& b) { device.checkBandFits(b, perCellOmega, false); },
            .distancesFrom = [&](const TriangleBvh& tree) { return device.bandDistances(tree); }},
           &distanceStats);
     };
-    BandField band = onTheBand(halfWidth);
+    // With the fans over the holes; where that band does not fit (refused
+    // before anything is allocated), the band near the triangles alone, as
+    // before the fans, whose result may stay open (below).
+    std::optional<BandField> withFans;
+    try {
+      withFans = onTheBand(halfWidth, true);
+    } catch (const DeviceError& e) {
+      log::verbose(std::string("the band over the input's holes does not fit (") + e.what() +
+                   "): the band near its triangles alone");
+    }
+    BandField band = withFans ? std::move(*withFans) : onTheBand(halfWidth, false);
     // An open input's hole wider than the band: the surface that closes it
     // would be cut off (sdf/hole_radius.hpp). Widened over the widest hole,
     // and again while it still leaves (a closing surface that bulges).
@@ -445,7 +457,7 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
     while (surfaceLeavesTheBand(band) && halfWidth < wholeGrid) {
       const double wider = std::max(halfWidthOverHoles(mesh, frame.voxel, halfWidth), 2.0 * halfWidth);
       try {
-        band = onTheBand(wider);
+        band = onTheBand(wider, true);
       } catch (const DeviceError& e) {
         // Refused before anything was allocated: the narrower band's
         // result, open over the hole, with what would close it.

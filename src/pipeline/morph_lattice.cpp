@@ -198,11 +198,11 @@ public:
       runSideBySide([&] { sourceTreeMade.emplace(source); },
                     [&] { targetTree_ = std::make_shared<const TriangleBvh>(target); });
       const TriangleBvh &sourceTree = *sourceTreeMade, &targetTree = *targetTree_;
-      const auto bandBricks = [&](double halfWidth) {
+      const auto bandBricks = [&](double halfWidth, bool overHoles) {
         std::shared_ptr<BrickSet> bricks, targetBricks;
         const double reach = halfWidth + 2.0;
-        runSideBySide([&] { bricks = bricksNearSurface(source, sourceTree, frame, reach); },
-                      [&] { targetBricks = bricksNearSurface(target, targetTree, frame, reach); });
+        runSideBySide([&] { bricks = bricksNearSurface(source, sourceTree, frame, reach, overHoles); },
+                      [&] { targetBricks = bricksNearSurface(target, targetTree, frame, reach, overHoles); });
         for (size_t s = 0; s < targetBricks->activeCount(); ++s) {
           const glm::ivec3 b = targetBricks->brick(int32_t(s));
           bricks->activate(b.x, b.y, b.z);
@@ -216,7 +216,17 @@ public:
         computeFields({source, sourceTree}, {target, targetTree}, std::move(bricks), progress,
                       [&device](const TriangleBvh& tree) { return device.bandDistances(tree); });
       };
-      std::shared_ptr<BrickSet> bricks = bandBricks(halfWidth_);
+      // With the fans over the meshes' holes; where that band does not fit
+      // (refused before anything is allocated), near the triangles alone,
+      // as before the fans.
+      std::shared_ptr<BrickSet> bricks;
+      try {
+        bricks = bandBricks(halfWidth_, true);
+      } catch (const DeviceError& e) {
+        log::verbose(std::string("the band over the meshes' holes does not fit (") + e.what() +
+                     "): the band near their triangles alone");
+        bricks = bandBricks(halfWidth_, false);
+      }
       beforeDistances();
       fieldsOn(bricks);
       // A mesh's hole wider than the band: the surface that closes it was
@@ -228,7 +238,7 @@ public:
         const double wider = std::max({halfWidthOverHoles(source, frame.voxel, halfWidth_),
                                        halfWidthOverHoles(target, frame.voxel, halfWidth_), 2.0 * halfWidth_});
         try {
-          bricks = bandBricks(wider);
+          bricks = bandBricks(wider, true);
         } catch (const DeviceError& e) {
           // Refused before anything was allocated: the narrower band, with
           // what would close the holes.

@@ -32,7 +32,7 @@ struct FanReach {
   double beyond = 0.0;              // in the mesh's units, beyond the band's reach
 };
 
-FanReach fanReach(const TriangleMesh& mesh, const GridFrame& frame, double halfWidth)
+FanReach fanReach(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame, double halfWidth)
 {
   // A planar film of less area than a disk of radius halfWidth has no
   // point farther than that from its rim: the band holds it without a fan.
@@ -40,8 +40,9 @@ FanReach fanReach(const TriangleMesh& mesh, const GridFrame& frame, double halfW
   // planar (a slit around a sphere's equator: its two edges' areas cancel)
   // may have a film larger than its fan's area; where that film leaves the
   // band, the band is widened (pipeline/denoise.cpp).
-  const double leastRadius = 0.75 * halfWidth * frame.voxel;
-  ClosingFans fans = closingFans(mesh, std::acos(-1.0) * leastRadius * leastRadius);
+  const double leastRadius = 0.75 * std::max(halfWidth, 1.0) * frame.voxel;
+  ClosingFans fans = closingFans(mesh, std::acos(-1.0) * leastRadius * leastRadius,
+                                 [&tree](const glm::dvec3& p) { return tree.windingNumber(p); });
   FanReach reach;
   if (fans.mesh.triangles.empty()) return reach;
   reach.tree.emplace(fans.mesh, TriangleBvh::Queries::ClosestOnly);
@@ -184,10 +185,10 @@ void markFarSides(BandField& band, const std::vector<uint8_t>& inside, const Tri
 }  // namespace
 
 std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
-                                            double reachVoxels)
+                                            double reachVoxels, bool overHoles)
 {
   checkSignedDistanceArguments(mesh, frame, 1.0);
-  return bandBricks(tree, fanReach(mesh, frame, reachVoxels - 2.0), frame, reachVoxels);
+  return bandBricks(tree, overHoles ? fanReach(mesh, tree, frame, reachVoxels - 2.0) : FanReach{}, frame, reachVoxels);
 }
 
 namespace {
@@ -210,7 +211,9 @@ BandField distancesOnBricks(const TriangleMesh& mesh, const TriangleBvh& bvh, do
 
   Stopwatch stage;
   const std::shared_ptr<const BrickSet> bricks =
-      given ? given : bandBricks(bvh, fanReach(mesh, frame, options.halfWidth), frame, options.halfWidth + 2.0);
+      given ? given
+            : bandBricks(bvh, options.overHoles ? fanReach(mesh, bvh, frame, options.halfWidth) : FanReach{}, frame,
+                         options.halfWidth + 2.0);
   s.bvhMs = treeMs + stage.ms();
   interrupt::check("nothing was written");
   if (options.checkBricks) options.checkBricks(*bricks);

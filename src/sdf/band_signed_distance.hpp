@@ -36,6 +36,10 @@ struct BandDistanceOptions {
   // (band_width.hpp), and it saves most of the work. A morph needs the true
   // distances between its two surfaces: off.
   bool clampBeyondHalfWidth = true;
+  // The band reaches the films over an open mesh's holes too, through fans
+  // over their rims (sdf/hole_radius.hpp). Off: the bricks near the
+  // triangles only, for a caller whose band with the fans did not fit.
+  bool overHoles = true;
   Progress* progress = nullptr;  // told each part of the work as it starts
   // Called with the bricks as soon as they are chosen, before anything is
   // computed or allocated for their cells: a caller that cannot hold them
@@ -59,7 +63,7 @@ BandField signedDistanceBand(const TriangleMesh& mesh, const GridFrame& frame, c
 // hierarchy (TriangleBvh(mesh), with winding numbers), built once by the
 // caller for both halves and whatever else it asks of the mesh.
 std::shared_ptr<BrickSet> bricksNearSurface(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
-                                            double reachVoxels);
+                                            double reachVoxels, bool overHoles = true);
 BandField signedDistanceOn(const TriangleMesh& mesh, const TriangleBvh& tree, const GridFrame& frame,
                            std::shared_ptr<const BrickSet> bricks, const BandDistanceOptions& options = {},
                            SignedDistanceStats* stats = nullptr);

@@ -96,7 +96,7 @@ double halfWidthOverHoles(const TriangleMesh& mesh, double voxel, double halfWid
   return std::max(halfWidth, std::ceil(1.25 * radius) + 1.0);
 }
 
-ClosingFans closingFans(const TriangleMesh& mesh, double leastArea)
+ClosingFans closingFans(const TriangleMesh& mesh, double leastArea, const WindingAt& windingAt)
 {
   const HoleRims rims = holeRims(mesh);
   ClosingFans fans;
@@ -109,14 +109,38 @@ ClosingFans closingFans(const TriangleMesh& mesh, double leastArea)
     const glm::dvec3 c = centroid[rims.rimOf[e.x]];
     normal[rims.rimOf[e.x]] += glm::cross(mesh.positions[e.x] - c, mesh.positions[e.y] - c);
   }
-  // A rim's film is at least as large as its fan's vector area (half the
-  // Newell normal's length; equal for a planar rim): a smaller one lies
-  // within the band anyway. A T-junction's "rim" (a long edge one way, the
-  // short ones beside it back) encloses nothing, and its fan would only
-  // fill a solid with bricks (a cube with T-junctions on every edge: the
-  // whole grid).
-  std::vector<uint8_t> fanned(rims.count);
-  for (uint32_t r = 0; r < rims.count; ++r) fanned[r] = 0.5 * glm::length(normal[r]) >= leastArea;
+  // How far each rim leaves its fan's plane.
+  std::vector<double> offPlane(rims.count, 0.0);
+  for (const glm::uvec2& e : rims.edges) {
+    const uint32_t r = rims.rimOf[e.x];
+    const double length = glm::length(normal[r]);
+    const glm::dvec3 away = mesh.positions[e.x] - centroid[r];
+    offPlane[r] =
+        std::max(offPlane[r], length > 0.0 ? std::abs(glm::dot(away, normal[r] / length)) : glm::length(away));
+  }
+  // Which rims get a fan (the others' films, if they leave the band, make it
+  // widen, pipeline/denoise.cpp):
+  // - A film at least as large as the fan's vector area (half the Newell
+  //   normal's length; equal for a planar rim): a smaller one lies within
+  //   the band anyway. A T-junction's "rim" (a long edge one way, the short
+  //   ones beside it back) encloses nothing, and its fan would only fill a
+  //   solid with bricks (a cube with T-junctions on every edge: the whole
+  //   grid).
+  // - A rim near its plane: one that leaves it by more than the radius of a
+  //   disk of its area (T-junctions joined to a hole through a corner: an
+  //   open box's, the box's height) is no hole's rim alone.
+  // - A film through the fan's centre: the winding number there is near 1/2
+  //   on a hole's film, and near 0 or 1 where the "rim" is a crack between
+  //   pieces that nearly meet (a sphere cut in two, 1e-7 apart: a fan across
+  //   the whole body).
+  std::vector<uint8_t> fanned(rims.count, 0);
+  for (uint32_t r = 0; r < rims.count; ++r) {
+    const double area = 0.5 * glm::length(normal[r]);
+    if (!(area > leastArea) || offPlane[r] > std::sqrt(area / std::acos(-1.0))) continue;
+    if (windingAt && std::abs(windingAt(centroid[r]) - 0.5) > 0.25) continue;
+    fanned[r] = 1;
+    fans.farthestOffPlane = std::max(fans.farthestOffPlane, offPlane[r]);
+  }
   // The fans' own vertices: the rim's, then one centroid a rim.
   std::vector<uint32_t> vertexOf(mesh.positions.size(), UINT32_MAX);
   for (size_t v = 0; v < mesh.positions.size(); ++v)
@@ -126,17 +150,12 @@ ClosingFans closingFans(const TriangleMesh& mesh, double leastArea)
     }
   const auto firstCentroid = uint32_t(fans.mesh.positions.size());
   fans.mesh.positions.insert(fans.mesh.positions.end(), centroid.begin(), centroid.end());
-  fans.mesh.triangles.reserve(rims.edges.size());
   for (const glm::uvec2& e : rims.edges) {
     const uint32_t r = rims.rimOf[e.x];
-    if (!fanned[r]) continue;
     // Run back, as the triangle that would close the hole runs the edge.
-    fans.mesh.triangles.emplace_back(vertexOf[e.y], vertexOf[e.x], firstCentroid + r);
-    const double length = glm::length(normal[r]);
-    const double off = length > 0.0 ? std::abs(glm::dot(mesh.positions[e.x] - centroid[r], normal[r] / length))
-                                    : glm::length(mesh.positions[e.x] - centroid[r]);
-    fans.farthestOffPlane = std::max(fans.farthestOffPlane, off);
+    if (fanned[r]) fans.mesh.triangles.emplace_back(vertexOf[e.y], vertexOf[e.x], firstCentroid + r);
   }
+  if (fans.mesh.triangles.empty()) fans.mesh.positions.clear();
   return fans;
 }
 

@@ -14,6 +14,8 @@
 // hole's radius holds it, as the dense grid does.
 #pragma once
 
+#include <functional>
+
 #include "lbmshape/mesh/triangle_mesh.hpp"
 
 namespace lbmshape {
@@ -44,8 +46,12 @@ struct ClosingFans {
   TriangleMesh mesh;              // no triangles for a closed mesh
   double farthestOffPlane = 0.0;  // in the mesh's units: a rim vertex from its fan's plane
 };
-// Rims whose fan covers less than `leastArea` (the mesh's units squared)
-// get none.
-ClosingFans closingFans(const TriangleMesh& mesh, double leastArea = 0.0);
+// A rim gets none where its fan covers no more than `leastArea` (the
+// mesh's units squared), where it leaves its fan's plane by more than the
+// radius of a disk of the fan's area, or, given the mesh's winding number,
+// where that is not within 1/4 of 1/2 at the fan's centre (a crack between
+// pieces, not a hole).
+using WindingAt = std::function<double(const glm::dvec3&)>;
+ClosingFans closingFans(const TriangleMesh& mesh, double leastArea = 0.0, const WindingAt& windingAt = {});
 
 }  // namespace lbmshape

@@ -1,6 +1,5 @@
 // AtomicFile: the target appears, or changes, only on commit().
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <fstream>
@@ -146,54 +145,69 @@ TEST(AtomicFile, ADeviceOrAPipeIsRefusedAndLeftAsItWas)
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path()), {}), 2);  // no temporary file left
 }
 
+// The tag this process's temporary files carry (machine, boot, process-id
+// namespace), read off one.
+std::string writerTagOfThisProcess(const std::filesystem::path& folder)
+{
+  AtomicFile probe(folder / "probe.glb");
+  const std::string name = probe.temporaryPath().filename().string();  // ".probe.tmp-<tag>-<pid>-<n>.glb"
+  const size_t start = name.find(".tmp-") + 5;
+  return name.substr(start, name.find('-', start) - start);
+}
+
+pid_t aProcessThatIsGone()
+{
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  EXPECT_GT(child, 0);
+  EXPECT_EQ(::waitpid(child, nullptr, 0), child);  // gone: its id names no process
+  return child;
+}
+
 // A process killed without unwinding (SIGKILL) leaves its temporary files:
-// those of processes that are gone are removed, a live one's and other
+// those of processes that are gone are removed, a live one's, another
+// machine's or container's (another tag, in a folder they share) and other
 // files are left.
 TEST(AtomicFile, ADeadWritersTemporaryFilesAreRemoved)
 {
   testing::ScratchFolder folder;
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ASSERT_GT(child, 0);
-  ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // gone: its id names no process
-  char host[256] = {};
-  ASSERT_EQ(::gethostname(host, sizeof host - 1), 0);
-  std::string thisHost;
-  for (const char* c = host; *c && thisHost.size() < 32; ++c) thisHost += std::isalnum(uint8_t(*c)) ? *c : '_';
-  const std::string gone = std::to_string(child);
-  const auto dead = folder / (".frame_0003.tmp-" + thisHost + "-" + gone + "-7.glb");
-  const auto deadUnnamed = folder / (".frame_0005.tmp-" + gone + "-7.glb");  // as named before the host
-  const auto live = folder / (".frame_0004.tmp-" + thisHost + "-" + std::to_string(::getpid()) + "-8.glb");
-  // Another machine's, in a folder shared over the network: its process
-  // ids say nothing here.
-  const auto elsewhere = folder / (".frame_0006.tmp-" + thisHost + "x-" + gone + "-9.glb");
+  const std::string tag = writerTagOfThisProcess(folder.path());
+  ASSERT_EQ(tag.size(), 16u);
+  const std::string gone = std::to_string(aProcessThatIsGone());
+  const auto dead = folder / (".frame_0003.tmp-" + tag + "-" + gone + "-7.glb");
+  const auto deadUntagged = folder / (".frame_0005.tmp-" + gone + "-7.glb");  // as named before the tag
+  const auto live = folder / (".frame_0004.tmp-" + tag + "-" + std::to_string(::getpid()) + "-8.glb");
+  const auto elsewhere = folder / (".frame_0006.tmp-0123456789abcdef-" + gone + "-9.glb");
+  const auto absurd = folder / (".frame_0007.tmp-" + tag + "-99999999999999999999999999-1.glb");
   const auto other = folder / ".notes.tmp-x.glb";
   const auto frame = folder / "frame_0002.glb";
-  for (const auto& path : {dead, deadUnnamed, live, elsewhere, other, frame}) std::ofstream(path) << "x";
+  for (const auto& path : {dead, deadUntagged, live, elsewhere, absurd, other, frame}) std::ofstream(path) << "x";
   EXPECT_EQ(removeDeadWritersTemporaryFiles(folder.path()), 2u);
   EXPECT_FALSE(std::filesystem::exists(dead));
-  EXPECT_FALSE(std::filesystem::exists(deadUnnamed));
-  for (const auto& path : {live, elsewhere, other, frame}) EXPECT_TRUE(std::filesystem::exists(path)) << path;
+  EXPECT_FALSE(std::filesystem::exists(deadUntagged));
+  for (const auto& path : {live, elsewhere, absurd, other, frame}) EXPECT_TRUE(std::filesystem::exists(path)) << path;
 }
 
 // A denoise killed while it wrote (the out-of-memory killer) left its
-// temporary file beside the output for ever: the next write of that output
-// removes it on commit, and leaves other files' temporary files alone.
-TEST(AtomicFile, ACommitRemovesItsTargetsDeadTemporaryFiles)
+// temporary file beside the output for ever: the next write into that
+// folder removes this machine's dead writers' files on commit, and leaves
+// files named before the tag (which a shared folder's other machines may
+// have written) and everything else.
+TEST(AtomicFile, ACommitRemovesDeadWritersTemporaryFiles)
 {
   testing::ScratchFolder folder;
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ASSERT_GT(child, 0);
-  ASSERT_EQ(::waitpid(child, nullptr, 0), child);
-  const auto leftover = folder / (".big.tmp-" + std::to_string(child) + "-1.obj");
-  const auto anotherFiles = folder / (".small.tmp-" + std::to_string(child) + "-1.obj");
-  for (const auto& path : {leftover, anotherFiles}) std::ofstream(path) << "x";
+  const std::string tag = writerTagOfThisProcess(folder.path());
+  const std::string gone = std::to_string(aProcessThatIsGone());
+  const auto leftover = folder / (".big.tmp-" + tag + "-" + gone + "-1.obj");
+  const auto anotherFiles = folder / (".small.tmp-" + tag + "-" + gone + "-1.obj");
+  const auto untagged = folder / (".big.tmp-" + gone + "-2.obj");
+  for (const auto& path : {leftover, anotherFiles, untagged}) std::ofstream(path) << "x";
   AtomicFile file(folder / "big.obj");
   file.open() << "o";
   file.commit();
   EXPECT_FALSE(std::filesystem::exists(leftover));
-  EXPECT_TRUE(std::filesystem::exists(anotherFiles));
+  EXPECT_FALSE(std::filesystem::exists(anotherFiles));
+  EXPECT_TRUE(std::filesystem::exists(untagged));
   EXPECT_TRUE(std::filesystem::exists(folder / "big.obj"));
 }
 

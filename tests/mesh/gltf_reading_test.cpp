@@ -245,6 +245,22 @@ TEST_P(GltfSkin, AJointPastTheSkinsIsRefusedNamingIt)
   }
 }
 
+// A joint's number is a whole number: a float accessor's 0.5 (or NaN) was
+// truncated to joint 0, or cast beyond an integer's range.
+TEST_P(GltfSkin, AJointThatIsNoWholeNumberIsRefused)
+{
+  meshio::HandMadeGltf gltf = skinned();
+  auto& attributes = gltf.json["meshes"][0]["primitives"][0]["attributes"];
+  attributes["JOINTS_0"] = attributes["WEIGHTS_0"];  // floats: corner 3's joints 0.5 and 0.5
+  try {
+    readBack(gltf);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("JOINTS_0 holds 0.5"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("which is not a joint's number"), std::string::npos) << e.what();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Containers, GltfSkin, ::testing::Values(".gltf", ".glb"),
                          [](const auto& info) { return info.param.substr(1); });
 
@@ -257,6 +273,9 @@ TEST_P(GltfReading, ADracoFileIsRefusedForItsExtension)
   const int mesh = gltf.addMesh(gltf.addPositions(meshio::tetraCorners), gltf.addIndices(meshio::tetraIndices));
   gltf.json["nodes"] = {{{"mesh", mesh}}};
   for (auto& accessor : gltf.json["accessors"]) accessor.erase("bufferView");
+  // And an element a Draco encoder might write oddly: the extension is what
+  // the file is refused for, not that.
+  gltf.json["accessors"][0]["byteOffset"] = "0";
   gltf.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"] = {
       {"bufferView", 0}, {"attributes", {{"POSITION", 0}}}};
   gltf.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};

@@ -77,7 +77,62 @@ TEST(ClosingFans, ATJunctionEnclosesNothingAndGetsNoFan)
   tetra.triangles = {{0, 2, 4}, {4, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   EXPECT_GT(analyzeTopology(tetra).boundaryEdges, 0u);
   EXPECT_TRUE(closingFans(tetra, 1e-12).mesh.triangles.empty());
-  EXPECT_FALSE(closingFans(tetra, 0.0).mesh.triangles.empty());
+  EXPECT_TRUE(closingFans(tetra, 0.0).mesh.triangles.empty());
+}
+
+// An open box (its top missing) whose side edges carry T-junctions: they
+// join the top's rim through its corners, and the fan from all their
+// vertices' centroid, the box's centre, would fill the box. The winding
+// number there is 5/6, not 1/2: no fan (the band widens if it must).
+TEST(ClosingFans, AnOpenBoxWithTJunctionsGetsNoFanThroughItsInside)
+{
+  TriangleMesh box;
+  // Corners of a unit cube, then the middle of each vertical edge.
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 2; ++x) box.positions.emplace_back(x, y, z);
+  const auto corner = [](int x, int y, int z) { return uint32_t(x + 2 * y + 4 * z); };
+  // The bottom, facing down.
+  box.triangles = {{corner(0, 0, 0), corner(0, 1, 0), corner(1, 1, 0)},
+                   {corner(0, 0, 0), corner(1, 1, 0), corner(1, 0, 0)}};
+  // Each side as two triangles (its vertical edges whole), then the same
+  // sides split at their edges' middles on one side only: T-junctions.
+  const glm::ivec2 around[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 4; ++k) {
+    const glm::ivec2 a = around[k], b = around[(k + 1) % 4];
+    const uint32_t a0 = corner(a.x, a.y, 0), b0 = corner(b.x, b.y, 0), a1 = corner(a.x, a.y, 1),
+                   b1 = corner(b.x, b.y, 1);
+    const auto middle = uint32_t(box.positions.size());
+    box.positions.emplace_back(b.x, b.y, 0.5);  // on edge b0-b1, used by this side only
+    box.triangles.push_back({a0, b0, middle});
+    box.triangles.push_back({a0, middle, b1});
+    box.triangles.push_back({a0, b1, a1});
+  }
+  const TriangleBvh tree(box);
+  EXPECT_NEAR(tree.windingNumber({0.5, 0.5, 0.5}), 5.0 / 6.0, 0.01);
+  EXPECT_FALSE(closingFans(box, 0.0).mesh.triangles.empty()) << "without the winding number, a fan";
+  EXPECT_TRUE(closingFans(box, 0.0, [&](const glm::dvec3& p) { return tree.windingNumber(p); }).mesh.triangles.empty());
+}
+
+// Two halves of a sphere 1e-7 apart, each numbering its own equator: two
+// "rims" with the whole cross-section's area, and no hole. The winding
+// number at each fan's centre is 1 (inside the sphere), not 1/2: no fans.
+TEST(ClosingFans, ACrackBetweenPiecesGetsNone)
+{
+  TriangleMesh split = testing::upperHalf(testing::icosphere(3));
+  const TriangleMesh lower = testing::lowerHalf(testing::icosphere(3));
+  const auto offset = uint32_t(split.positions.size());
+  for (const glm::dvec3& p : lower.positions) split.positions.push_back(p - glm::dvec3(0.0, 0.0, 1e-7));
+  for (const glm::uvec3& t : lower.triangles) split.triangles.push_back(t + offset);
+  EXPECT_FALSE(closingFans(split, 0.0).mesh.triangles.empty()) << "without the winding number, fans";
+  const TriangleBvh tree(split);
+  EXPECT_TRUE(
+      closingFans(split, 0.0, [&](const glm::dvec3& p) { return tree.windingNumber(p); }).mesh.triangles.empty());
+  // A hemisphere's own rim keeps its fan with the winding number asked.
+  const TriangleMesh half = testing::upperHalf(testing::icosphere(3));
+  const TriangleBvh halfTree(half);
+  EXPECT_FALSE(
+      closingFans(half, 0.0, [&](const glm::dvec3& p) { return halfTree.windingNumber(p); }).mesh.triangles.empty());
 }
 
 // Two open caps apart: two rims, two fans, each over its own rim.

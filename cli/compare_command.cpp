@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -5,6 +6,8 @@
 #include "lbmshape/analysis/mesh_topology.hpp"
 #include "lbmshape/analysis/surface_comparison.hpp"
 #include "lbmshape/core/error.hpp"
+#include "lbmshape/core/host_memory.hpp"
+#include "lbmshape/core/memory_sizes.hpp"
 #include "lbmshape/core/parameter_bounds.hpp"
 #include "lbmshape/mesh/mesh_reader.hpp"
 #include "mesh_commands.hpp"
@@ -58,6 +61,31 @@ void printTopology(const char* label, const std::string& path, const JoinedSeams
                 seen.joinedVertices);
 }
 
+// Refused before sampling where the samples of one direction would not fit
+// the host's memory (10 million samples under a 300 MB limit ran out of
+// memory with no advice), naming the --samples that would.
+void checkSamplesFit(const TriangleMesh& a, const TriangleMesh& b, const ComparisonOptions& options)
+{
+  const size_t samples =
+      std::max(randomSamplesOf(a, options) + a.vertexCount(), randomSamplesOf(b, options) + b.vertexCount());
+  const double needed = double(samples) * bytesPerComparisonSample, allowed = double(hostMemoryBytes());
+  if (needed <= allowed) return;
+  // The samples the meshes' own size asks for (10 a triangle, and the
+  // vertices) are taken whatever --samples says.
+  ComparisonOptions fewest = options;
+  fewest.minSamples = 0;
+  const size_t inherent =
+      std::max(randomSamplesOf(a, fewest) + a.vertexCount(), randomSamplesOf(b, fewest) + b.vertexCount());
+  const auto fitting = size_t(0.9 * allowed / bytesPerComparisonSample);
+  const std::string advice =
+      fitting > inherent
+          ? "--samples " + std::to_string(fitting - std::max(a.vertexCount(), b.vertexCount())) + " would fit"
+          : "the meshes' own samples (10 a triangle) do not fit whatever --samples says";
+  throw DeviceError("comparing with " + std::to_string(samples) + " samples a surface needs about " +
+                    mebibytes(uint64_t(needed)) + " but this machine allows " + mebibytes(uint64_t(allowed)) + "; " +
+                    advice);
+}
+
 void runCompare(const CommonOptions& common, const CompareArguments& args)
 {
   if (args.samples < 1 || args.samples > parameter_bounds::maxSamples)
@@ -72,6 +100,7 @@ void runCompare(const CommonOptions& common, const CompareArguments& args)
   options.minSamples = args.samples;
   options.seed = args.seed;
   options.stopsOnRequest = true;
+  checkSamplesFit(a, b, options);
   const SurfaceComparison c = compareSurfaces(a, b, options);
   common.report({{"command", "compare"},
                  {"a", topologyJson(args.a, ta)},

@@ -35,8 +35,7 @@ struct Query {
 DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target, const TriangleBvh& targetBvh,
                          const ComparisonOptions& options)
 {
-  const size_t random =
-      std::max(options.minSamples, size_t(std::ceil(options.samplesPerTriangle * double(source.triangleCount()))));
+  const size_t random = randomSamplesOf(source, options);
   std::vector<Query> queries;
   queries.reserve(random + (options.includeVertices ? source.vertexCount() : 0));
   for (const SurfaceSample& s : sampleSurface(source, random, options.seed)) queries.push_back({s.point, s.triangle});
@@ -90,6 +89,11 @@ DirectedDistance measure(const TriangleMesh& source, const TriangleMesh& target,
 }
 
 }  // namespace
+
+size_t randomSamplesOf(const TriangleMesh& mesh, const ComparisonOptions& options)
+{
+  return std::max(options.minSamples, size_t(std::ceil(options.samplesPerTriangle * double(mesh.triangleCount()))));
+}
 
 SurfaceComparison compareSurfaces(const TriangleMesh& a, const TriangleMesh& b, const ComparisonOptions& options)
 {

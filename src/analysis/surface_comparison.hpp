@@ -27,6 +27,13 @@ struct ComparisonOptions {
   bool stopsOnRequest = false;
 };
 
+// What a comparison holds per sample while it measures one direction (the
+// sample, its query, its distance and its angle), in bytes; and the random
+// samples it takes of `mesh` (its vertices come on top). For refusing a
+// comparison that cannot fit before it allocates.
+inline constexpr double bytesPerComparisonSample = 96.0;
+size_t randomSamplesOf(const TriangleMesh& mesh, const ComparisonOptions& options);
+
 // From the samples of one surface (the source) to the other (the target).
 // Distances are exact closest-point distances, in the meshes' units.
 struct DirectedDistance {

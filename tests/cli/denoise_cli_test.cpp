@@ -2,6 +2,9 @@
 // has its exit code, a one-line message and leaves no output file; good runs
 // write meshes that the Khronos glTF-Validator accepts.
 #include <cmath>
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -617,6 +620,31 @@ TEST(CompareCli, ASurfaceInPiecesNumberedApartIsReportedWhole)
   r = testing::runLbmshape({"compare", path, whole, "--samples", "2000"});
   EXPECT_NE(r.out.find("vertices at the positions of others joined to them, as denoise joins them"), std::string::npos)
       << r.out;
+}
+
+// Samples that would not fit the host's memory are refused before any is
+// taken, naming the --samples that would (10 million under a 300 MB
+// address-space limit ran out of memory, exit 5 with no advice).
+TEST(CompareCli, SamplesThatCannotFitAreRefusedWithWhatWould)
+{
+  testing::ScratchFolder folder;
+  const std::string a = sphereObj(folder.path());
+  // 10 million (the most --samples takes) need about 1 GB; 300 MB of
+  // address space leaves lbmshape about 200.
+  const std::string command = "exec prlimit --as=300000000 '" + testing::lbmshapeBinary() + "' compare '" + a + "' '" +
+                              a + "' --samples 10000000 2>'" + (folder / "err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  std::ifstream err(folder / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("comparing with 100"), std::string::npos) << message;  // 10,000,000 and the vertices
+  const size_t advice = message.find("--samples ");
+  ASSERT_NE(advice, std::string::npos) << message;
+  const long fits = std::stol(message.substr(advice + 10));
+  EXPECT_GT(fits, 100000);
+  EXPECT_LT(fits, 10000000);
+  EXPECT_NE(message.find("would fit"), std::string::npos) << message;
 }
 
 // compare and noise need no inside: a flat sheet (and a single triangle)

@@ -2,9 +2,6 @@
 // has its exit code, a one-line message and leaves no output file; good runs
 // write meshes that the Khronos glTF-Validator accepts.
 #include <cmath>
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -627,17 +624,14 @@ TEST(CompareCli, ASurfaceInPiecesNumberedApartIsReportedWhole)
 // address-space limit ran out of memory, exit 5 with no advice).
 TEST(CompareCli, SamplesThatCannotFitAreRefusedWithWhatWould)
 {
+  LBMSHAPE_SKIP_WITHOUT_ADDRESS_SPACE_LIMITS();
   testing::ScratchFolder folder;
   const std::string a = sphereObj(folder.path());
   // 10 million (the most --samples takes) need about 1 GB; 300 MB of
   // address space leaves lbmshape about 200.
-  const std::string command = "exec prlimit --as=300000000 '" + testing::lbmshapeBinary() + "' compare '" + a + "' '" +
-                              a + "' --samples 10000000 2>'" + (folder / "err.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 5);
-  std::ifstream err(folder / "err.txt");
-  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  const testing::CliResult r = testing::runLbmshapeWithin(300, {"compare", a, a, "--samples", "10000000"});
+  EXPECT_EQ(r.exitCode, 5);
+  const std::string& message = r.err;
   EXPECT_NE(message.find("comparing with 100"), std::string::npos) << message;  // 10,000,000 and the vertices
   const size_t advice = message.find("--samples ");
   ASSERT_NE(advice, std::string::npos) << message;

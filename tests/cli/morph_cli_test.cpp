@@ -91,15 +91,9 @@ TEST_F(MorphCli, AWriteThatFailsPartWaySaysWhichFramesAreComplete)
   ASSERT_GT(last, first + 4096);
   fs::remove_all(folder / "frames");
 
-  std::string command =
-      "exec prlimit --fsize=" + std::to_string((first + last) / 2) + " '" + testing::lbmshapeBinary() + "'";
-  for (const std::string& argument : job) command += " '" + argument + "'";
-  command += " 2>'" + (folder / "err.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 4);
-  std::ifstream err(folder / "err.txt");
-  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  const testing::CliResult limited = testing::runLbmshapeWithFileSizeLimit((first + last) / 2, job);
+  EXPECT_EQ(limited.exitCode, 4);
+  const std::string& message = limited.err;
   std::vector<std::string> frames;
   for (const auto& entry : fs::directory_iterator(folder / "frames"))
     if (entry.path().filename().string().starts_with("frame_")) frames.push_back(entry.path().filename().string());

@@ -273,17 +273,9 @@ TEST(Preview, APreviewThatCannotBeWrittenLeavesNoMeshEither)
 
   // A file-size limit fails the picture's write as a full disk would
   // (lbmshape ignores SIGXFSZ: the write returns EFBIG instead of killing).
-  // (prlimit, not the shell's ulimit -f, whose unit differs between shells.)
-  std::string command = "exec prlimit --fsize=" + std::to_string(limitBytes) + " '" + testing::lbmshapeBinary() + "'";
-  for (const std::string& argument : job) command += " '" + argument + "'";
-  command += " 2>'" + (folder / "err.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 4);
-  std::ifstream err(folder / "err.txt");
-  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
-  EXPECT_NE(message.find("cmp.png"), std::string::npos) << message;
-  fs::remove(folder / "err.txt");
+  const testing::CliResult limited = testing::runLbmshapeWithFileSizeLimit(limitBytes, job);
+  EXPECT_EQ(limited.exitCode, 4);
+  EXPECT_NE(limited.err.find("cmp.png"), std::string::npos) << limited.err;
   EXPECT_EQ(folder.entries(), before) << "neither the picture nor the mesh";
 }
 

@@ -27,6 +27,13 @@ protected:
     log::setLevel(log::Level::Normal);
   }
   static void sleepMs(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+  // Whether the progress's reporter has written a line within 10 s, however
+  // busy the machine.
+  static bool waitForALine(const Progress& p)
+  {
+    for (Stopwatch waited; !p.lineShown() && waited.ms() < 10000.0;) sleepMs(5);
+    return p.lineShown();
+  }
 };
 
 TEST_F(ProgressLine, WeightedPartsAddUpToTheWholeStage)
@@ -77,8 +84,7 @@ TEST_F(ProgressLine, LongStageSaysHowFarItIs)
     p.beginPart("steps", 4);
     p.advance(1);
     // The reporter writes after 20 ms; however busy the machine, wait for it.
-    for (Stopwatch waited; !p.lineShown() && waited.ms() < 10000.0;) sleepMs(5);
-    ASSERT_TRUE(p.lineShown());
+    ASSERT_TRUE(waitForALine(p));
   }
   const std::string text = err.text();
   EXPECT_NE(text.find("lbmshape: lbm  25% (steps)"), std::string::npos) << text;
@@ -96,7 +102,7 @@ TEST_F(ProgressLine, ALineIsNotRepeated)
     Progress p("lbm");
     p.beginPart("steps", 4);
     p.advance(1);
-    for (Stopwatch waited; !p.lineShown() && waited.ms() < 10000.0;) sleepMs(5);
+    ASSERT_TRUE(waitForALine(p));
     sleepMs(100);  // a hundred intervals without a step
     p.advance(1);
     sleepMs(100);

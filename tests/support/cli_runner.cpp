@@ -70,6 +70,11 @@ CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std:
   return run("ulimit -v " + std::to_string(addressSpaceMegabytes * 1024) + " && ", arguments);
 }
 
+CliResult runLbmshapeWithFileSizeLimit(uintmax_t bytes, const std::vector<std::string>& arguments)
+{
+  return run("prlimit --fsize=" + std::to_string(bytes) + " ", arguments);
+}
+
 std::vector<std::string> nonEmptyLines(const std::string& text)
 {
   std::vector<std::string> lines;

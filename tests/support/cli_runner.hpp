@@ -5,6 +5,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,6 +25,11 @@ CliResult runLbmshape(const std::vector<std::string>& arguments);
 // The same under an address-space limit (ulimit -v), as on a machine with
 // that much memory: for the tests of failing well when memory runs out.
 CliResult runLbmshapeWithin(size_t addressSpaceMegabytes, const std::vector<std::string>& arguments);
+
+// The same under a file-size limit (prlimit --fsize, in bytes; the shell's
+// ulimit -f counts in units that differ between shells), as on a disk that
+// fills: for the tests of writes that fail part way.
+CliResult runLbmshapeWithFileSizeLimit(uintmax_t bytes, const std::vector<std::string>& arguments);
 
 // False in a build with AddressSanitizer, which reserves terabytes of
 // address space for its shadow memory up front: no lbmshape of that build

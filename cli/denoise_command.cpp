@@ -61,9 +61,10 @@ void addDenoiseCommand(CLI::App& app, const CommonOptions& common)
   cmd->add_option("--margin", a->options.grid.marginVoxels, "Empty voxels around the mesh")->capture_default_str();
   auto* steps = cmd->add_option(
       "--steps", a->steps,
-      "Lattice Boltzmann steps (default: as many as the noise needs, from 2 to 7, twiced with 8 to 14 where it "
-      "needs 4 or more; the paper's runs: 7); with --twicing the smoothing's steps, the lattice running twice as "
-      "many");
+      "Lattice Boltzmann steps (default: as many as the noise needs, from 3 to 7, read off the field as it "
+      "smooths and at least what the noise's amplitude on the input's triangles asks, twiced with 8 to 14 where "
+      "the field needs 4 or more; the paper's runs: 7); with --twicing the smoothing's steps, the lattice running "
+      "twice as many");
   a->stepsOption = steps;
   a->radiusOption = cmd->add_option("--radius", a->radius,
                                     "Smoothing radius in the mesh's units, instead of --steps: the steps whose "

@@ -17,7 +17,7 @@
 #   VDB_PEER=/path/to/vdb_peer scripts/denoise-tradeoff.sh MESH.obj...
 #   (../shared/peers/openvdb/build.sh builds the peer; without VDB_PEER the
 #   OpenVDB rows are left out)
-# Environment: LBMSHAPE (build/lbmshape), RES (128), SIGMAS ("0.25 0.5 1"), STEPS ("1 2 ... 10"),
+# Environment: LBMSHAPE (build/lbmshape), RES (128), SEED (1, the noise's), SIGMAS ("0.25 0.5 1"), STEPS ("1 2 ... 10"),
 #   ITERS ("1 2 3 4 5 6"), METHODS ("isotropic preserve-features anisotropic"; "none": the
 #   default and --twicing rows alone),
 #   OUT (build/tradeoff), PLOT (docs/images/denoise-tradeoff.png; "" for none),
@@ -28,6 +28,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 lbmshape=${LBMSHAPE:-$here/build/lbmshape}
 [[ -x $lbmshape ]] || { echo "denoise-tradeoff: build lbmshape first ($lbmshape)" >&2; exit 2; }
 res=${RES:-128}
+seed=${SEED:-1}  # of the noise
 sigmas=(${SIGMAS:-0.25 0.5 1})
 steps=(${STEPS:-1 2 3 4 5 6 7 8 9 10})
 iters=(${ITERS:-1 2 3 4 5 6})
@@ -53,7 +54,7 @@ for mesh in "$@"; do
   name=$(basename "${mesh%.*}")
   for sigma in "${sigmas[@]}"; do
     noisy=$out/${name}_sigma$sigma.obj
-    "$lbmshape" -q noise "$mesh" "$noisy" --sigma "$sigma" --res "$res" --seed 1 --force
+    "$lbmshape" -q noise "$mesh" "$noisy" --sigma "$sigma" --res "$res" --seed "$seed" --force
     voxel=$("$lbmshape" -q denoise "$noisy" "$out/result.obj" --steps 0 --res "$res" --json --force | jq .grid.voxel)
     row() { echo "$name,$sigma,$1,$2,$(measure "$mesh" "$3" "$voxel")" | tee -a "$csv"; }
     row noisy 0 "$noisy"

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "lbmshape/analysis/mesh_topology.hpp"
+#include "lbmshape/analysis/normal_noise.hpp"
 #include "lbmshape/core/error.hpp"
 #include "lbmshape/core/host_memory.hpp"
 #include "lbmshape/core/interrupt.hpp"
@@ -202,18 +203,21 @@ SmoothedField<Field> twiceTheSmoothing(Solver& solver, int steps, Progress& prog
 enum class Twice { Never, Always, WherePays };
 
 // --steps auto: plain, the field one step before the speed levelled off,
-// which the lattice still holds (or that of mostSteps); twiced, S of
-// twicedSteps(n) steps, n the step at which plain smoothing's speed
-// levelled off (twice the steps it keeps).
+// which the lattice still holds (or that of mostSteps), or of
+// `fewestForNoise` steps where the noise's amplitude asks for more
+// (smoothing_stop.hpp; never twiced: twicing would give back the slow
+// noise); twiced, S of twicedSteps(n) steps, n the step at which plain
+// smoothing's speed levelled off (twice the steps it keeps).
 template <class Solver, class Field>
-SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress, Twice when)
+SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& progress, Twice when, int fewestForNoise)
 {
   auto reading = readingOf(solver, x0);
   x0 = Field();
   std::vector<double> speeds;
   const int levelled = runUntilTheSpeedLevelsOff(solver, reading, progress, speeds);
   const int kept = std::min(levelled - 1, smoothing_stop::mostSteps);
-  if (when == Twice::Always || (when == Twice::WherePays && kept >= twicingFromSteps)) {
+  const bool noiseAsksForMore = kept < fewestForNoise;
+  if (when == Twice::Always || (when == Twice::WherePays && kept >= twicingFromSteps && !noiseAsksForMore)) {
     const bool always = when == Twice::Always;
     SmoothedField<Field> twiced = twiceTheSmoothing<Solver, Field>(solver, twicedSteps(levelled), progress,
                                                                    always ? 1.0f : automaticTwicingWeight);
@@ -221,6 +225,14 @@ SmoothedField<Field> stepsTheNoiseNeeds(Solver& solver, Field x0, Progress& prog
     return twiced;
   }
   const int stepsRun = std::min(levelled, smoothing_stop::mostSteps) + reading.lag;
+  if (noiseAsksForMore) {
+    // The lattice is at step levelled + lag (at most fewestForNoise + 1),
+    // the field of step `levelled` the reading's own.
+    if (fewestForNoise == levelled)
+      return {reading.fieldOfTheStep(), levelled, stepsRun, std::move(speeds), std::nullopt};
+    InterruptibleSteps(solver).advanceTo(fewestForNoise, stepsDone(solver), &progress);
+    return {solver.field(), fewestForNoise, fewestForNoise, std::move(speeds), std::nullopt};
+  }
   if (levelled > smoothing_stop::mostSteps)
     return {reading.fieldOfTheStep(), smoothing_stop::mostSteps, stepsRun, std::move(speeds), std::nullopt};
   return {reading.fieldBeforeIt(), levelled - 1, stepsRun, std::move(speeds), std::nullopt};
@@ -251,7 +263,7 @@ int mostSmoothingSteps(const DenoiseOptions& o)
 // as the noise needs (smoothing_stop.hpp); twiced with --twicing or where
 // it pays. `x0` is let go once it is not needed.
 template <class Solver, class Field>
-SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o, Progress& progress,
+SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o, int fewestForNoise, Progress& progress,
                               const char* part = "steps", double share = 1.0)
 {
   progress.beginPart(part, mostSmoothingSteps(o), share);
@@ -262,7 +274,7 @@ SmoothedField<Field> runSteps(Solver& solver, Field x0, const DenoiseOptions& o,
     return {solver.field(), *o.steps, *o.steps, {}, std::nullopt};
   }
   const Twice when = twicedAlways(o) ? Twice::Always : mayBeTwiced(o) ? Twice::WherePays : Twice::Never;
-  SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress, when);
+  SmoothedField<Field> smoothed = stepsTheNoiseNeeds(solver, std::move(x0), progress, when, fewestForNoise);
   log::verbose("the noise is gone after " + std::to_string(smoothed.steps) + " steps" +
                (smoothed.twicingWeight ? ", twiced" : ""));
   return smoothed;
@@ -277,7 +289,8 @@ bool findsEdges(const DenoiseOptions& o) { return o.smoothing == Smoothing::Pres
 // once the solver has taken it, so that its memory is free while the
 // lattice runs.
 template <class Solver, class Field>
-SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o, double halfWidth, Progress& progress)
+SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o, int fewestForNoise, double halfWidth,
+                            Progress& progress)
 {
   if (!findsEdges(o)) {
     // The paper's rule (Eq. 20) runs inside the solver, on the device:
@@ -287,7 +300,7 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
     else
       solver.setUniformGamma(o.gamma);
     startForGood(solver, field, halfWidth);
-    return runSteps(solver, std::move(field), o, progress);
+    return runSteps(solver, std::move(field), o, fewestForNoise, progress);
   }
   const FeatureProbe probe = featureProbe();
   const int steps = mostSmoothingSteps(o);
@@ -298,7 +311,8 @@ SmoothedField<Field> smooth(Solver& solver, Field field, const DenoiseOptions& o
   stepShowingProgress(solver, probe.steps, progress, "finding the edges", probeShare);
   solver.setFeaturePreservingGamma(o.gamma, featureEdgeCurvature);  // on the device, for a Vulkan solver
   restart(solver, field, halfWidth);
-  SmoothedField<Field> smoothed = runSteps(solver, std::move(field), o, progress, "steps", 1.0 - probeShare);
+  SmoothedField<Field> smoothed =
+      runSteps(solver, std::move(field), o, fewestForNoise, progress, "steps", 1.0 - probeShare);
   smoothed.stepsRun += probe.steps;
   return smoothed;
 }
@@ -390,8 +404,8 @@ TriangleMesh surfaceKeepingTheVolume(Field& field, const GridFrame& frame, std::
 }
 
 Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
-                         const DenoiseOptions& o, std::optional<double> meshVolume, const SurfaceFinish& finish,
-                         const ComputeDevice& device, StageClock& clock)
+                         const DenoiseOptions& o, int fewestForNoise, std::optional<double> meshVolume,
+                         const SurfaceFinish& finish, const ComputeDevice& device, StageClock& clock)
 {
   device.checkFits(frame.extent);
   device.warnThatTheGridsDistancesAreTheCpus();
@@ -402,8 +416,8 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;  // the mesh's, before any --noise
   addFieldNoise(field, o.noise);
   auto solver = clock.time("setup", [&] { return device.makeSolver(frame.extent); });
-  SmoothedField<Volume> smoothed =
-      clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, 0.0, progress); });
+  SmoothedField<Volume> smoothed = clock.time(
+      "lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, fewestForNoise, 0.0, progress); });
   solver.reset();  // its memory goes before marching cubes takes its own
   double shift = o.keepVolume ? keepVolume(smoothed.field, enclosed) : 0.0;
   return {surfaceKeepingTheVolume(smoothed.field, frame, meshVolume, shift, finish, clock),
@@ -419,8 +433,8 @@ Smoothed smoothOnTheGrid(const TriangleMesh& mesh, const GridFrame& frame, const
 }
 
 Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const std::filesystem::path& input,
-                         const DenoiseOptions& o, std::optional<double> meshVolume, const SurfaceFinish& finish,
-                         const ComputeDevice& device, StageClock& clock)
+                         const DenoiseOptions& o, int fewestForNoise, std::optional<double> meshVolume,
+                         const SurfaceFinish& finish, const ComputeDevice& device, StageClock& clock)
 {
   double halfWidth = bandHalfWidth(o);
   bool holesLeftOpen = false;  // a band wide enough to close them did not fit
@@ -479,8 +493,9 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
   const BrickSet& bricks = *shared;
   const double enclosed = o.keepVolume ? enclosedVoxels(field) : 0.0;
   auto solver = clock.time("setup", [&] { return device.makeBandSolver(shared, kind); });
-  SmoothedField<BandField> smoothed =
-      clock.time("lbm", [&](Progress& progress) { return smooth(*solver, std::move(field), o, halfWidth, progress); });
+  SmoothedField<BandField> smoothed = clock.time("lbm", [&](Progress& progress) {
+    return smooth(*solver, std::move(field), o, fewestForNoise, halfWidth, progress);
+  });
   solver.reset();  // its memory goes before marching cubes takes its own
   double shift = o.keepVolume ? keepVolume(smoothed.field, enclosed) : 0.0;
   return {surfaceKeepingTheVolume(smoothed.field, frame, meshVolume, shift, finish, clock),
@@ -588,6 +603,25 @@ void warnIfMuchVolumeWasLost(const TriangleMesh& result, std::optional<double> m
   log::warning(m.str());
 }
 
+// --steps auto: the amplitude of the noise along the input's normals, in
+// voxels (analysis/normal_noise.hpp), and the fewest steps it asks for
+// (smoothing_stop.hpp); none where the mesh has too few whole rings.
+struct NoiseAmplitude {
+  std::optional<double> voxels;
+  int fewestSteps = 0;
+};
+
+NoiseAmplitude noiseAmplitude(const TriangleMesh& mesh, double voxel, double gamma, StageClock& clock)
+{
+  const std::optional<double> amplitude = clock.time("noise_amplitude", [&] { return normalNoiseAmplitude(mesh); });
+  if (!amplitude) return {};
+  const double voxels = *amplitude / voxel;
+  const int fewest = smoothing_stop::fewestStepsForNoise(voxels, gamma);
+  log::verbose("noise along the normals: " + std::to_string(voxels) + " voxels, at least " + std::to_string(fewest) +
+               " steps");
+  return {voxels, fewest};
+}
+
 // The smoothing of denoiseMesh, its stages timed into `clock`, and the part
 // of the report that is about the smoothing.
 DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology, const std::filesystem::path& name,
@@ -619,8 +653,13 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology,
                  std::to_string(relaxed.movedVertices) + " vertices moved in the last, " +
                  std::to_string(relaxed.keptVertices) + " kept so that no triangle turned over");
   };
-  Smoothed smoothed = dense ? smoothOnTheGrid(mesh, frame, name, o, meshVolume, relax, device, clock)
-                            : smoothOnTheBand(mesh, frame, name, o, meshVolume, relax, device, clock);
+  // Given steps, and --twicing's, which come from the field's speed alone,
+  // need no amplitude.
+  const NoiseAmplitude noise =
+      o.steps || twicedAlways(o) ? NoiseAmplitude{} : noiseAmplitude(mesh, frame.voxel, o.gamma, clock);
+  Smoothed smoothed = dense
+                          ? smoothOnTheGrid(mesh, frame, name, o, noise.fewestSteps, meshVolume, relax, device, clock)
+                          : smoothOnTheBand(mesh, frame, name, o, noise.fewestSteps, meshVolume, relax, device, clock);
   TriangleMesh result = std::move(smoothed.mesh);
   if (result.triangles.empty())
     throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
@@ -644,6 +683,8 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology,
       {"radius", given.radius ? nlohmann::json(*given.radius) : nlohmann::json(nullptr)},
       {"steps_run", smoothed.stepsRun},
       {"surface_speeds", smoothed.speeds},
+      {"noise_amplitude_voxels", noise.voxels ? nlohmann::json(*noise.voxels) : nlohmann::json(nullptr)},
+      {"noise_steps", noise.voxels ? nlohmann::json(noise.fewestSteps) : nlohmann::json(nullptr)},
       {"smoothing", smoothingName(o.smoothing)},
       {"twicing", smoothed.twicingWeight.has_value()},
       {"twicing_chosen", o.twicing ? "given" : "auto"},

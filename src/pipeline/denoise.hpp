@@ -33,7 +33,7 @@ enum class Smoothing {
 
 struct DenoiseOptions {
   GridOptions grid;
-  // Lattice steps; none given: as many as the noise needs, from 2 to 7
+  // Lattice steps; none given: as many as the noise needs, from 3 to 7
   // (--steps auto, pipeline/smoothing_stop.hpp). The paper's Figs. 4-6: 7.
   std::optional<int> steps;
   // Or the smoothing's radius in the mesh's units (--radius): the steps
@@ -114,8 +114,9 @@ GridFrame placeGrid(const Bounds& bounds, const GridOptions& options);
 // about files, compression and --preview have no effect here). `name` names
 // the mesh in errors; the mesh is checked as a file's is (InputError for an
 // index out of range, a coordinate that is not finite, a flat surface). The report: grid, device, gamma, steps, steps_chosen,
-// steps_run, smoothing, keep_volume, volume_shift_voxels, noise, lattice,
-// mlups, curvature_scale and ms (sdf, setup, lbm, extract, total).
+// steps_run, noise_amplitude_voxels, noise_steps, smoothing, keep_volume,
+// volume_shift_voxels, noise, lattice, mlups, curvature_scale and ms
+// (noise_amplitude, sdf, setup, lbm, extract, total).
 DenoiseResult denoiseMesh(const TriangleMesh& mesh, const std::string& name, const DenoiseOptions& options,
                           const ComputeDevice& device);
 

@@ -3,8 +3,17 @@
 #include <cmath>
 
 #include "lbmshape/lbm/surface_change.hpp"
+#include "lbmshape/pipeline/feature_probe.hpp"
+#include "lbmshape/pipeline/smoothing_radius.hpp"
 
 namespace lbmshape::smoothing_stop {
+
+int fewestStepsForNoise(double amplitudeVoxels, double gamma)
+{
+  const double spread = noiseMargin * amplitudeVoxels;
+  if (spreadVariance(gamma, mostSteps) < spread * spread) return mostSteps;
+  return stepsForRadius(spread, gamma);
+}
 
 void SurfaceSpeed::remember(const std::vector<float>& field)
 {

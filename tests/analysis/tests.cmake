@@ -1,6 +1,7 @@
 lbmshape_test(analysis_tests
   ${CMAKE_CURRENT_LIST_DIR}/joined_seams_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_topology_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/normal_noise_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_comparison_test.cpp
 )
 lbmshape_shared_asset_test(analysis_shared_mesh_tests

@@ -46,6 +46,7 @@ Names namesOf(Parameter parameter)
   case Parameter::Count: return {"folderMeshes", "--count", nullptr};
   case Parameter::Columns: return {"columns", "--columns", nullptr};
   case Parameter::Wireframe: return {"wireframe", "--wireframe", nullptr};
+  case Parameter::Twicing: return {"twicing", "--twicing", "twicing"};
   }
   return {"?", "?", nullptr};
 }

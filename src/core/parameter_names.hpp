@@ -41,6 +41,7 @@ enum class Parameter {
   Count,
   Columns,
   Wireframe,
+  Twicing,
 };
 
 enum class ParameterNaming {

@@ -622,6 +622,26 @@ NoiseAmplitude noiseAmplitude(const TriangleMesh& mesh, double voxel, double gam
   return {voxels, fewest};
 }
 
+// A surface that the smoothing made vanish: which steps did it, and what
+// to change. Steps the user did not give are said to be chosen (by the
+// noise, or by --radius), so that a batch user whose default denoise of a
+// thin shell fails knows --steps (and --no-twicing) are theirs to set.
+NumericalError vanished(const Smoothed& smoothed, const DenoiseOptions& given)
+{
+  const std::string steps = std::to_string(smoothed.steps) + (smoothed.steps == 1 ? " step" : " steps");
+  std::string which = "after " + steps, change = "fewer " + nameOf(Parameter::Steps);
+  if (given.radius) {
+    which = "after the " + steps + " of " + nameOf(Parameter::Radius) + " " + numberText(*given.radius);
+    change = "a smaller " + nameOf(Parameter::Radius);
+  } else if (!given.steps) {
+    which = "after the " + steps + " chosen for its noise" + (smoothed.twicingWeight ? " (twiced)" : "");
+    change = "fewer " + nameOf(Parameter::Steps) +
+             (smoothed.twicingWeight ? " (or turn " + nameOf(Parameter::Twicing) + " off)" : "");
+  }
+  return NumericalError("the smoothed surface vanished: no cell is inside " + which + "; give " + change +
+                        ", a smaller " + nameOf(Parameter::Gamma) + " or a finer " + nameOf(Parameter::Resolution));
+}
+
 // The smoothing of denoiseMesh, its stages timed into `clock`, and the part
 // of the report that is about the smoothing.
 DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology, const std::filesystem::path& name,
@@ -661,10 +681,7 @@ DenoiseResult smoothMesh(const TriangleMesh& mesh, const MeshTopology& topology,
                           ? smoothOnTheGrid(mesh, frame, name, o, noise.fewestSteps, meshVolume, relax, device, clock)
                           : smoothOnTheBand(mesh, frame, name, o, noise.fewestSteps, meshVolume, relax, device, clock);
   TriangleMesh result = std::move(smoothed.mesh);
-  if (result.triangles.empty())
-    throw NumericalError("the smoothed surface vanished: no cell is inside after " + std::to_string(smoothed.steps) +
-                         " steps; use fewer " + nameOf(Parameter::Steps) + ", a smaller " + nameOf(Parameter::Gamma) +
-                         " or a finer " + nameOf(Parameter::Resolution));
+  if (result.triangles.empty()) throw vanished(smoothed, given);
   warnIfMuchVolumeWasLost(result, meshVolume, smoothed.inputFieldVoxels, frame.voxel);
   std::optional<double> curvatureScale;
   if (o.colourByCurvature) clock.time("colour", [&] { curvatureScale = colourByCurvature(result); });

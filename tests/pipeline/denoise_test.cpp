@@ -1,6 +1,8 @@
 // The denoise pipeline on shapes made in code: what comes out is a closed,
 // outward, genus-right mesh close to what went in, for every smoothing mode.
 #include <filesystem>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -204,6 +206,40 @@ TEST_F(Denoise, VanishingSurfaceIsANumericalError)
   options.gamma = 1.0;
   EXPECT_THROW(run(testing::icosphere(2), options), NumericalError);
   EXPECT_FALSE(std::filesystem::exists(folder.path() / "out.obj"));
+}
+
+// Where the steps were chosen, not given, the refusal says so and names
+// what is the user's to set: a default denoise of a shell too thin for its
+// grid (walls 0.03 thick, under a voxel at --res 32) otherwise read "use
+// fewer --steps" to a user who gave none.
+TEST_F(Denoise, AVanishedSurfaceSaysWhoseStepsTheyWere)
+{
+  const TriangleMesh outer = testing::icosphere(3);
+  TriangleMesh inner = testing::scaled(outer, 0.97);
+  for (glm::uvec3& t : inner.triangles) std::swap(t[1], t[2]);  // facing the hollow
+  const TriangleMesh shell = testing::merged(outer, inner);
+  DenoiseOptions options;
+  options.grid.resolution = 32;
+  const auto refusal = [&] {
+    try {
+      run(shell, options);
+    } catch (const NumericalError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no refusal");
+  };
+  const std::string chosen = refusal();
+  EXPECT_NE(chosen.find("vanished"), std::string::npos) << chosen;
+  EXPECT_NE(chosen.find("steps chosen for its noise (twiced); give fewer steps (or turn twicing off)"),
+            std::string::npos)
+      << chosen;
+  options.radius = 0.1;
+  const std::string radius = refusal();
+  EXPECT_NE(radius.find("steps of radius 0.1; give a smaller radius"), std::string::npos) << radius;
+  options.radius.reset();
+  options.steps = 12;
+  const std::string given = refusal();
+  EXPECT_NE(given.find("after 12 steps; give fewer steps"), std::string::npos) << given;
 }
 
 }  // namespace

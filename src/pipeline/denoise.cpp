@@ -21,6 +21,7 @@
 #include "lbmshape/mesh/mesh_validation.hpp"
 #include "lbmshape/mesh/mesh_format.hpp"
 #include "lbmshape/mesh/mesh_writer.hpp"
+#include "lbmshape/pipeline/band_over_holes.hpp"
 #include "lbmshape/pipeline/feature_probe.hpp"
 #include "lbmshape/pipeline/input_orientation.hpp"
 #include "lbmshape/pipeline/parts_check.hpp"
@@ -453,17 +454,8 @@ Smoothed smoothOnTheBand(const TriangleMesh& mesh, const GridFrame& frame, const
            .distancesFrom = [&](const TriangleBvh& tree) { return device.bandDistances(tree); }},
           &distanceStats);
     };
-    // With the fans over the holes; where that band does not fit (refused
-    // before anything is allocated), the band near the triangles alone, as
-    // before the fans, whose result may stay open (below).
-    std::optional<BandField> withFans;
-    try {
-      withFans = onTheBand(halfWidth, true);
-    } catch (const DeviceError& e) {
-      log::verbose(std::string("the band over the input's holes does not fit (") + e.what() +
-                   "): the band near its triangles alone");
-    }
-    BandField band = withFans ? std::move(*withFans) : onTheBand(halfWidth, false);
+    BandField band =
+        withFansWhereTheyFit([&](bool overHoles) { return onTheBand(halfWidth, overHoles); }, "the input's");
     // An open input's hole wider than the band: the surface that closes it
     // would be cut off (sdf/hole_radius.hpp). Widened over the widest hole,
     // and again while it still leaves (a closing surface that bulges).

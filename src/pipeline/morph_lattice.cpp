@@ -9,6 +9,7 @@
 
 #include "lbmshape/core/worker_threads.hpp"
 #include "lbmshape/lbm/band_width.hpp"
+#include "lbmshape/pipeline/band_over_holes.hpp"
 #include "lbmshape/pipeline/morph_front.hpp"
 #include "lbmshape/pipeline/field_noise.hpp"
 #include "lbmshape/pipeline/recycled_fields.hpp"
@@ -216,17 +217,8 @@ public:
         computeFields({source, sourceTree}, {target, targetTree}, std::move(bricks), progress,
                       [&device](const TriangleBvh& tree) { return device.bandDistances(tree); });
       };
-      // With the fans over the meshes' holes; where that band does not fit
-      // (refused before anything is allocated), near the triangles alone,
-      // as before the fans.
-      std::shared_ptr<BrickSet> bricks;
-      try {
-        bricks = bandBricks(halfWidth_, true);
-      } catch (const DeviceError& e) {
-        log::verbose(std::string("the band over the meshes' holes does not fit (") + e.what() +
-                     "): the band near their triangles alone");
-        bricks = bandBricks(halfWidth_, false);
-      }
+      std::shared_ptr<BrickSet> bricks =
+          withFansWhereTheyFit([&](bool overHoles) { return bandBricks(halfWidth_, overHoles); }, "the meshes'");
       beforeDistances();
       fieldsOn(bricks);
       // A mesh's hole wider than the band: the surface that closes it was
